@@ -1,0 +1,26 @@
+// nonobtuse._core: thin conversion layer. One file per API area; errors are mapped to nonobtuse.errors types.
+#include <pybind11/pybind11.h>
+
+#include "nonobtuse/types.h"
+
+namespace py = pybind11;
+
+namespace nonobtuse::bindings {
+void bind_mesh2d(py::module_& m);
+}
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "nonobtuse C++ core (CGAL, exact predicates)";
+  static py::object invalid_input = py::module_::import("nonobtuse.errors").attr("InvalidInputError");
+  static py::object internal_error = py::module_::import("nonobtuse.errors").attr("InternalError");
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const nonobtuse::InvalidInput& e) {
+      PyErr_SetString(invalid_input.ptr(), e.what());
+    } catch (const nonobtuse::InternalError& e) {
+      PyErr_SetString(internal_error.ptr(), e.what());
+    }
+  });
+  nonobtuse::bindings::bind_mesh2d(m);
+}

@@ -1,0 +1,51 @@
+// Internal: the CGAL constrained Delaunay triangulation every 2D algorithm works on. CGAL appears only in cpp/src.
+#pragma once
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <vector>
+
+#include "nonobtuse/types.h"
+
+namespace nonobtuse::cdt {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = K::Point_2;
+
+struct FaceInfo {
+  bool in_domain = false;
+  int component = -1;   // connected component of domain faces across unconstrained edges
+  double region = 0.0;  // region attribute of the component
+};
+
+// Vertex info: the vertex's index in the output point list (input points keep their input index).
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, K>;
+using Fbb = CGAL::Triangulation_face_base_with_info_2<FaceInfo, K>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbb>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+// Constraints that cross away from vertices are refused (an exception), never resolved by constructing points.
+using Itag = CGAL::No_constraint_intersection_requiring_constructions_tag;
+using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, Itag>;
+using Vertex_handle = CDT::Vertex_handle;
+using Face_handle = CDT::Face_handle;
+using Edge = CDT::Edge;
+
+inline Point to_cgal(const Point2& p) { return Point(p.x, p.y); }
+inline Point2 from_cgal(const Point& p) { return {p.x(), p.y()}; }
+
+// Inserts the domain's points (spatially sorted, info = input index) and constraints (plus the convex hull edges
+// when domain.convex_hull_boundary, so that every algorithm sees one kind of boundary: constrained edges), then
+// marks the domain. Returns the vertex handle of every input point. Throws InvalidInput on crossing constraints.
+std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain);
+
+// Recomputes FaceInfo for every face: the exterior (flood fill from the infinite faces across unconstrained
+// edges) and hole seeds are out, the rest in; components and region attributes by flood fill across
+// unconstrained edges. Call again after inserting points.
+void mark_domain(CDT& cdt, const Domain2& domain);
+
+// Domain triangles, every constrained subsegment bordering the domain, points indexed by vertex info.
+Mesh2 to_mesh(const CDT& cdt);
+
+}  // namespace nonobtuse::cdt

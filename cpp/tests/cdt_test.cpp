@@ -1,0 +1,65 @@
+#include "cdt.h"
+
+#include <gtest/gtest.h>
+
+#include "nonobtuse/triangulate.h"
+
+namespace nonobtuse {
+namespace {
+
+Domain2 square_with_hole() {
+  Domain2 d;
+  d.points = {{0, 0}, {4, 0}, {4, 4}, {0, 4}, {1, 1}, {3, 1}, {3, 3}, {1, 3}};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
+  d.holes = {{2, 2}};
+  return d;
+}
+
+TEST(Triangulate, SquareWithHoleKeepsOnlyTheRing) {
+  Mesh2 m = triangulate(square_with_hole());
+  EXPECT_EQ(m.points.size(), 8u);
+  EXPECT_EQ(m.triangles.size(), 8u);  // a ring of 8 vertices, 2 loops: 8 triangles
+  EXPECT_EQ(m.segments.size(), 8u);
+  for (const auto& t : m.triangles) {
+    const auto &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
+    EXPECT_GT((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x), 0.0) << "triangles are counter-clockwise";
+  }
+}
+
+TEST(Triangulate, InnerLoopWithoutHoleSeedIsARegion) {
+  Domain2 d = square_with_hole();
+  d.holes.clear();
+  d.regions = {{{2, 2}, 7.0}, {{0.5, 0.5}, 3.0}};
+  Mesh2 m = triangulate(d);
+  EXPECT_EQ(m.triangles.size(), 10u);
+  int inner = 0;
+  for (double r : m.triangle_region) inner += r == 7.0;
+  EXPECT_EQ(inner, 2);
+  for (double r : m.triangle_region) EXPECT_TRUE(r == 7.0 || r == 3.0);
+}
+
+TEST(Triangulate, PointSetUsesConvexHull) {
+  Domain2 d;
+  d.points = {{0, 0}, {2, 0}, {1, 0.2}, {1, 1}, {0.5, 0.4}};
+  d.convex_hull_boundary = true;
+  Mesh2 m = triangulate(d);
+  EXPECT_EQ(m.triangles.size(), 5u);  // n = 5 points, h = 3 on the hull: 2n - h - 2 triangles
+  EXPECT_EQ(m.segments.size(), 3u);   // the hull edges became boundary segments
+}
+
+TEST(Triangulate, CrossingSegmentsAreRefused) {
+  Domain2 d;
+  d.points = {{0, 0}, {1, 1}, {0, 1}, {1, 0}};
+  d.segments = {{0, 1}, {2, 3}};
+  EXPECT_THROW(triangulate(d), InvalidInput);
+}
+
+TEST(Triangulate, DuplicatePointsAreRefused) {
+  Domain2 d;
+  d.points = {{0, 0}, {1, 0}, {0, 1}, {1, 0}};
+  d.convex_hull_boundary = true;
+  EXPECT_THROW(triangulate(d), InvalidInput);
+}
+
+}  // namespace
+}  // namespace nonobtuse

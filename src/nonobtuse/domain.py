@@ -1,0 +1,47 @@
+"""The 2D input model: a planar straight-line graph (PSLG) and what lies inside it."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+
+def _points(a, name: str) -> np.ndarray:
+    arr = np.asarray(a, dtype=np.float64)
+    if arr.size == 0:
+        return np.zeros((0, 2), dtype=np.float64)
+    if arr.ndim != 2 or arr.shape[1] != 2:
+        raise ValueError(f"{name} must have shape (n, 2), got {arr.shape}")
+    return np.ascontiguousarray(arr)
+
+
+@dataclass
+class Domain:
+    """A 2D domain.
+
+    points:   (n, 2) float64 coordinates.
+    segments: (m, 2) int64 indices into ``points``: the boundary loops, and interior constraints (interfaces
+              between materials, cracks, wells). Orientation does not matter.
+    holes:    (h, 2) float64 seed points; the region around each seed, bounded by segments, is removed.
+    regions:  (r, 3) float64 rows ``x, y, attribute``: the region around the seed gets the attribute
+              (e.g. a material id used to pick a conductivity).
+    convex_hull: when True the domain is the convex hull of the points (point sets, open boundaries);
+              otherwise it is what the closed segment loops enclose.
+    source:   where it came from (a file name), for messages.
+    """
+
+    points: np.ndarray
+    segments: np.ndarray = field(default_factory=lambda: np.zeros((0, 2), dtype=np.int64))
+    holes: np.ndarray = field(default_factory=lambda: np.zeros((0, 2), dtype=np.float64))
+    regions: np.ndarray = field(default_factory=lambda: np.zeros((0, 3), dtype=np.float64))
+    convex_hull: bool = False
+    source: str = "<memory>"
+
+    def __post_init__(self) -> None:
+        self.points = _points(self.points, "points")
+        seg = np.asarray(self.segments, dtype=np.int64)
+        self.segments = np.ascontiguousarray(seg.reshape(-1, 2) if seg.size else np.zeros((0, 2), np.int64))
+        self.holes = _points(self.holes, "holes")
+        reg = np.asarray(self.regions, dtype=np.float64)
+        self.regions = np.ascontiguousarray(reg.reshape(-1, 3) if reg.size else np.zeros((0, 3), np.float64))
