@@ -1,0 +1,55 @@
+"""3D data model: piecewise linear complexes (the input) and tetrahedral meshes (the output)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+
+@dataclass
+class PLC:
+    """A piecewise linear complex in 3D.
+
+    points:     (n, 3) float64.
+    triangles:  (m, 3) int64: the facets, triangulated; consistently oriented (outward for a closed surface).
+    facet_ids:  (m,) int64: the input facet (polygon) each triangle belongs to. Triangles of one planar polygon
+                share an id; for a triangle-soup input (OFF/STL/...) every triangle is its own facet, and adjacent
+                coplanar triangles may be merged into one facet by the loader.
+    segments:   (k, 2) int64: PLC segments: edges where two facets meet at a non-flat angle, plus dangling
+                input segments.
+    holes:      (h, 3) float64 volume-hole seeds.
+    regions:    (r, 4) float64 rows x, y, z, attribute.
+    source:     where it came from, for messages.
+    """
+
+    points: np.ndarray
+    triangles: np.ndarray
+    facet_ids: np.ndarray
+    segments: np.ndarray = field(default_factory=lambda: np.zeros((0, 2), dtype=np.int64))
+    holes: np.ndarray = field(default_factory=lambda: np.zeros((0, 3), dtype=np.float64))
+    regions: np.ndarray = field(default_factory=lambda: np.zeros((0, 4), dtype=np.float64))
+    source: str = "<memory>"
+
+
+@dataclass
+class TetMesh:
+    """A tetrahedral mesh of a PLC.
+
+    points:          (n, 3) float64; the PLC's points first, in input order, Steiner points after.
+    tets:            (t, 4) int64, positively oriented.
+    boundary_faces:  (f, 3) int64: the triangles covering the PLC's facets (subfacets).
+    face_markers:    (f,) int64: the facet id (or backend marker) of each boundary face.
+    segments:        (k, 2) int64: subsegments of the PLC's segments.
+    tet_regions:     (t,) float64 region attribute per tet, or None.
+    stats:           backend, timings, refinement status and diagnosis.
+    """
+
+    points: np.ndarray
+    tets: np.ndarray
+    boundary_faces: np.ndarray
+    face_markers: np.ndarray
+    segments: np.ndarray = field(default_factory=lambda: np.zeros((0, 2), dtype=np.int64))
+    tet_regions: np.ndarray | None = None
+    stats: dict[str, Any] = field(default_factory=dict)
