@@ -64,47 +64,44 @@ enum class Step { Place, Defer, Stuck };
 // Chooses the next Steiner point on `cur` (violated) given the walk's encroachers and nearby sides.
 Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& deferred, Point& p) {
   const Point &s = cur.s->point(), &e = cur.e->point();
+  auto empty = [&](const Point& c) { return subsegment_is_empty(s, c, w.encroachers); };
+  auto allowed = [&](const Point& c) { return empty(c) && forbidder(w.nearby, c) == nullptr; };
   Vertex_handle blocker;
   const double t_greedy = greedy_parameter(s, e, w.encroachers, &blocker);
-  bool may_defer = !deferred.count(key(cur));
-  if (may_defer && blocker != nullptr && blocked_by_violated_boundary(st, blocker)) {
+  const bool may_defer = !deferred.count(key(cur));
+  auto defer = [&] {
     deferred.insert(key(cur));
     return Step::Defer;
-  }
+  };
+  // Paper 4.3: blocked by a boundary vertex whose subsegment is violated: refine that one first.
+  if (may_defer && blocker != nullptr && blocked_by_violated_boundary(st, blocker)) return defer();
   double t = t_greedy;
-  // Each iteration either returns or strictly decreases t (to a forbidden interval's start or by 2^-40
-  // relative), re-checked exactly; 64 iterations suffice for the rounding corrections.
+  // Each iteration places a point or moves t strictly back toward s (to a forbidden interval's start, or by a
+  // relative 2^-40 when rounding put the start inside the interval again); every candidate is checked exactly.
   for (int iter = 0; iter < 64; ++iter) {
-    if (!round_onto(s, e, t, false, p)) break;
-    if (!subsegment_is_empty(s, p, w.encroachers)) {  // t rounded beyond the exact greedy end
-      t *= 1 - 0x1p-40;
-      continue;
-    }
+    if (!pick_point_at_or_before(s, e, t, empty, p)) break;
     const Side* f = forbidder(w.nearby, p);
     if (f == nullptr) return Step::Place;
-    if (!in_closed_disk(s, *f)) {  // the interval starts after s: move back to its start (Theorem 3)
-      t = std::min(forbidden_interval(s, e, *f).first, t * (1 - 0x1p-40));
+    auto [t_start, t_end] = forbidden_interval(s, e, *f);
+    // An interval starting within 2^-30 |e - s| of s counts as starting at s: s was itself placed at the start of
+    // f's interval (on f's circle up to rounding), and moving back to it would only creep forward by ulps.
+    if (!in_closed_disk(s, *f) && t_start > 0x1p-30) {
+      // Theorem 3: move back to the start of the forbidden interval. Where two intervals touch (the single-point
+      // gap of Lemma 2, e.g. the foot of an obtuse apex), the exact gap point is among the candidates.
+      if (pick_point(s, e, t_start, allowed, p)) return Step::Place;
+      t = std::min(t_start, t * (1 - 0x1p-40));
       continue;
     }
     // The interval starts at s: no point before it. If f is violated itself, refine it first (paper 4.3).
-    if (may_defer && st.is_violated(*f)) {
-      deferred.insert(key(cur));
-      return Step::Defer;
-    }
-    // Otherwise try the end of the interval: s is on f's circle, [s, end] is a chord of f's disk and its half
-    // on f's side lies in f's empty disk, so [s, end] is usually empty; checked exactly, else give up on it.
-    double t_end = forbidden_interval(s, e, *f).second;
-    if (t_end < 1 && round_onto(s, e, t_end, true, p) && subsegment_is_empty(s, p, w.encroachers) &&
-        forbidder(w.nearby, p) == nullptr)
-      return Step::Place;
+    if (may_defer && st.is_violated(*f)) return defer();
+    // Otherwise the end of the interval: s is on f's circle, so [s, end] is a chord of f's disk whose half on
+    // f's side lies in f's empty disk: usually empty; checked exactly.
+    if (t_end < 1 && pick_point(s, e, t_end, allowed, p)) return Step::Place;
     break;
   }
   // Fallback: the plain greedy point, which breaks f's disk (f is re-queued by the split and refined in turn).
   st.fallback_used = true;
-  t = t_greedy;
-  for (int k = 0; k < 64; ++k, t *= 1 - 0x1p-40)
-    if (round_onto(s, e, t, false, p) && subsegment_is_empty(s, p, w.encroachers)) return Step::Place;
-  return Step::Stuck;
+  return pick_point_at_or_before(s, e, t_greedy, empty, p) ? Step::Place : Step::Stuck;
 }
 
 // Refines the violated side from s toward e until the remaining subsegment is fine, a step is deferred, or the

@@ -19,8 +19,8 @@ double foot_parameter(const Point& s, const Point& e, const Point& q) {
 
 Vertex_handle split_at_foot(State& st, const Side& side, const Point& q) {
   Point p;
-  if (!round_onto(side.s->point(), side.e->point(), foot_parameter(side.s->point(), side.e->point(), q), false, p))
-    return nullptr;
+  const Point &s = side.s->point(), &e = side.e->point();
+  if (!pick_point(s, e, foot_parameter(s, e, q), [](const Point&) { return true; }, p)) return nullptr;
   return st.split(side, p);
 }
 

@@ -113,37 +113,46 @@ DiskWalk State::walk_diametral_disk(const Side& side) const {
   return out;
 }
 
-bool round_onto(const Point& s, const Point& e, double t, bool toward_e, Point& p) {
+std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
   double dx = e.x() - s.x(), dy = e.y() - s.y();
-  if (!(t > 0.0 && t < 1.0)) return false;
-  // Dyadic parameters k / 2^m from fine to coarse: with coordinates of b bits, s + t' d is exact once m + b <= 53.
-  for (int m = 52; m >= 12; --m) {
-    double scale = std::ldexp(1.0, m);
-    double k = toward_e ? std::ceil(t * scale) : std::floor(t * scale);
-    double tm = k / scale;
-    if (!(tm > 0.0 && tm < 1.0)) continue;
-    Point q(s.x() + tm * dx, s.y() + tm * dy);
-    if (CGAL::orientation(s, e, q) == CGAL::COLLINEAR && CGAL::collinear_are_strictly_ordered_along_line(s, q, e)) {
-      p = q;
-      return true;
+  std::vector<Point> out;
+  // Dyadic parameters from fine to coarse, below and above t: the first exactly collinear one of each.
+  for (bool up : {false, true})
+    for (int m = 52; m >= 12; --m) {
+      double scale = std::ldexp(1.0, m), tm = (up ? std::ceil(t * scale) : std::floor(t * scale)) / scale;
+      Point q(s.x() + tm * dx, s.y() + tm * dy);
+      if (tm > 0.0 && tm < 1.0 && CGAL::orientation(s, e, q) == CGAL::COLLINEAR) {
+        out.push_back(q);
+        break;
+      }
     }
-  }
-  // No exactly collinear double point near t: nudge the nearest one to the right of s -> e (outside).
-  double x = s.x() + t * dx, y = s.y() + t * dy;
-  double inf = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 64; ++k) {
-    Point q(x, y);
-    if (CGAL::orientation(s, e, q) == CGAL::RIGHT_TURN) {
-      // Strictly between: the projection of q falls inside (s, e), q distinct from both.
-      if (q == s || q == e || CGAL::angle(s, q, e) != CGAL::OBTUSE) return false;
-      p = q;
-      return true;
-    }
-    // The right normal of d is (dy, -dx).
-    if (dy != 0) x = std::nextafter(x, dy > 0 ? inf : -inf);
-    if (dx != 0) y = std::nextafter(y, dx > 0 ? -inf : inf);
-  }
-  return false;
+  // The doubles within 2 ulps (per coordinate) of the rounded point, and a grid reaching 8 ulps outward from it
+  // (steps along and across the line, in units of the larger coordinate ulp).
+  double x0 = s.x() + t * dx, y0 = s.y() + t * dy, inf = std::numeric_limits<double>::infinity();
+  auto step = [&](double v, int k) {
+    for (; k > 0; --k) v = std::nextafter(v, inf);
+    for (; k < 0; ++k) v = std::nextafter(v, -inf);
+    return v;
+  };
+  for (int i = -2; i <= 2; ++i)
+    for (int j = -2; j <= 2; ++j) out.emplace_back(step(x0, i), step(y0, j));
+  double u = std::max(step(std::abs(x0), 1) - std::abs(x0), step(std::abs(y0), 1) - std::abs(y0));
+  double len = std::hypot(dx, dy), tx = dx / len, ty = dy / len;  // right normal: (ty, -tx)
+  for (int i = -2; i <= 2; ++i)
+    for (int j = 1; j <= 8; ++j) out.emplace_back(x0 + u * (i * tx + j * ty), y0 + u * (i * ty - j * tx));
+  out.erase(std::remove_if(out.begin(), out.end(),
+                           [&](const Point& q) {
+                             return q == s || q == e || CGAL::orientation(s, e, q) == CGAL::LEFT_TURN ||
+                                    CGAL::angle(s, q, e) != CGAL::OBTUSE;
+                           }),
+            out.end());
+  auto rank = [&](const Point& q) {
+    bool off = CGAL::orientation(s, e, q) != CGAL::COLLINEAR;
+    return std::make_pair(off, -((q.x() - s.x()) * dx + (q.y() - s.y()) * dy));
+  };
+  std::stable_sort(out.begin(), out.end(), [&](const Point& a, const Point& b) { return rank(a) < rank(b); });
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 Vertex_handle State::split(const Side& side, const Point& p) {
@@ -230,8 +239,8 @@ int State::greedy_count(const Side& side, std::vector<Vertex_handle> q) const {
     if (q.empty()) break;
     double t = greedy_parameter(x, e, q);
     Point p;
-    if (!round_onto(x, e, t, false, p)) break;
-    for (int k = 0; k < 8 && !subsegment_is_empty(x, p, q); ++k) round_onto(x, e, t *= 1 - 0x1p-30, false, p);
+    auto empty = [&](const Point& c) { return subsegment_is_empty(x, c, q); };
+    if (!pick_point_at_or_before(x, e, t, empty, p)) break;
     x = p;
     ++count;
   }

@@ -2,6 +2,7 @@
 // Steiner budget, per-edge bookkeeping) and the operations they share: finding encroachers, rounding a point
 // onto a subsegment, splitting a constrained edge while keeping the domain marks.
 #pragma once
+#include <cmath>
 #include <deque>
 #include <map>
 #include <unordered_set>
@@ -63,7 +64,7 @@ class State {
   // Cost: the number of triangles meeting the disk.
   DiskWalk walk_diametral_disk(const Side& side) const;
 
-  // Inserts p (from round_onto) into the constrained edge (s, e), which CGAL splits into (s, p), (p, e) before
+  // Inserts p (from candidates_near) into the constrained edge (s, e), which CGAL splits into (s, p), (p, e) before
   // restoring the constrained Delaunay property by flips. Every face that changed is incident to p; their domain
   // marks are copied from the side they lie on. Sides of the changed faces are pushed on the queue. Refuses
   // (returns nullptr) when p would invert a triangle next to the edge (p off the line by more than its
@@ -89,13 +90,37 @@ inline bool encroaches(const Point& s, const Point& e, const Point& q) {
   return CGAL::orientation(s, e, q) == CGAL::LEFT_TURN && CGAL::angle(s, q, e) == CGAL::OBTUSE;
 }
 
-// A double point on the segment [s, e] at parameter ~t in (0, 1) (s + t (e - s)): exactly collinear with s and
-// e when some dyadic t' = k / 2^m near t gives exactly representable coordinates (rounded toward s, or toward e
-// when `toward_e`; with b-bit coordinates this succeeds once m + b <= 53, e.g. always for integer coordinates
-// below 2^20); otherwise the nearest double point nudged off the line to the right of s -> e (outside the domain)
-// by as few ulps as needed, so that the refined boundary s-p-e bends away from the domain and p never encroaches
-// on the subsegments of its own edge. Returns false when no such point strictly between s and e exists near t.
-bool round_onto(const Point& s, const Point& e, double t, bool toward_e, Point& p);
+// Double points near s + t (e - s), t in (0, 1), that may stand for it on the subsegment, most preferred first:
+// points exactly on the line (the dyadic parameters k / 2^m just below and above t that give exactly
+// representable coordinates: with b-bit coordinates this succeeds once m + b <= 53, always for integer
+// coordinates below 2^20; and the doubles within 2 ulps of the rounded point), then points a few ulps off the
+// line to the right of s -> e (outside the domain), so the refined boundary s-p-e bends away from the domain and p
+// never encroaches on the subsegments of its own edge; each group by decreasing progress along s -> e. Every
+// candidate is strictly between s and e (exact: angle(s, p, e) obtuse). Rounding is a construction: the caller
+// picks the first candidate its exact predicates accept (see pick_point).
+std::vector<Point> candidates_near(const Point& s, const Point& e, double t);
+
+// The first of candidates_near(s, e, t) accepted by `valid`; false when none is.
+template <class Valid>
+bool pick_point(const Point& s, const Point& e, double t, Valid&& valid, Point& p) {
+  if (!(t > 0.0 && t < 1.0)) return false;
+  for (const Point& c : candidates_near(s, e, t))
+    if (valid(c)) {
+      p = c;
+      return true;
+    }
+  return false;
+}
+
+// pick_point at t, else at t moved back toward s by relative steps 2^-40, 2^-36, ..., 2^-4 (float t may overshoot
+// an exact bound by a few ulps; each retry is re-checked exactly). False when all fail.
+template <class Valid>
+bool pick_point_at_or_before(const Point& s, const Point& e, double t, Valid&& valid, Point& p) {
+  if (pick_point(s, e, t, valid, p)) return true;
+  for (int k = 40; k >= 4; k -= 4)
+    if (pick_point(s, e, t * (1 - std::ldexp(1.0, -k)), valid, p)) return true;
+  return false;
+}
 
 // The greedy end from s toward e: min over encroachers q of |q - s|^2 / ((q - s) . d), d = e - s, the parameter
 // where q reaches the diametral circle of [s, s + t d] (paper-notes: (s - q).(x - q) >= 0 iff t (q - s).d <=
@@ -109,7 +134,7 @@ void keep_encroaching(const Point& s, const Point& e, std::vector<Vertex_handle>
 // True when no vertex of q encroaches [s, p] (exact).
 bool subsegment_is_empty(const Point& s, const Point& p, const std::vector<Vertex_handle>& q);
 
-// Splits `side` at the foot of q on it (rounded by round_onto): the new vertex, or nullptr when no double point
+// Splits `side` at the foot of q on it (rounded by pick_point): the new vertex, or nullptr when no double point
 // strictly inside the side exists there or State::split refuses it. Defined in projection_refine.cpp.
 Vertex_handle split_at_foot(State& st, const Side& side, const Point& q);
 

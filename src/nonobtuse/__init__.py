@@ -5,6 +5,7 @@ from __future__ import annotations
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InternalError, InvalidInputError, NonobtuseError
 from nonobtuse.mesh import Mesh
+from nonobtuse.refine import RefineResult, refine
 
-__all__ = ["Domain", "InternalError", "InvalidInputError", "Mesh", "NonobtuseError"]
+__all__ = ["Domain", "InternalError", "InvalidInputError", "Mesh", "NonobtuseError", "RefineResult", "refine"]
 __version__ = "0.1.0"
