@@ -48,12 +48,11 @@ def convex(n: int, rng) -> Domain:
 
 def star(n: int, rng) -> Domain:
     h = max(8, int(np.sqrt(n)))
-    a = np.sort(rng.uniform(0, 2 * np.pi, h))
+    a = (np.arange(h) + rng.uniform(0.1, 0.9, h)) * (2 * np.pi / h)  # separated angles: a simple polygon
     outer = np.round(np.c_[np.cos(a), np.sin(a)] * rng.uniform(5e3, 1e4, h)[:, None])
     m = n - h
     r, b = rng.uniform(0, 4.5e3, m), rng.uniform(0, 2 * np.pi, m)
     inner = np.unique(np.round(np.c_[r * np.cos(b), r * np.sin(b)]), axis=0)
-    inner = inner[~(inner[:, None, :] == outer[None]).all(-1).any(1)] if len(inner) * h < 5e7 else inner
     return Domain(points=np.r_[outer, inner], segments=loop(h))
 
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace nonobtuse::refine2d {
 namespace {
@@ -227,11 +228,14 @@ std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
   out.erase(std::remove_if(out.begin(), out.end(),
                            [&](const Point& q) { return q == s || q == e || CGAL::angle(s, q, e) != CGAL::OBTUSE; }),
             out.end());
-  // Collinear first, then outside (right of s -> e), then inside by ulps; each by decreasing progress.
+  // Collinear first, then outside (right of s -> e), then inside by ulps; each by distance from the target along
+  // the line (nearest first; ties: the one nearer s).
+  const double target = t * (dx * dx + dy * dy);
   auto rank = [&](const Point& q) {
     auto o = CGAL::orientation(s, e, q);
     int group = o == CGAL::COLLINEAR ? 0 : o == CGAL::RIGHT_TURN ? 1 : 2;
-    return std::make_pair(group, -((q.x() - s.x()) * dx + (q.y() - s.y()) * dy));
+    double along = (q.x() - s.x()) * dx + (q.y() - s.y()) * dy;
+    return std::make_tuple(group, std::abs(along - target), along);
   };
   std::stable_sort(out.begin(), out.end(), [&](const Point& a, const Point& b) { return rank(a) < rank(b); });
   out.erase(std::unique(out.begin(), out.end()), out.end());
