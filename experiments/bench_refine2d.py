@@ -2,8 +2,9 @@
 inputs: Steiner points and wall time per strategy, beside the lower bound.
 
 Inputs: the CG:SHOP 2025 categories ortho, point-set, simple-polygon (../shared/data/cgshop25), and generated
-domains of 1e3 .. 1e6 vertices: convex polygons with interior points, star-shaped (non-convex) polygons with
-interior points, and thin layers (a 1000 m x 1 m strip whose top and bottom are polylines, with interior points).
+domains of 1e3 .. 1e6 vertices: convex polygons with interior points, star-shaped (non-convex) polygons
+with interior points, and thin layers (a 1000 m x 1 m strip whose top and bottom are polylines, with
+interior points).
 
     PYTHONPATH=src .venv/bin/python experiments/bench_refine2d.py [--quick]
 

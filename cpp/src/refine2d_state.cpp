@@ -252,7 +252,8 @@ bool State::keeps_triangles_valid(const Side& side, const Point& p) const {
     Vertex_handle c = f->vertex(f == fl ? i : fr->index(fl));
     if (cdt.is_infinite(c)) continue;
     auto o = CGAL::orientation(side.s->point(), side.e->point(), c->point());
-    if (CGAL::orientation(side.s->point(), p, c->point()) != o || CGAL::orientation(p, side.e->point(), c->point()) != o)
+    if (CGAL::orientation(side.s->point(), p, c->point()) != o ||
+        CGAL::orientation(p, side.e->point(), c->point()) != o)
       return false;
   }
   return true;
