@@ -214,7 +214,8 @@ std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
   };
   for (int i = -2; i <= 2; ++i) {
     double x = step(x0, i), y = step(y0, i);
-    double y_at = dx != 0 ? s.y() + (x - s.x()) * (dy / dx) : y0, x_at = dy != 0 ? s.x() + (y - s.y()) * (dx / dy) : x0;
+    double y_at = dx != 0 ? s.y() + (x - s.x()) * (dy / dx) : y0;
+    double x_at = dy != 0 ? s.x() + (y - s.y()) * (dx / dy) : x0;
     for (int j = -2; j <= 2; ++j) {
       out.emplace_back(x, step(y_at, j));
       out.emplace_back(step(x_at, j), y);

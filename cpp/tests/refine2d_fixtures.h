@@ -18,7 +18,8 @@ inline Domain2 half_disk(const std::vector<Point2>& inner) {
   const int k = 200;
   for (int i = 0; i <= k; ++i) {
     double a = M_PI * i / k, r = 50 * (1 + 1e-6);
-    d.points.push_back(i == 0 ? Point2{100, 0} : i == k ? Point2{0, 0} : Point2{50 + r * std::cos(a), r * std::sin(a)});
+    Point2 arc{50 + r * std::cos(a), r * std::sin(a)};
+    d.points.push_back(i == 0 ? Point2{100, 0} : i == k ? Point2{0, 0} : arc);
   }
   for (int i = 0; i <= k; ++i) d.segments.push_back({i, (i + 1) % (k + 1)});
   for (const auto& p : inner) d.points.push_back(p);
