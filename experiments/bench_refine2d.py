@@ -1,5 +1,5 @@
 """Benchmark of nonobtuse boundary refinement against Triangle -pD, side by side in one process on the same
-inputs: Steiner points and wall time per strategy, beside the lower bound.
+inputs: Steiner points and wall time per strategy, beside the lower bound and CGAL make_conforming_Gabriel_2.
 
 Inputs: the CG:SHOP 2025 categories ortho, point-set, simple-polygon (../shared/data/cgshop25), and generated
 domains of 1e3 .. 1e6 vertices: convex polygons with interior points, star-shaped (non-convex) polygons
@@ -83,6 +83,17 @@ def triangle_pd(domain: Domain) -> tuple[int, float]:
     return len(out["vertices"]) - len(domain.points), time.perf_counter() - t0
 
 
+def cgal_gabriel(domain: Domain) -> tuple[int, float]:
+    """CGAL make_conforming_Gabriel_2 on the domain's CDT (both sides of every constraint)."""
+    from nonobtuse import _core
+
+    t0 = time.perf_counter()
+    n = _core.conforming_gabriel_steiner_points(
+        domain.points, domain.segments, domain.holes, domain.regions, bool(domain.convex_hull)
+    )
+    return n, time.perf_counter() - t0
+
+
 def run(name: str, category: str, domain: Domain, rows: list) -> None:
     row = {"input": name, "category": category, "vertices": len(domain.points)}
     for s in STRATEGIES:
@@ -92,11 +103,13 @@ def run(name: str, category: str, domain: Domain, rows: list) -> None:
         row[f"{s}_status"] = r.status
         row["lower_bound"] = r.stats["lower_bound"]
     row["triangle_pD_steiner"], row["triangle_pD_seconds"] = triangle_pd(domain)
+    row["cgal_gabriel_steiner"], row["cgal_gabriel_seconds"] = cgal_gabriel(domain)
     rows.append(row)
     print(
         f"{name:40s} n={row['vertices']:8d} lb={row['lower_bound']:7d} "
         + " ".join(f"{s}={row[f'{s}_steiner']}({row[f'{s}_seconds']:.2f}s)" for s in STRATEGIES)
-        + f" triangle-pD={row['triangle_pD_steiner']}({row['triangle_pD_seconds']:.2f}s)",
+        + f" triangle-pD={row['triangle_pD_steiner']}({row['triangle_pD_seconds']:.2f}s)"
+        + f" cgal-gabriel={row['cgal_gabriel_steiner']}({row['cgal_gabriel_seconds']:.2f}s)",
         flush=True,
     )
 
@@ -127,7 +140,11 @@ def main() -> None:
         w.writerows(rows)
     print("\ncategory totals (Steiner points):")
     cats = sorted({r["category"] for r in rows}, key=lambda c: [r["category"] for r in rows].index(c))
-    keys = ["lower_bound"] + [f"{s}_steiner" for s in STRATEGIES] + ["triangle_pD_steiner"]
+    keys = (
+        ["lower_bound"]
+        + [f"{s}_steiner" for s in STRATEGIES]
+        + ["triangle_pD_steiner", "cgal_gabriel_steiner"]
+    )
     print(f"{'category':16s} " + " ".join(f"{k:>20s}" for k in keys))
     for c in cats:
         print(f"{c:16s} " + " ".join(f"{sum(r[k] for r in rows if r['category'] == c):20d}" for k in keys))
