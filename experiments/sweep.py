@@ -7,9 +7,9 @@ that a fresh process anywhere (a local case process, a Dask worker's case proces
 
 Every case runs in its own child process (``python -c``, a new session) that is killed with its process group
 when it exceeds the case time limit; the case is then recorded with status ``"timeout"``, so one hung case
-never stalls the sweep. A plain subprocess rather than ``multiprocessing.Process`` because Dask worker processes
-are daemonic by default (``distributed.worker.daemon``), and daemonic processes may not start multiprocessing
-children.
+never stalls the sweep. A plain subprocess rather than ``multiprocessing.Process`` because Dask worker
+processes are daemonic by default (``distributed.worker.daemon``), and daemonic processes may not start
+multiprocessing children.
 
 Where the cases run:
   - default: ``workers`` case processes at a time on this machine (threads of this process drive them, so the
