@@ -31,6 +31,7 @@ interpreter start included), time_limit, result (the task's dict, or None), erro
 from __future__ import annotations
 
 import argparse
+import csv
 import hashlib
 import importlib
 import json
@@ -338,9 +339,9 @@ def _with_dask_client(scheduler: str | None, workers: int | None, body: Callable
         body(client)
 
 
-def add_sweep_arguments(parser: argparse.ArgumentParser, *, time_limit: float) -> None:
+def add_sweep_arguments(parser: argparse.ArgumentParser) -> None:
     """The common experiment options: --quick --seed --workers --scheduler/--dask-local --out --fresh
-    --time-limit."""
+    --time-limit (default: the experiment's, see ``sweep_from_args``)."""
     parser.add_argument("--quick", action="store_true", help="a small sweep (minutes on 2 cores)")
     parser.add_argument("--seed", type=int, default=0, help="seed of every random choice (default 0)")
     parser.add_argument("--workers", type=int, default=None,
@@ -352,14 +353,30 @@ def add_sweep_arguments(parser: argparse.ArgumentParser, *, time_limit: float) -
                         help="directory of the CSV and PNG outputs; case records go to OUT/cache/ "
                              "(default %(default)s)")
     parser.add_argument("--fresh", action="store_true", help="forget the recorded cases and run all again")
-    parser.add_argument("--time-limit", type=float, default=time_limit,
-                        help="seconds per case before it is killed and recorded as timeout "
-                             "(default %(default)s)")
+    parser.add_argument("--time-limit", type=float, default=None,
+                        help="seconds per case before it is killed and recorded as timeout")
 
 
 def sweep_from_args(args: argparse.Namespace, task: TaskRef | Callable[[dict], dict], cases: list[dict],
-                    name: str) -> list[Record]:
-    """Run a sweep with the options of ``add_sweep_arguments``; records go to OUT/cache/NAME[-quick].jsonl."""
-    cache = Path(args.out) / "cache" / f"{name}{'-quick' if args.quick else ''}.jsonl"
-    return run_sweep(task, cases, out=cache, time_limit=args.time_limit, workers=args.workers,
+                    name: str, time_limit: float) -> list[Record]:
+    """Run a sweep with the options of ``add_sweep_arguments`` (``time_limit`` unless --time-limit is given);
+    records go to OUT/cache/NAME[_quick].jsonl."""
+    cache = Path(args.out) / "cache" / f"{output_stem(name, args.quick)}.jsonl"
+    return run_sweep(task, cases, out=cache, time_limit=args.time_limit or time_limit, workers=args.workers,
                      scheduler=args.scheduler, dask_local=args.dask_local, fresh=args.fresh, name=name)
+
+
+def output_stem(name: str, quick: bool) -> str:
+    """File stem of an experiment's outputs: quick runs get their own files, never overwriting full ones."""
+    return f"{name}_quick" if quick else name
+
+
+def write_csv(path: Path, rows: list[dict[str, Any]], columns: list[str]) -> None:
+    """Write ``rows`` (dicts; missing keys empty) as CSV with exactly ``columns``, atomically."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_suffix(path.suffix + ".tmp")
+    with open(tmp, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=columns, extrasaction="ignore")
+        writer.writeheader()
+        writer.writerows(rows)
+    os.replace(tmp, path)
