@@ -1,0 +1,114 @@
+"""The experiments: PLC families are closed and have the angle they claim; tiny --quick runs write CSV/PNG."""
+
+from __future__ import annotations
+
+import csv
+import math
+from collections import Counter
+
+import numpy as np
+import pytest
+from experiments.plc_families import FAMILIES, make_plc
+
+BOXED = {"segment_facet", "segments", "fan"}  # facets 0..5 are the box; the rest is inside it
+
+
+def shell_triangles(family: str, plc) -> np.ndarray:
+    return plc.triangles[plc.facet_ids < 6] if family in BOXED else plc.triangles
+
+
+def check_closed_outward(points: np.ndarray, triangles: np.ndarray) -> None:
+    """Every directed edge once and its reverse once (closed, edge-manifold, consistently oriented), positive
+    enclosed volume (outward orientation)."""
+    directed = Counter((int(a), int(b)) for t in triangles
+                       for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0])))
+    assert all(n == 1 and directed[(b, a)] == 1 for (a, b), n in directed.items())
+    p = points[triangles]
+    volume = np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2])).sum() / 6
+    assert volume > 0
+
+
+def angle_deg(u, v) -> float:
+    u, v = np.asarray(u, float), np.asarray(v, float)
+    return math.degrees(math.acos(np.clip(u @ v / np.linalg.norm(u) / np.linalg.norm(v), -1, 1)))
+
+
+def facet_normal(plc, facet: int) -> np.ndarray:
+    a, b, c = plc.points[plc.triangles[plc.facet_ids == facet][0]]
+    return np.cross(b - a, c - a)
+
+
+def dangling(plc) -> list[tuple[int, int]]:
+    edges = {frozenset(e) for t in plc.triangles for e in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0]))}
+    return [tuple(int(i) for i in s) for s in plc.segments if frozenset(s) not in edges]
+
+
+CASES = [(f, theta, k) for f, theta, k in
+         [("wedge", 1.0, None), ("wedge", 45.0, None), ("wedge", 120.0, None), ("spike", 1.0, 10),
+          ("spike", 60.0, 3), ("segment_facet", 2.5, None), ("segment_facet", 90.0, None),
+          ("segments", 1.0, None), ("segments", 120.0, None), ("fan", 30.0, 12), ("fan", 1.0, 3),
+          ("fan", 120.0, 3)]]
+
+
+@pytest.mark.parametrize(("family", "theta", "k"), CASES)
+def test_family_is_closed_planar_and_has_its_angle(family, theta, k):
+    plc = make_plc(family, theta, k)
+    check_closed_outward(plc.points, shell_triangles(family, plc))
+    for facet in np.unique(plc.facet_ids):  # each facet planar: all its triangle normals parallel
+        ref = facet_normal(plc, facet)
+        for tri in plc.triangles[plc.facet_ids == facet]:
+            a, b, c = plc.points[tri]
+            assert np.linalg.norm(np.cross(np.cross(b - a, c - a), ref)) < 1e-12
+    assert len({frozenset(s) for s in plc.segments}) == len(plc.segments)
+    assert np.all(plc.segments[:, 0] != plc.segments[:, 1])
+    if family == "wedge":  # facets 2 and 2 + n - 1 are the sides at the apex edge; interior = 180 - normals'
+        n_sides = int(plc.facet_ids.max()) - 1
+        assert 180 - angle_deg(facet_normal(plc, 2), facet_normal(plc, 1 + n_sides)) == pytest.approx(theta)
+    elif family == "spike":  # point k is the apex, on +z; generators at theta from the axis
+        apex = plc.points[k]
+        assert angle_deg(plc.points[0] - apex, [0, 0, -1]) == pytest.approx(theta)
+    elif family == "segment_facet":  # the dangling segment leaves the bottom facet (z = -1) at theta
+        (a, b), = dangling(plc)
+        foot, top = sorted((plc.points[a], plc.points[b]), key=lambda p: p[2])
+        assert foot[2] == -1.0 and 90 - angle_deg(top - foot, [0, 0, 1]) == pytest.approx(theta)
+    elif family == "segments":
+        (a, b), (c, d) = dangling(plc)
+        assert a == c and angle_deg(plc.points[b] - plc.points[a], plc.points[d] - plc.points[c]) \
+            == pytest.approx(theta)
+    else:  # fan: facets 6.. rotate by theta about the axis, so do their normals (theta <= 180 here)
+        assert len(np.unique(plc.facet_ids)) == 6 + k
+        for i in range(6, 5 + k):
+            assert angle_deg(facet_normal(plc, i), facet_normal(plc, i + 1)) == pytest.approx(theta)
+
+
+def test_families_refuse_angles_outside_their_range():
+    for family, theta, k in [("spike", 90.0, 10), ("wedge", 180.0, None), ("fan", 121.0, 3),
+                             ("fan", 31.0, 12), ("segment_facet", 91.0, None), ("segments", 0.0, None)]:
+        assert not FAMILIES[family].accepts(theta, k)
+        with pytest.raises(ValueError, match="does not accept"):
+            make_plc(family, theta, k)
+
+
+def read_csv(path) -> list[dict]:
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def test_termination_map_quick_writes_csv_and_png(tmp_path):
+    pytest.importorskip("nonobtuse.mesh3d", reason="needs nonobtuse.mesh3d")
+    from nonobtuse import mesh3d
+
+    if not hasattr(mesh3d, "refine_gabriel"):
+        pytest.skip("nonobtuse.mesh3d.refine_gabriel (helper gabriel3d) is not merged yet")
+    from experiments import termination_map
+
+    assert termination_map.main(["--quick", "--out", str(tmp_path), "--thetas", "60", "--families",
+                                 "wedge,segments", "--workers", "2"]) == 0
+    rows = read_csv(tmp_path / "termination_map_quick.csv")
+    assert list(rows[0]) == termination_map.COLUMNS
+    # 2 families x theta 60 x 2 split rules
+    assert sorted((r["family"], r["split"]) for r in rows) == sorted(
+        (f, s) for f in ("wedge", "segments") for s in ("midpoint", "shells"))
+    frontier = read_csv(tmp_path / "termination_frontier_quick.csv")
+    assert list(frontier[0]) == termination_map.FRONTIER_COLUMNS and len(frontier) == 4
+    assert (tmp_path / "termination_map_quick.png").stat().st_size > 0
