@@ -112,3 +112,55 @@ def test_termination_map_quick_writes_csv_and_png(tmp_path):
     frontier = read_csv(tmp_path / "termination_frontier_quick.csv")
     assert list(frontier[0]) == termination_map.FRONTIER_COLUMNS and len(frontier) == 4
     assert (tmp_path / "termination_map_quick.png").stat().st_size > 0
+
+
+def test_frontier_is_the_smallest_theta_from_which_all_converged():
+    from experiments.termination_map import frontier
+
+    statuses = {1.0: "max_steiner", 5.0: "converged", 10.0: "time_limit", 20.0: "converged",
+                30.0: "converged"}
+    rows = [{"family": "wedge", "k": None, "split": "shells", "theta": t, "status": s}
+            for t, s in statuses.items()]
+    rows.append({"family": "wedge", "k": None, "split": "midpoint", "theta": 30.0, "status": "killed"})
+    by_split = {b["split"]: b for b in frontier(rows)}
+    # shells: 20 and 30 converged, 10 did not -> from 20; 2 of 5 not converged. midpoint: the largest failed.
+    assert (by_split["shells"]["converges_from_theta"], by_split["shells"]["not_converged"]) == (20.0, 2)
+    assert by_split["midpoint"]["converges_from_theta"] is None
+
+
+def test_fit_exponent_recovers_a_power_law():
+    from experiments.steiner_study_2d import fit_exponent
+
+    xs = [1e3, 1e4, 1e5]
+    assert fit_exponent(xs, [3 * x**1.5 for x in xs]) == pytest.approx(1.5)  # log y = log 3 + 1.5 log x
+    assert math.isnan(fit_exponent([1e3], [5.0]))
+
+
+def test_steiner_study_2d_quick_writes_csv_and_png(tmp_path):
+    import nonobtuse
+
+    try:
+        from nonobtuse.io import load_domain  # noqa: F401
+        from nonobtuse.validate import validate_domain  # noqa: F401
+    except ImportError as e:
+        pytest.skip(f"needs nonobtuse.io and nonobtuse.validate (helper io2d), not merged yet: {e}")
+    if not hasattr(nonobtuse, "refine"):
+        pytest.skip("nonobtuse.refine (helper refine2d) is not merged yet")
+    from experiments import steiner_study_2d as study
+
+    if not (study.data_root() / "cgshop25").is_dir():
+        pytest.skip("../shared/data not present")
+    assert study.main(["--quick", "--out", str(tmp_path),
+                       "--instances", "^(box|ortho_10_d2723dcc|point_set_100.*)$",
+                       "--sizes", "1000,2000", "--workers", "2"]) == 0
+    rows = read_csv(tmp_path / "steiner_study_2d_quick.csv")
+    assert list(rows[0]) == study.CORPUS_COLUMNS
+    assert sorted(r["instance"] for r in rows) == ["box", "ortho_10_d2723dcc", "point_set_100_seed0"]
+    ortho = next(r for r in rows if r["instance"] == "ortho_10_d2723dcc")
+    assert ortho["cgshop_best_known"] == "3"  # best_known.csv, row ortho_10_d2723dcc
+    assert all(int(ortho[c]) >= int(ortho["lower_bound"]) for c in ("greedy", "project_flip", "projection"))
+    scaling = read_csv(tmp_path / "steiner_scaling_quick.csv")
+    assert list(scaling[0]) == study.SCALING_COLUMNS and len(scaling) == 2 * len(study.METHODS)
+    assert list(read_csv(tmp_path / "steiner_scaling_exponents_quick.csv")[0]) == study.EXPONENT_COLUMNS
+    for png in ("steiner_study_2d_quick.png", "steiner_scaling_quick.png"):
+        assert (tmp_path / png).stat().st_size > 0
