@@ -35,7 +35,8 @@ if __package__ in (None, ""):  # run as a script: make `experiments` importable
 
 import numpy as np
 
-from experiments.sweep import add_sweep_arguments, output_stem, sweep_from_args, write_csv
+from experiments.plotting import legend, pyplot
+from experiments.sweep import add_sweep_arguments, error_summary, output_stem, sweep_from_args, write_csv
 
 STRATEGIES = ("greedy", "project-flip", "projection")
 METHODS = (*STRATEGIES, "triangle-pD")
@@ -194,8 +195,7 @@ def corpus_rows(records: list[dict]) -> list[dict]:
         if rec["status"] == "ok":
             row.update(rec["result"])
         else:
-            last_line = (rec["error"] or "").strip().splitlines()[-1:]
-            row["error"] = ": ".join([rec["status"], *last_line])[:200]
+            row["error"] = f"{rec['status']}: {error_summary(rec)}"
         rows.append(row)
     return sorted(rows, key=lambda r: (r["corpus"], r.get("n_points") or 0, r["instance"]))
 
@@ -209,7 +209,7 @@ def scaling_rows(records: list[dict]) -> list[dict]:
             row.update({k: rec["result"][k] for k in ("steiner_points", "status", "seconds", "lower_bound")})
         else:
             row.update(status="killed" if rec["status"] == "timeout" else "error", seconds=rec["seconds"],
-                       error=(rec["error"] or "").strip()[-200:].replace("\n", " "))
+                       error=error_summary(rec))
         rows.append(row)
     return sorted(rows, key=lambda r: (r["method"], r["n"]))
 
@@ -236,17 +236,8 @@ def exponents(rows: list[dict]) -> list[dict]:
     return out
 
 
-def _pyplot():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    return plt
-
-
 def plot_scaling(rows: list[dict], fits: list[dict], path: Path) -> None:
-    plt = _pyplot()
+    plt = pyplot()
     fig, axes = plt.subplots(1, 2, figsize=(12, 4.8))
     slope = {f["method"]: f for f in fits}
     for method in METHODS:
@@ -267,7 +258,7 @@ def plot_scaling(rows: list[dict], fits: list[dict], path: Path) -> None:
         ax.set_yscale("log")
         ax.set_xlabel("input vertices n (star polygon)")
         ax.set_ylabel(what)
-        ax.legend(fontsize=8)
+        legend(ax, fontsize=8)
     fig.suptitle("Scaling of the 2D boundary refinement (exponents: log-log least squares)")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
@@ -276,7 +267,7 @@ def plot_scaling(rows: list[dict], fits: list[dict], path: Path) -> None:
 
 def plot_corpus(rows: list[dict], path: Path) -> None:
     """Steiner points of each method per input, inputs sorted by lower bound; lower bound and best known."""
-    plt = _pyplot()
+    plt = pyplot()
     rows = sorted((r for r in rows if r.get("lower_bound") is not None), key=lambda r: (r["lower_bound"],
                                                                                          r["instance"]))
     fig, ax = plt.subplots(figsize=(12, 4.8))
@@ -295,7 +286,7 @@ def plot_corpus(rows: list[dict], path: Path) -> None:
     ax.set_yscale("log")
     ax.set_xlabel("input (sorted by lower bound)")
     ax.set_ylabel("Steiner points (0 drawn at 0.5)")
-    ax.legend(fontsize=8)
+    legend(ax, fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)

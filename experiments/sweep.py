@@ -101,12 +101,23 @@ def task_reference(task: TaskRef | Callable[[dict], dict]) -> TaskRef:
     if "<locals>" in name or "<lambda>" in name:
         raise ValueError(f"task {name} must be a top-level function (the case process imports it by name)")
     if module == "__main__":
-        spec = getattr(sys.modules["__main__"], "__spec__", None)
-        if spec is None:
-            raise ValueError("run the experiment as `python -m experiments.NAME`, "
-                             "or pass the task as 'module:function'")
-        module = spec.name
+        module = _main_module_name()
     return f"{module}:{name}"
+
+
+def _main_module_name() -> str:
+    """The importable name of the ``__main__`` module: the one it was run as (``python -m``), or, for a
+    script, its dotted path below the first ``sys.path`` entry that contains it."""
+    main = sys.modules["__main__"]
+    spec = getattr(main, "__spec__", None)
+    if spec is not None:
+        return spec.name
+    script = Path(getattr(main, "__file__", "")).resolve()
+    for entry in sys.path:
+        root = Path(entry or ".").resolve()
+        if script.is_relative_to(root) and script != root:
+            return ".".join(script.relative_to(root).with_suffix("").parts)
+    raise ValueError("cannot name the task of this script by module: pass it as 'module:function'")
 
 
 def resolve_task(task_ref: TaskRef) -> Callable[[dict], dict]:
@@ -215,6 +226,13 @@ def load_records(path: Path | None) -> dict[str, Record]:
                 continue  # a line cut by an interrupted run
             records[rec["key"]] = rec
     return records
+
+
+def error_summary(record: Record) -> str:
+    """One line for a failed case: the exception line of its traceback (or the exit message), at most 200
+    characters; empty for a case without an error."""
+    lines = (record.get("error") or "").strip().splitlines()
+    return lines[-1][:200] if lines else ""
 
 
 def is_finished(record: Record, time_limit: float) -> bool:

@@ -24,7 +24,8 @@ if __package__ in (None, ""):  # run as a script: make `experiments` importable
     sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from experiments.plc_families import FAMILIES, make_plc
-from experiments.sweep import add_sweep_arguments, output_stem, sweep_from_args, write_csv
+from experiments.plotting import legend, pyplot
+from experiments.sweep import add_sweep_arguments, error_summary, output_stem, sweep_from_args, write_csv
 
 SPLITS = ("midpoint", "shells")
 FULL_THETAS = [float(t) for t in range(1, 121)]
@@ -82,7 +83,7 @@ def rows_from_records(records: list[dict]) -> list[dict]:
             row.update(rec["result"])
         else:
             row.update(status="killed" if rec["status"] == "timeout" else "error", seconds=rec["seconds"],
-                       diagnosis=(rec["error"] or "")[-300:].replace("\n", " "))
+                       diagnosis=error_summary(rec))
         rows.append(row)
     return sorted(rows, key=lambda r: (r["family"], r["k"] or 0, r["theta"], r["split"]))
 
@@ -108,11 +109,7 @@ def frontier(rows: list[dict]) -> list[dict]:
 
 def plot(rows: list[dict], path: Path) -> None:
     """Two columns (split rules); top: status over theta per family row; bottom: log Steiner count."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = pyplot()
     labels = sorted({_label(r) for r in rows}, key=_label_order)
     statuses = sorted({r["status"] for r in rows}, key=lambda s: (s != CONVERGED, s))
     colours = dict(zip(statuses, plt.get_cmap("tab10").colors[2:] + plt.get_cmap("tab10").colors[:2]))
@@ -127,7 +124,7 @@ def plot(rows: list[dict], path: Path) -> None:
                 ax.scatter(*zip(*pts), marker="s", s=14, color=colours[status], label=status)
         ax.set_yticks(range(len(labels)), labels, fontsize=7)
         ax.set_title(f"split={split}: status")
-        ax.legend(fontsize=7, loc="lower right")
+        legend(ax, fontsize=7, loc="lower right")
         ax = axes[1, col]
         for label in labels:
             if label.startswith("fan") and label not in ("fan k=3", "fan k=12"):
@@ -143,7 +140,7 @@ def plot(rows: list[dict], path: Path) -> None:
         ax.set_xscale("log")
         ax.set_xlabel("theta (degrees)")
         ax.set_ylabel("Steiner points (hollow: not converged)")
-        ax.legend(fontsize=7)
+        legend(ax, fontsize=7)
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=110)
