@@ -1,7 +1,8 @@
 """Parametric PLC families with a controlled small input angle ``theta`` (degrees), for termination studies.
 
-Every family returns a ``nonobtuse.mesh3d.PLC`` whose closed surfaces are edge-manifold and outward oriented;
-facets inside a box (the fan) and dangling segments are internal features of the box's volume. Segments are
+Every family returns a ``nonobtuse.mesh3d.PLC`` whose outer surface is closed, edge-manifold and outward
+oriented; facets inside a box (the fan) and dangling segments are internal features of the box's volume, and
+every edge of every facet is shared by at least two facets. Segments are
 the edges where facets meet at a non-flat angle, the free edges of internal facets, and the dangling segments.
 
     wedge(theta)        a prism over a circular sector: two facets meet at dihedral theta along the apex
@@ -13,8 +14,8 @@ the edges where facets meet at a non-flat angle, the free edges of internal face
     segment_facet(theta) a dangling segment standing on the bottom facet of a box at angle theta to it.
                         theta in (0, 90].
     segments(theta)     two dangling segments meeting at angle theta inside a box. theta in (0, 180].
-    fan(theta, k)       k rectangular facets around one edge inside a box (internal facets), consecutive
-                        ones at dihedral theta; needs k theta <= 360 so that the last gap is at least theta.
+    fan(theta, k)       k internal facets around one edge cut a box into k regions, consecutive facets at
+                        dihedral theta; needs k theta <= 360 so that the last gap is at least theta.
 
 Coordinates are O(1) and nothing is symmetric about the box centre (the features sit off centre), so that no
 feature point is cospherical with the box corners by construction.
@@ -171,18 +172,65 @@ def segments(theta: float, k: int = 0) -> PLC:
     return b.plc(f"segments(theta={theta:g})")
 
 
+def _square_exit(c: tuple[float, float], angle: float) -> float:
+    """Where the ray from c (inside the square [BOX_LO, BOX_HI]^2) at ``angle`` leaves the square, as a
+    perimeter position s in [0, 4 * side): counter-clockwise from corner (BOX_LO, BOX_LO)."""
+    side = BOX_HI - BOX_LO
+    dx, dy = math.cos(angle), math.sin(angle)
+    exits = []  # (ray parameter, perimeter position) for the four sides the ray runs towards
+    if dy < 0:
+        t = (BOX_LO - c[1]) / dy
+        exits.append((t, c[0] + t * dx - BOX_LO))
+    if dx > 0:
+        t = (BOX_HI - c[0]) / dx
+        exits.append((t, side + c[1] + t * dy - BOX_LO))
+    if dy > 0:
+        t = (BOX_HI - c[1]) / dy
+        exits.append((t, 2 * side + BOX_HI - (c[0] + t * dx)))
+    if dx < 0:
+        t = (BOX_LO - c[0]) / dx
+        exits.append((t, 3 * side + BOX_HI - (c[1] + t * dy)))
+    return min(exits)[1] % (4 * side)
+
+
+def _perimeter_point(s: float) -> tuple[float, float]:
+    side = BOX_HI - BOX_LO
+    edge, u = divmod(s, side)
+    return [(BOX_LO + u, BOX_LO), (BOX_HI, BOX_LO + u), (BOX_HI - u, BOX_HI), (BOX_LO, BOX_HI - u)][int(edge)]
+
+
 def fan(theta: float, k: int = 3) -> PLC:
-    """Box with k internal rectangular facets (radius 0.5, height 1) around a vertical edge, theta apart."""
+    """The box cut into k regions by k internal facets around a vertical axis edge, consecutive ones at
+    dihedral theta. Each internal facet runs from the axis to a box wall, so every facet edge is shared (a
+    multi-region PLC, like TetGen's example.poly); the box facets are triangulated to contain the internal
+    facets' edges."""
+    side = BOX_HI - BOX_LO
+    centre = (0.0625, -0.03125)
+    walls = [_square_exit(centre, math.radians(i * theta)) for i in range(k)]
+    if any(abs(w / side - round(w / side)) < 1e-9 for w in walls):
+        raise ValueError(f"fan(theta={theta}, k={k}): an internal facet ends in a box corner")
+    # Ring: the square's boundary points in counter-clockwise order, the corners and the facets' wall points.
+    ring = sorted([(i * side, None) for i in range(4)] + [(w, i) for i, w in enumerate(walls)])
     b = _Builder()
-    _box(b)
-    cx, cy, z0, z1 = 0.0625, -0.03125, -0.5, 0.5
-    axis = [b.point((cx, cy, z0)), b.point((cx, cy, z1))]
-    b.segments.append((axis[0], axis[1]))
+    low = [b.point((*_perimeter_point(s), BOX_LO)) for s, _ in ring]
+    high = [b.point((*_perimeter_point(s), BOX_HI)) for s, _ in ring]
+    axis = (b.point((*centre, BOX_LO)), b.point((*centre, BOX_HI)))
+    n = len(ring)
+    b.facet([(axis[0], low[(j + 1) % n], low[j]) for j in range(n)])  # bottom, -z, fan around the axis foot
+    b.facet([(axis[1], high[j], high[(j + 1) % n]) for j in range(n)])
+    for wall in range(4):  # one facet per box wall, split at the wall points on it
+        on_wall = [j for j in range(n) if wall * side <= ring[j][0] < (wall + 1) * side]
+        quads = [(j, (j + 1) % n) for j in on_wall]
+        b.facet([t for i, j in quads for t in ((low[i], low[j], high[j]), (low[i], high[j], high[i]))])
+    b.loop_segments(low)
+    b.loop_segments(high)
+    b.segments.append(axis)
+    wall_index = {facet: j for j, (_, facet) in enumerate(ring) if facet is not None}
+    b.segments.extend(zip(low, high))  # box corner edges and the internal facets' wall edges
     for i in range(k):
-        a = math.radians(i * theta)
-        outer = [b.point((cx + 0.5 * math.cos(a), cy + 0.5 * math.sin(a), z)) for z in (z0, z1)]
-        b.polygon([axis[0], outer[0], outer[1], axis[1]])
-        b.segments.extend([(axis[0], outer[0]), (outer[0], outer[1]), (outer[1], axis[1])])
+        j = wall_index[i]
+        b.polygon([axis[0], low[j], high[j], axis[1]])
+        b.segments.extend([(axis[0], low[j]), (axis[1], high[j])])
     return b.plc(f"fan(theta={theta:g}, k={k})")
 
 

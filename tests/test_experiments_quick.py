@@ -17,11 +17,14 @@ def shell_triangles(family: str, plc) -> np.ndarray:
     return plc.triangles[plc.facet_ids < 6] if family in BOXED else plc.triangles
 
 
+def directed_edges(triangles: np.ndarray) -> list[tuple[int, int]]:
+    return [(int(t[i]), int(t[(i + 1) % 3])) for t in triangles for i in range(3)]
+
+
 def check_closed_outward(points: np.ndarray, triangles: np.ndarray) -> None:
     """Every directed edge once and its reverse once (closed, edge-manifold, consistently oriented), positive
     enclosed volume (outward orientation)."""
-    directed = Counter((int(a), int(b)) for t in triangles
-                       for a, b in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0])))
+    directed = Counter(directed_edges(triangles))
     assert all(n == 1 and directed[(b, a)] == 1 for (a, b), n in directed.items())
     p = points[triangles]
     volume = np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2])).sum() / 6
@@ -39,7 +42,7 @@ def facet_normal(plc, facet: int) -> np.ndarray:
 
 
 def dangling(plc) -> list[tuple[int, int]]:
-    edges = {frozenset(e) for t in plc.triangles for e in ((t[0], t[1]), (t[1], t[2]), (t[2], t[0]))}
+    edges = {frozenset(e) for e in directed_edges(plc.triangles)}
     return [tuple(int(i) for i in s) for s in plc.segments if frozenset(s) not in edges]
 
 
@@ -59,6 +62,8 @@ def test_family_is_closed_planar_and_has_its_angle(family, theta, k):
         for tri in plc.triangles[plc.facet_ids == facet]:
             a, b, c = plc.points[tri]
             assert np.linalg.norm(np.cross(np.cross(b - a, c - a), ref)) < 1e-12
+    edge_use = Counter(frozenset(e) for e in directed_edges(plc.triangles))
+    assert min(edge_use.values()) >= 2  # no facet has a free edge: internal facets end on other facets
     assert len({frozenset(s) for s in plc.segments}) == len(plc.segments)
     assert np.all(plc.segments[:, 0] != plc.segments[:, 1])
     if family == "wedge":  # facets 2 and 2 + n - 1 are the sides at the apex edge; interior = 180 - normals'
