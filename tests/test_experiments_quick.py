@@ -62,6 +62,8 @@ def test_family_is_closed_planar_and_has_its_angle(family, theta, k):
         for tri in plc.triangles[plc.facet_ids == facet]:
             a, b, c = plc.points[tri]
             assert np.linalg.norm(np.cross(np.cross(b - a, c - a), ref)) < 1e-12
+    a, b, c = (plc.points[plc.triangles[:, i]] for i in range(3))
+    assert np.all(np.linalg.norm(np.cross(b - a, c - a), axis=1) > 1e-6)  # no degenerate facet triangle
     edge_use = Counter(frozenset(e) for e in directed_edges(plc.triangles))
     assert min(edge_use.values()) >= 2  # no facet has a free edge: internal facets end on other facets
     assert len({frozenset(s) for s in plc.segments}) == len(plc.segments)
