@@ -93,6 +93,8 @@ def rows(value: Any, width: int, kind: type, where: str) -> np.ndarray:
     row_shape = (width,) if width else ()
     if arr is None or arr.dtype.kind not in ("iu" if kind is int else "iuf") or arr.shape[1:] != row_shape:
         _explain(value, width, kind, where)
+    if any(isinstance(x, bool) for x in (value if width == 0 else (x for row in value for x in row))):
+        _explain(value, width, kind, where)  # numpy took true/false for 1/0
     if kind is float and arr.dtype.kind in "iu" and np.abs(arr).max() > 2**53:
         _exact_floats(value, width, where)
     return np.ascontiguousarray(arr, dtype=dtype)

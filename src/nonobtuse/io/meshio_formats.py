@@ -1,5 +1,6 @@
-"""VTK ``.vtu`` and Gmsh ``.msh`` through meshio: triangles, constrained segments as line cells, the region
-attribute as triangle cell data ``region``."""
+"""VTK ``.vtu`` and Gmsh ``.msh`` (format 2.2) through meshio: triangles, constrained segments as line cells,
+the region attribute as triangle cell data ``region`` (.vtu) or as the integer physical tag (.msh; 0 when the
+mesh has no regions)."""
 
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ from nonobtuse.errors import InvalidInputError
 from nonobtuse.io._files import atomic_path
 from nonobtuse.mesh import Mesh
 
-FORMATS = {".vtu": "vtu", ".msh": "gmsh"}
+FORMATS = {".vtu": "vtu", ".msh": "gmsh22"}  # Gmsh 2.2 needs no entity topology for mixed cell types
 
 
 def write_meshio(mesh: Mesh, path: Path) -> None:
@@ -22,12 +23,16 @@ def write_meshio(mesh: Mesh, path: Path) -> None:
 
     points = np.column_stack([mesh.points, np.zeros(len(mesh.points))])
     cells = [("triangle", mesh.triangles), ("line", mesh.segments)]
-    cell_data = {}
-    if mesh.regions is not None:
-        cell_data["region"] = [np.asarray(mesh.regions, dtype=np.float64), np.zeros(len(mesh.segments))]
-    if FORMATS[path.suffix.lower()] == "gmsh":  # gmsh wants physical and geometrical tags per cell
-        tags = [np.zeros(len(mesh.triangles), np.int32), np.zeros(len(mesh.segments), np.int32)]
-        cell_data.update({"gmsh:physical": tags, "gmsh:geometrical": tags})
+    regions = np.zeros(len(mesh.triangles)) if mesh.regions is None else np.asarray(mesh.regions, np.float64)
+    if path.suffix.lower() == ".msh":  # Gmsh: the region is the triangle's physical tag, an integer
+        if np.any(regions != np.round(regions)):
+            raise InvalidInputError(
+                f"{path}: .msh stores regions as integer physical tags; these are not integers"
+            )
+        tags = [regions.astype(np.int32), np.zeros(len(mesh.segments), np.int32)]
+        cell_data = {"gmsh:physical": tags, "gmsh:geometrical": tags}
+    else:
+        cell_data = {"region": [regions, np.zeros(len(mesh.segments))]} if mesh.regions is not None else {}
     with atomic_path(path) as tmp:
         meshio.write(
             tmp, meshio.Mesh(points, cells, cell_data=cell_data), file_format=FORMATS[path.suffix.lower()]
@@ -42,7 +47,7 @@ def read_meshio(path: Path) -> Mesh:
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # meshio warns about formats details it skips
-            m = meshio.read(path, file_format=FORMATS[path.suffix.lower()])
+            m = meshio.read(path, file_format="gmsh" if path.suffix.lower() == ".msh" else "vtu")
     except Exception as e:  # meshio raises many types (ReadError, ValueError, KeyError) for broken files
         raise InvalidInputError(f"{path}: cannot read the mesh ({type(e).__name__}: {e})") from None
     points = np.ascontiguousarray(m.points[:, :2], dtype=np.float64)
@@ -55,6 +60,7 @@ def read_meshio(path: Path) -> Mesh:
     triangles = np.concatenate([t for _, t in tri]).astype(np.int64)
     segments = np.concatenate(lines).astype(np.int64) if lines else np.zeros((0, 2), np.int64)
     regions = None
-    if "region" in m.cell_data:
-        regions = np.concatenate([np.asarray(m.cell_data["region"][i], dtype=np.float64) for i, _ in tri])
+    key = "gmsh:physical" if path.suffix.lower() == ".msh" else "region"
+    if key in m.cell_data:
+        regions = np.concatenate([np.asarray(m.cell_data[key][i], dtype=np.float64) for i, _ in tri])
     return Mesh(points, triangles, segments, points.copy(), segments.copy(), regions)

@@ -33,7 +33,7 @@ def read_node(path: Path) -> Domain:
     lines = Lines(path)
     points, point_lines, first_id = _read_vertices(lines)
     if len(points) == 0:
-        raise lines.next("vertices").error("the .node file lists no vertices")
+        raise InvalidInputError(f"{path}: the .node file lists no vertices")
     lines.expect_end()
     origin = SourceMap(file=str(path), first_id=first_id, points=point_lines)
     return Domain(points, convex_hull=True, source=str(path), origin=origin)
