@@ -55,7 +55,7 @@ def _col(method: str) -> str:
     return method.replace("-", "_")
 
 
-CORPUS_COLUMNS = (["corpus", "instance", "n_points", "n_segments", "lower_bound"]
+CORPUS_COLUMNS = (["corpus", "instance", "n_points", "n_segments", "convex_hull", "lower_bound"]
                   + [_col(m) for m in METHODS] + ["cgshop_best_known"]
                   + [f"{_col(m)}_status" for m in METHODS] + [f"{_col(m)}_seconds" for m in METHODS]
                   + ["error"])
@@ -70,35 +70,60 @@ def generate(generator: str, n: int, seed: int):
 
     star_polygon:   vertex j at angle 2 pi j / n, radius 1 + 2 u (2 pi / n), u uniform in [-1, 1]: a circle
                     roughened at the scale of its edges, so that its local shape does not change with n.
-    convex_polygon: n points on the unit circle at sorted uniform angles (duplicates removed: may be < n).
+    convex_polygon: n // 2 points on the unit circle at sorted uniform angles (the polygon), and the other
+                    points uniform in the open unit disk.
     point_set:      n uniform points in the unit square; the domain is their convex hull.
     """
-    from nonobtuse.validate import validate_domain
-
     from nonobtuse import Domain
+    from nonobtuse.validate import validate_domain
 
     rng = np.random.default_rng(seed)
     if generator == "point_set":
         return validate_domain(Domain(points=rng.random((n, 2)), convex_hull=True, source=f"point_set({n})"))
-    if generator == "star_polygon":
-        angles = 2 * np.pi * np.arange(n) / n
-        radii = 1 + 2 * rng.uniform(-1, 1, n) * (2 * np.pi / n)
-    elif generator == "convex_polygon":
-        angles, radii = np.unique(rng.uniform(0, 2 * np.pi, n)), 1.0
-    else:
+    if generator not in POLYGONS:
         raise ValueError(f"unknown generator {generator!r}; known: {', '.join(GENERATORS)}")
-    points = np.column_stack([radii * np.cos(angles), radii * np.sin(angles)])
-    loop = np.arange(len(points))
+    points, m = POLYGONS[generator](rng, n)
+    loop = np.arange(m)
     return validate_domain(Domain(points=points, segments=np.column_stack([loop, np.roll(loop, -1)]),
                                   source=f"{generator}({n})"))
 
 
+def _polar(radii, angles) -> np.ndarray:
+    return np.column_stack([radii * np.cos(angles), radii * np.sin(angles)])
+
+
+def _star_polygon(rng: np.random.Generator, n: int) -> tuple[np.ndarray, int]:
+    angles = 2 * np.pi * np.arange(n) / n
+    return _polar(1 + 2 * rng.uniform(-1, 1, n) * (2 * np.pi / n), angles), n
+
+
+def _convex_polygon(rng: np.random.Generator, n: int) -> tuple[np.ndarray, int]:
+    m = n // 2
+    boundary = _polar(1.0, np.sort(rng.uniform(0, 2 * np.pi, m)))
+    inside = _polar(np.sqrt(rng.random(n - m)), rng.uniform(0, 2 * np.pi, n - m))
+    return np.vstack([boundary, inside]), m
+
+
+# generator -> (rng, n) -> (points, m): the first m points are the polygon, in order; the rest lie inside.
+POLYGONS = {"star_polygon": _star_polygon, "convex_polygon": _convex_polygon}
+
+
 def load_case_domain(case: dict):
+    """The case's domain. A file whose segments do not enclose a domain (Triangle's box.poly, meant for
+    ``triangle -c``) is read again as the convex hull of its points; ``domain.convex_hull`` then says so."""
     if case["corpus"] == "generated":
         return generate(case["generator"], case["n"], case["seed"])
+    from nonobtuse.errors import InvalidInputError
     from nonobtuse.io import load_domain
 
-    return load_domain(data_root() / case["path"])
+    path = data_root() / case["path"]
+    try:
+        return load_domain(path)
+    except InvalidInputError as enclosed_error:
+        try:
+            return load_domain(path, convex_hull=True)
+        except InvalidInputError:
+            raise enclosed_error from None
 
 
 def corpus_cases(quick: bool, seed: int, pattern: str | None = None) -> list[dict]:
@@ -152,7 +177,8 @@ def run_method(domain, method: str) -> dict:
 def run_corpus_case(case: dict) -> dict:
     """Every method on one input; a method that raises is recorded as status "error: ..." and the rest run."""
     domain = load_case_domain(case)
-    row: dict = {"n_points": len(domain.points), "n_segments": len(domain.segments)}
+    row: dict = {"n_points": len(domain.points), "n_segments": len(domain.segments),
+                 "convex_hull": domain.convex_hull}
     for method in METHODS:
         try:
             res = run_method(domain, method)
