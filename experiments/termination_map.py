@@ -5,7 +5,7 @@ rule ("midpoint", "shells"), one case runs ``nonobtuse.mesh3d.refine_gabriel`` u
 budget and a time budget, and records its status, Steiner points, smallest subsegment and time.
 
     python -m experiments.termination_map --quick        # < 2 min on 2 cores
-    python -m experiments.termination_map                # theta = 1..120 every degree (hours)
+    python -m experiments.termination_map                # theta = 1..10, 12..30 by 2, 35..120 by 5 (hours)
 
 Writes OUT/termination_map[_quick].csv (one row per case), OUT/termination_frontier[_quick].csv (per family
 and split: the smallest theta from which every larger theta of the grid converged) and
@@ -28,7 +28,7 @@ from experiments.plotting import legend, pyplot
 from experiments.sweep import add_sweep_arguments, error_summary, output_stem, sweep_from_args, write_csv
 
 SPLITS = ("midpoint", "shells")
-FULL_THETAS = [float(t) for t in range(1, 121)]
+FULL_THETAS = [float(t) for t in [*range(1, 11), *range(12, 31, 2), *range(35, 121, 5)]]  # dense where small
 QUICK_THETAS = [2.0, 10.0, 30.0, 60.0, 90.0]
 FAN_KS_FULL = list(range(3, 13))
 FAN_KS_QUICK = [3, 6, 12]
@@ -39,11 +39,10 @@ FRONTIER_COLUMNS = ["family", "k", "split", "converges_from_theta", "not_converg
 CONVERGED = "converged"
 
 
-def make_cases(quick: bool, thetas: list[float] | None = None,
+def make_cases(quick: bool, budget: float, thetas: list[float] | None = None,
                families: list[str] | None = None) -> list[dict]:
-    """Every (family, k, theta, split) the families accept, with the refinement time budget."""
+    """Every (family, k, theta, split) the families accept, with the refinement time budget (seconds)."""
     thetas = thetas or (QUICK_THETAS if quick else FULL_THETAS)
-    budget = BUDGET_SECONDS["quick" if quick else "full"]
     cases = []
     for name in families or list(FAMILIES):
         fam = FAMILIES[name]
@@ -166,9 +165,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--thetas", type=lambda s: [float(t) for t in s.split(",")],
                         help="comma-separated angles in degrees instead of the default grid")
     parser.add_argument("--families", type=lambda s: s.split(","), help=f"subset of {','.join(FAMILIES)}")
+    parser.add_argument("--budget", type=float, help="refine_gabriel time_limit per case, seconds "
+                        f"(default {BUDGET_SECONDS['quick']} with --quick, else {BUDGET_SECONDS['full']})")
     args = parser.parse_args(argv)
-    cases = make_cases(args.quick, args.thetas, args.families)
-    budget = BUDGET_SECONDS["quick" if args.quick else "full"]
+    budget = args.budget or BUDGET_SECONDS["quick" if args.quick else "full"]
+    cases = make_cases(args.quick, budget, args.thetas, args.families)
     records = sweep_from_args(args, run_case, cases, "termination_map", time_limit=3 * budget + 30)
     rows = rows_from_records(records)
     stem = output_stem("termination_map", args.quick)
