@@ -78,6 +78,10 @@ def test_a_mesh_is_checked_as_given_and_local_delaunay_is_exact():
     assert report.ok
     assert report.not_locally_delaunay == [(0, 1)]
     assert report.angles["interior"]["obtuse"] == 2
+    # Constrained, the same edge is an interface (a constrained Delaunay triangulation may keep it): not listed.
+    constrained = check(mesh_of(mesh.points, mesh.triangles, [(0, 1)]))
+    assert constrained.not_locally_delaunay == []
+    assert len(constrained.offenders) == 2
 
 
 def test_malformed_mesh_is_invalid_input():

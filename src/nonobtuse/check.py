@@ -70,7 +70,8 @@ class CheckReport:
     angles:       per kind, the number of edge sides (angles opposite the edge) per class ("acute", "right",
                   "obtuse"); a boundary edge has one side, the others two.
     offenders:    every obtuse side of a boundary or interface edge, largest angle first.
-    not_locally_delaunay: interior and interface edges (a, b) failing the exact incircle test.
+    not_locally_delaunay: interior edges (a, b) failing the exact incircle test (empty for a constrained
+                  Delaunay triangulation; constrained edges need not be locally Delaunay).
     points, triangles: size of the mesh checked.
     """
 
@@ -147,8 +148,7 @@ def check_mesh(mesh: Mesh) -> CheckReport:
         edges[kind] = int(of_kind.sum())
         present = (c["triangle"] >= 0) & of_kind[:, None]
         angles[kind] = {name: int((present & (c["angle"] == j)).sum()) for j, name in enumerate(ANGLES)}
-    two_sided = (c["triangle"] >= 0).all(axis=1)
-    bad = c["edges"][two_sided & (c["locally_delaunay"] == 0)]
+    bad = c["edges"][(c["kind"] == KINDS.index("interior")) & (c["locally_delaunay"] == 0)]
     return CheckReport(edges=edges, angles=angles, offenders=_offenders(mesh, c),
                        not_locally_delaunay=[(int(a), int(b)) for a, b in bad], points=len(mesh.points),
                        triangles=len(mesh.triangles), source=str(mesh.stats.get("source", "<memory>")))
