@@ -32,8 +32,10 @@ def test_check_exit_codes(tmp_path, capsys):
     assert "invalid input" in capsys.readouterr().err
 
 
-def test_check_json(tmp_path, capsys):
-    assert main(["check", "--json", str(cgshop_file(tmp_path, "obtuse", [(0, 0), (4, 0), (2, 1)]))]) == 1
+def test_check_json_and_plot(tmp_path, capsys):
+    domain = str(cgshop_file(tmp_path, "obtuse", [(0, 0), (4, 0), (2, 1)]))
+    assert main(["check", "--json", domain, "--plot", str(tmp_path / "obtuse.png")]) == EXIT_VIOLATIONS
+    assert (tmp_path / "obtuse.png").read_bytes().startswith(b"\x89PNG")
     report = json.loads(capsys.readouterr().out)
     assert report["ok"] is False
     assert report["edges"] == {"boundary": 3, "interface": 0, "interior": 0}

@@ -23,9 +23,14 @@ def _triangulate(args: argparse.Namespace) -> int:
 
 def _check(args: argparse.Namespace) -> int:
     path = Path(args.input)
-    report = check(read_mesh(path) if is_mesh_file(path) else load_domain(path))
+    mesh = read_mesh(path) if is_mesh_file(path) else triangulate(load_domain(path))
+    report = check(mesh)
     report.source = str(path)
     print(json.dumps(report.to_dict(), indent=1) if args.json else report.summary())
+    if args.plot:
+        from nonobtuse.plot import plot_check  # matplotlib only when asked
+
+        plot_check(mesh, report, args.plot, vertical_exaggeration=args.exaggeration)
     return EXIT_OK if report.ok else EXIT_VIOLATIONS
 
 
@@ -40,6 +45,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("input", help="a mesh file (checked as is) or a domain file (its constrained Delaunay "
                    "triangulation is checked)")
     p.add_argument("--json", action="store_true", help="print the full report as JSON")
+    p.add_argument("--plot", metavar="PNG", help="also draw the mesh, offending edges in red")
+    p.add_argument("--exaggeration", type=float, default=1.0, help="vertical exaggeration of the plot")
     p.set_defaults(func=_check)
 
     p = sub.add_parser("demo", help="run on a built-in thin-layer geological cross-section")
