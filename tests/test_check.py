@@ -6,11 +6,12 @@ import json
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
-from nonobtuse import Domain, InvalidInputError, Mesh, check, triangulate
+from nonobtuse import Domain, InvalidInputError, Mesh, check
 from nonobtuse.check import ANGLES, KINDS, classify_edges
+from point_sets import point_set_mesh
 
 
 def closed_polygon(points, extra_segments=(), **kwargs) -> Domain:
@@ -78,7 +79,7 @@ def test_a_mesh_is_checked_as_given_and_local_delaunay_is_exact():
     assert report.ok
     assert report.not_locally_delaunay == [(0, 1)]
     assert report.angles["interior"]["obtuse"] == 2
-    # Constrained, the same edge is an interface (a constrained Delaunay triangulation may keep it): not listed.
+    # Constrained, the edge is an interface (a constrained Delaunay triangulation may keep it): not listed.
     constrained = check(mesh_of(mesh.points, mesh.triangles, [(0, 1)]))
     assert constrained.not_locally_delaunay == []
     assert len(constrained.offenders) == 2
@@ -109,10 +110,8 @@ COORDINATE = st.floats(-1e3, 1e3).map(lambda x: round(x, 6))
 @settings(derandomize=True, deadline=None, max_examples=40)
 @given(st.lists(st.tuples(COORDINATE, COORDINATE), min_size=3, max_size=40, unique=True))
 def test_exact_classes_agree_with_floats_where_the_margin_is_large(coords):
-    points = np.unique(np.asarray(coords), axis=0)
-    if len(points) < 3 or np.linalg.matrix_rank(points[1:] - points[0]) < 2:
-        return  # collinear: no triangle
-    mesh = triangulate(Domain(points=points, convex_hull=True))
+    mesh = point_set_mesh(coords)
+    assume(mesh is not None)
     edges = classify_edges(mesh)
     margin, present = float_classes(mesh, edges)
     clear = present & (np.abs(margin) > 1e-9)
@@ -124,10 +123,8 @@ def test_exact_classes_agree_with_floats_where_the_margin_is_large(coords):
 @given(st.lists(st.tuples(st.integers(0, 6), st.integers(0, 6)), min_size=3, max_size=30, unique=True))
 def test_on_a_small_grid_right_angles_are_found_exactly(coords):
     # Small integer coordinates: the float dot product is exact, so its sign is the exact class, RIGHT too.
-    points = np.asarray(coords, dtype=float)
-    if np.linalg.matrix_rank(points[1:] - points[0]) < 2:
-        return
-    mesh = triangulate(Domain(points=points, convex_hull=True))
+    mesh = point_set_mesh(coords)
+    assume(mesh is not None)
     edges = classify_edges(mesh)
     margin, present = float_classes(mesh, edges)
     expected = np.select([margin > 0, margin == 0], [0, 1], 2)

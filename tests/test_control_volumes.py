@@ -7,12 +7,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from nonobtuse import Domain, InvalidInputError, Mesh, control_volumes, triangulate
 from nonobtuse.check import ANGLES, KINDS, classify_edges
 from nonobtuse.demo import CONDUCTIVITY, CURVES, cross_section
+from point_sets import point_set_mesh
 
 CGSHOP = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "cgshop25"
 OBTUSE = ANGLES.index("obtuse")
@@ -124,10 +125,8 @@ def test_demo_cross_section_is_consistent():
 @settings(derandomize=True, deadline=None, max_examples=30)
 @given(st.lists(st.tuples(st.integers(0, 50), st.integers(0, 50)), min_size=4, max_size=40, unique=True))
 def test_random_point_sets_are_consistent(coords):
-    points = np.asarray(coords, dtype=float)
-    if np.linalg.matrix_rank(points[1:] - points[0]) < 2:
-        return
-    mesh = triangulate(Domain(points=points, convex_hull=True))
+    mesh = point_set_mesh(coords)
+    assume(mesh is not None)
     hull = mesh.points[np.unique(mesh.segments)]
     centre = hull.mean(axis=0)
     ordered = hull[np.argsort(np.arctan2(hull[:, 1] - centre[1], hull[:, 0] - centre[0]))]
