@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 
 import numpy as np
@@ -13,9 +12,13 @@ from hypothesis import strategies as st
 from nonobtuse import Domain, InvalidInputError, Mesh, control_volumes, triangulate
 from nonobtuse.check import ANGLES, KINDS, classify_edges
 from nonobtuse.demo import CONDUCTIVITY, CURVES, cross_section
+from nonobtuse.io import load_domain
 from point_sets import point_set_mesh
 
-CGSHOP = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "cgshop25"
+SHARED = Path(__file__).resolve().parents[1] / ".." / "shared" / "data"
+CORPUS_SUFFIXES = {".poly", ".node", ".json"}
+CLOSED_BY_HULL = {"box.poly", "cdt_Constrained_Sweden.poly"}  # open outer boundaries: Triangle -c
+INVALID = {"cdt_cdt.poly"}  # zero-length segments
 OBTUSE = ANGLES.index("obtuse")
 
 
@@ -133,27 +136,22 @@ def test_random_point_sets_are_consistent(coords):
     assert_consistent(mesh, polygon_area(ordered))
 
 
-def cgshop_domain(path: Path) -> Domain:
-    """A CG:SHOP 2025 instance: the boundary polygon (counter-clockwise indices) plus extra constraints."""
-    data = json.loads(path.read_text())
-    boundary = data["region_boundary"]
-    loop = [(a, b) for a, b in zip(boundary, boundary[1:] + boundary[:1])]
-    return Domain(points=np.column_stack([data["points_x"], data["points_y"]]),
-                  segments=loop + [tuple(c) for c in data["additional_constraints"]], source=path.name)
+def corpus() -> list[Path]:
+    files = (p for d in ("2d", "cgshop25") for p in sorted((SHARED / d).glob("*")))
+    return [p for p in files if p.suffix in CORPUS_SUFFIXES]
 
 
-def cgshop_instances() -> list[Path]:
-    return sorted(CGSHOP.glob("*.instance.json")) if CGSHOP.is_dir() else []
-
-
-@pytest.mark.parametrize("path", cgshop_instances()[::3], ids=lambda p: p.name)
-def test_cgshop_corpus_signs_agree_with_the_checker(path):
-    domain = cgshop_domain(path)
-    mesh = triangulate(domain)
-    boundary = domain.points[json.loads(path.read_text())["region_boundary"]]
-    assert_consistent(mesh, polygon_area(boundary))
-
-
-def test_cgshop_corpus_present():
-    if not cgshop_instances():
+@pytest.mark.parametrize("path", corpus() or [None], ids=lambda p: p.name if p else "absent")
+def test_corpus_signs_agree_with_the_checker(path):
+    if path is None:
         pytest.skip("../shared/data not present")
+    if path.name in INVALID:
+        pytest.skip(f"{path.name} is invalid input (see test_io2d)")
+    mesh = triangulate(load_domain(path, convex_hull=True if path.name in CLOSED_BY_HULL else None))
+    # The reference area: the triangles' own areas (that they cover the domain is triangulate's guarantee).
+    u, v = (mesh.points[mesh.triangles[:, k]] - mesh.points[mesh.triangles[:, 0]] for k in (1, 2))
+    area = float(np.sum(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]) / 2)
+    attributes = np.unique(mesh.regions)
+    assert_consistent(mesh, area)
+    # One conductivity per region (1, 2, 3, ... in attribute order): interior edges keep one region.
+    assert_consistent(mesh, area, {a: float(i + 1) for i, a in enumerate(attributes.tolist())})

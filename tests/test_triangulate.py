@@ -49,3 +49,15 @@ def test_crossing_segments_are_invalid_input():
     domain = Domain(points=[(0, 0), (1, 1), (0, 1), (1, 0)], segments=[(0, 1), (2, 3)], convex_hull=True)
     with pytest.raises(InvalidInputError):
         triangulate(domain)
+
+
+def test_the_domain_is_validated_and_repaired_first():
+    # (1, 0) lies inside the segment (0,0)-(2,0): validation splits it there, so the mesh has 4 subsegments.
+    domain = Domain(points=[(0, 0), (2, 0), (2, 2), (1, 0)], segments=[(0, 1), (1, 2), (2, 0)])
+    mesh = triangulate(domain)
+    assert len(mesh.input_segments) == 4
+    assert len(mesh.stats["repairs"]) == 1
+    assert sorted(map(tuple, mesh.segments.tolist())) == [(0, 2), (0, 3), (1, 2), (1, 3)]
+    # An open chain encloses nothing.
+    with pytest.raises(InvalidInputError):
+        triangulate(Domain(points=[(0, 0), (2, 0), (2, 2)], segments=[(0, 1), (1, 2)]))

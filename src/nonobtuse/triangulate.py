@@ -16,7 +16,7 @@ def triangulate(domain: Domain) -> Mesh:
     Output: a :class:`Mesh` whose points are the validated domain's points in order, triangles (m, 3)
     counter-clockwise covering the domain minus holes, segments every constrained edge bordering the domain,
     ``regions`` the region attribute per triangle (0 where no seed reached), ``input_points`` /
-    ``input_segments`` the validated domain.
+    ``input_segments`` the validated domain, ``stats["repairs"]`` what validation changed.
     Raises :class:`InvalidInputError` for a domain that cannot be triangulated (it says what and where).
     Cost: O(n log n) expected for n points.
     """
@@ -29,5 +29,5 @@ def triangulate(domain: Domain) -> Mesh:
         input_points=valid.points.copy(),
         input_segments=valid.segments.copy(),
         regions=out["triangle_region"],
-        stats={"source": valid.source},
+        stats={"source": valid.source, "repairs": list(valid.repairs)},
     )
