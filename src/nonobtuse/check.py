@@ -8,7 +8,7 @@ every angle exactly (CGAL exact predicates on the coordinates as stored); degree
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -82,7 +82,6 @@ class CheckReport:
     points: int
     triangles: int
     source: str = "<memory>"
-    extra: dict[str, Any] = field(default_factory=dict)
 
     @property
     def ok(self) -> bool:
@@ -103,7 +102,6 @@ class CheckReport:
             "largest_obtuse_degrees": worst.degrees if worst else None,
             "offenders": [o.to_dict() for o in self.offenders],
             "not_locally_delaunay": [list(e) for e in self.not_locally_delaunay],
-            **self.extra,
         }
 
     def summary(self) -> str:
