@@ -32,6 +32,18 @@ def test_check_exit_codes(tmp_path, capsys):
     assert "invalid input" in capsys.readouterr().err
 
 
+def test_open_boundary_needs_the_convex_hull_option(capsys):
+    # box.poly (bundled with the io tests): only one side of its outer square [0,3]^2 is a segment, so its
+    # boundary is open: invalid as given, a valid domain once closed by the convex hull. Then each outer side
+    # can only face a corner of the hole [1,2]^2, e.g. (0,0)-(3,0) seen from (1,1): (-1,-1).(2,-1) = -1 < 0,
+    # obtuse; from (2,1): (-2,-1).(1,-1) = -1: obtuse too. So the check finds violations.
+    box = str(Path(__file__).parent / "data" / "box.poly")
+    assert main(["check", box]) == EXIT_INVALID
+    assert "convex_hull" in capsys.readouterr().err
+    assert main(["check", "--convex-hull", box]) == EXIT_VIOLATIONS
+    assert "NOT OK: 4 obtuse" in capsys.readouterr().out
+
+
 def test_check_json_and_plot(tmp_path, capsys):
     domain = str(cgshop_file(tmp_path, "obtuse", [(0, 0), (4, 0), (2, 1)]))
     assert main(["check", "--json", domain, "--plot", str(tmp_path / "obtuse.png")]) == EXIT_VIOLATIONS
