@@ -20,7 +20,7 @@ import numpy as np
 import scipy.sparse
 
 from nonobtuse import _core
-from nonobtuse.check import KINDS, core_mesh_arguments
+from nonobtuse.check import core_mesh_arguments
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh import Mesh
 
@@ -33,7 +33,7 @@ class ControlVolumes:
     areas:        (n,) float64 > 0 for every vertex of a triangle: the Voronoi control volume of each vertex
                   clipped to the domain (see :func:`voronoi_areas`); sums to the domain area.
     edges:        (E, 2) int64, a < b, sorted.
-    kind:         (E,) int8 index into ``KINDS`` (boundary, interface, interior).
+    kind:         (E,) int8 index into ``nonobtuse.check.KINDS`` (boundary, interface, interior).
     coefficients: (E,) float64 T_e (float evaluation).
     signs:        (E,) int8 exact sign of T_e: -1, 0, +1.
     """
@@ -135,7 +135,7 @@ def control_volumes(mesh: Mesh, conductivity: Conductivity = None) -> ControlVol
     k = triangle_conductivity(mesh, conductivity)
     c = _core.coupling_signs(*core_mesh_arguments(mesh), k)
     cot, _, _ = _corner_terms(mesh)
-    # The corner opposite edge e on each side: triangles' corner index of the apex.
+    # Add each side's k_t cot(apex) / 2; `corner` is the apex's position (0, 1, 2) in its triangle.
     coefficients = np.zeros(len(c["edges"]))
     for side in (0, 1):
         has = np.flatnonzero(c["triangle"][:, side] >= 0)
@@ -152,4 +152,4 @@ def control_volumes(mesh: Mesh, conductivity: Conductivity = None) -> ControlVol
                           coefficients=coefficients, signs=c["sign"])
 
 
-__all__ = ["ControlVolumes", "KINDS", "control_volumes", "triangle_conductivity", "voronoi_areas"]
+__all__ = ["ControlVolumes", "control_volumes", "triangle_conductivity", "voronoi_areas"]
