@@ -2,9 +2,15 @@
 
 from __future__ import annotations
 
+from nonobtuse.check import CheckReport, check
+from nonobtuse.control_volumes import ControlVolumes, control_volumes
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InternalError, InvalidInputError, NonobtuseError
 from nonobtuse.mesh import Mesh
+from nonobtuse.triangulate import triangulate
 
-__all__ = ["Domain", "InternalError", "InvalidInputError", "Mesh", "NonobtuseError"]
+__all__ = [
+    "CheckReport", "ControlVolumes", "Domain", "InternalError", "InvalidInputError", "Mesh", "NonobtuseError",
+    "check", "control_volumes", "triangulate",
+]
 __version__ = "0.1.0"
