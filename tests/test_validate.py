@@ -190,3 +190,24 @@ def test_random_non_crossing_segments_pass_and_an_added_crossing_is_named(star, 
         validate_domain(crossing, require_closed=False)
     assert f"segment {s} (" in str(err.value) and f"segment {len(segments)} (" in str(err.value)
     assert "cross away from their endpoints" in str(err.value)
+
+
+@settings(derandomize=True, deadline=None, max_examples=40)
+@given(stars(), st.data())
+def test_points_placed_on_segments_split_them_into_chains(star, data):
+    points, segments = star
+    # Put points at c + (k/8)(e - c), 0 < k < 8, on some spokes: exact (dyadic), strictly inside, distinct.
+    added = []
+    for s in data.draw(st.lists(st.integers(0, len(segments) - 1), max_size=4, unique=True)):
+        c, e = np.array(points[segments[s][0]]), np.array(points[segments[s][1]])
+        for k in data.draw(st.lists(st.integers(1, 7), min_size=1, max_size=3, unique=True)):
+            added.append(list(c + (k / 8) * (e - c)))
+    d = validate_domain(Domain(points + added, segments), require_closed=False)
+    # Each added point splits one spoke once: one more segment per point, and each joins two subsegments.
+    assert len(d.segments) == len(segments) + len(added)
+    degree = np.bincount(d.segments.ravel(), minlength=len(points) + len(added))
+    assert all(degree[len(points) :] == 2)
+    assert (len(d.repairs) > 0) == (len(added) > 0)
+    # The result is a valid graph with nothing left to split.
+    again = validate_domain(d, split_points_on_segments=False, require_closed=False)
+    assert again.repairs == d.repairs and np.array_equal(again.segments, d.segments)
