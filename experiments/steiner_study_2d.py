@@ -11,9 +11,9 @@ Scaling: Steiner points and time of each method on a generated star-shaped polyg
     python -m experiments.steiner_study_2d --quick      # < 2 min on 2 cores
     python -m experiments.steiner_study_2d              # every instance, n up to 1e6
 
-Writes OUT/steiner_study_2d[_quick].{csv,png} and OUT/steiner_scaling[_quick].{csv,png},
-OUT/steiner_scaling_exponents[_quick].csv. CGAL's make_conforming_Gabriel_2 is not a column: the 2D module
-does not expose it.
+Writes OUT/steiner_study_2d[_quick].{csv,png}, OUT/steiner_study_2d_summary[_quick].csv,
+OUT/steiner_scaling[_quick].{csv,png} and OUT/steiner_scaling_exponents[_quick].csv.
+CGAL's make_conforming_Gabriel_2 is not a column: the 2D module does not expose it.
 
 Caveat on Triangle: -D splits every encroached subsegment, interfaces included, while ``nonobtuse.refine``
 refines boundary edges only, so on inputs with interior constraints Triangle does more work than ours.
@@ -59,6 +59,8 @@ CORPUS_COLUMNS = (["corpus", "instance", "n_points", "n_segments", "convex_hull"
                   + [_col(m) for m in METHODS] + ["cgshop_best_known"]
                   + [f"{_col(m)}_status" for m in METHODS] + [f"{_col(m)}_seconds" for m in METHODS]
                   + ["error"])
+SUMMARY_COLUMNS = ["method", "inputs", "steiner_total", "lower_bound_total", "at_lower_bound",
+                   "below_lower_bound"]
 SCALING_COLUMNS = ["generator", "n", "method", "steiner_points", "status", "seconds", "lower_bound", "error"]
 EXPONENT_COLUMNS = ["method", "steiner_exponent", "time_exponent", "sizes_fitted"]
 
@@ -240,6 +242,20 @@ def scaling_rows(records: list[dict]) -> list[dict]:
     return sorted(rows, key=lambda r: (r["method"], r["n"]))
 
 
+def summary(rows: list[dict]) -> list[dict]:
+    """Per method, over the inputs with a lower bound where the method converged: their number, Steiner total,
+    lower-bound total, inputs at the bound, inputs below it (a bound violation: a bug to report)."""
+    out = []
+    for method in METHODS:
+        col = _col(method)
+        ok = [r for r in rows if r.get("lower_bound") is not None and r.get(f"{col}_status") == "converged"]
+        out.append({"method": method, "inputs": len(ok), "steiner_total": sum(r[col] for r in ok),
+                    "lower_bound_total": sum(r["lower_bound"] for r in ok),
+                    "at_lower_bound": sum(r[col] == r["lower_bound"] for r in ok),
+                    "below_lower_bound": sum(r[col] < r["lower_bound"] for r in ok)})
+    return out
+
+
 def fit_exponent(xs: list[float], ys: list[float]) -> float:
     """Slope of the least-squares line through (log x, log y); NaN with fewer than 2 positive points."""
     pts = [(math.log(x), math.log(y)) for x, y in zip(xs, ys) if x > 0 and y > 0]
@@ -334,6 +350,12 @@ def main(argv: list[str] | None = None) -> int:
     stem = output_stem("steiner_study_2d", args.quick)
     write_csv(out / f"{stem}.csv", rows, CORPUS_COLUMNS)
     plot_corpus(rows, out / f"{stem}.png")
+    totals = summary(rows)
+    write_csv(out / f"{output_stem('steiner_study_2d_summary', args.quick)}.csv", totals, SUMMARY_COLUMNS)
+    for t in totals:
+        print(f"{t['method']:>12}: {t['steiner_total']} Steiner points on {t['inputs']} inputs (lower bound "
+              f"{t['lower_bound_total']}); at the bound on {t['at_lower_bound']}, below it on "
+              f"{t['below_lower_bound']}")
 
     records = sweep_from_args(args, run_scaling_case, scaling_cases(args.quick, args.seed, args.sizes),
                               "steiner_scaling", time_limit=limit)
