@@ -34,7 +34,7 @@ FAN_KS_FULL = list(range(3, 13))
 FAN_KS_QUICK = [3, 6, 12]
 BUDGET_SECONDS = {"quick": 3.0, "full": 60.0}  # refine_gabriel time_limit; the case process is killed later
 COLUMNS = ["family", "k", "theta", "split", "status", "steiner_points", "smallest_subsegment", "seconds",
-           "time_limit", "diagnosis"]
+           "time_limit", "smallest_input_angle", "diagnosis"]
 FRONTIER_COLUMNS = ["family", "k", "split", "converges_from_theta", "not_converged", "thetas"]
 CONVERGED = "converged"
 
@@ -59,7 +59,8 @@ def make_cases(quick: bool, budget: float, thetas: list[float] | None = None,
 
 
 def run_case(case: dict) -> dict:
-    """Repair one family member; the refinement's own status and statistics (JSON-serializable)."""
+    """Repair one family member: the refinement's status and statistics, the wall time of the call, and the
+    diagnosis in one line (with the smallest input angle the refinement measured, to check the family)."""
     from nonobtuse.mesh3d import refine_gabriel
 
     plc = make_plc(case["family"], case["theta"], case["k"])
@@ -67,10 +68,28 @@ def run_case(case: dict) -> dict:
     result = refine_gabriel(plc, split=case["split"], time_limit=case["time_limit"])
     seconds = time.perf_counter() - start
     stats = result.stats
+    smallest_angle, diagnosis = summarize_diagnosis(stats.get("diagnosis"))
     return {"status": str(result.status), "steiner_points": int(stats["steiner_points"]),
-            "smallest_subsegment": float(stats["smallest_subsegment"]),
-            "seconds": float(stats.get("seconds", seconds)),
-            "diagnosis": str(stats.get("diagnosis", ""))[:300]}
+            "smallest_subsegment": float(stats["smallest_subsegment"]), "seconds": round(seconds, 4),
+            "smallest_input_angle": smallest_angle, "diagnosis": diagnosis}
+
+
+def summarize_diagnosis(diagnosis) -> tuple[float | None, str]:
+    """(smallest input angle in degrees or None, one line): stop reason, smallest angle, busiest vertex.
+
+    ``diagnosis`` is refine_gabriel's dict (smallest_angles: [{kind, degrees, ...}], steiner_per_vertex:
+    [{where, count}], stop_reason); anything else is kept as text."""
+    if not isinstance(diagnosis, dict):
+        return None, str(diagnosis or "")[:200]
+    angles = diagnosis.get("smallest_angles") or []
+    smallest = min(angles, key=lambda a: a["degrees"], default=None)
+    busiest = max(diagnosis.get("steiner_per_vertex") or [], key=lambda v: v["count"], default=None)
+    parts = [str(diagnosis.get("stop_reason") or "")]
+    if smallest:
+        parts.append(f"smallest input angle {smallest['degrees']:.4g} deg ({smallest['kind']})")
+    if busiest:
+        parts.append(f"{busiest['count']} Steiner points near vertex {busiest['where']}")
+    return (float(smallest["degrees"]) if smallest else None), "; ".join(p for p in parts if p)
 
 
 def rows_from_records(records: list[dict]) -> list[dict]:
