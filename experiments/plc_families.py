@@ -8,9 +8,14 @@ the edges where facets meet at a non-flat angle, the free edges of internal face
     wedge(theta)        a prism over a circular sector: two facets meet at dihedral theta along the apex
                         edge; the sector's arc is split into pieces of at most 30 degrees, so the other
                         dihedrals are >= 75 degrees (90 at the caps). theta in (0, 180).
+    wedge_asym(theta)   a prism over the triangle (0, 0), (1, 0), 2 (cos theta, sin theta): the two facets at
+                        dihedral theta have widths 1 and 2, so for theta < 60 the narrow facet's far vertices
+                        lie inside the diametral spheres of the wide facet's subfacets (the symmetric wedge
+                        has none: it is Gabriel as it stands). The dihedral at the third edge,
+                        asin(sin theta / sqrt(5 - 4 cos theta)), is smaller than theta. theta in (0, 180).
     spike(theta, k)     a cone of apex half-angle theta (unit generators) over a regular k-gon base;
-                        the smallest angle is the apex angle of a side triangle, 2 asin(sin theta sin(pi/k)).
-                        theta in (0, 90).
+                        the smallest angle is min(2 asin(sin theta sin(pi/k)) (apex angle of a side
+                        triangle), 90 - theta (a generator against the base)). theta in (0, 90).
     segment_facet(theta) a dangling segment standing on the bottom facet of a box at angle theta to it.
                         theta in (0, 90].
     segments(theta)     two dangling segments meeting at angle theta inside a box. theta in (0, 180].
@@ -134,6 +139,14 @@ def wedge(theta: float, k: int = 0) -> PLC:
     return b.plc(f"wedge(theta={theta:g})")
 
 
+def wedge_asym(theta: float, k: int = 0) -> PLC:
+    """Prism (height 1) over the triangle (0, 0), (1, 0), 2 (cos theta, sin theta)."""
+    t = math.radians(theta)
+    b = _Builder()
+    _prism(b, [(0.0, 0.0), (1.0, 0.0), (2 * math.cos(t), 2 * math.sin(t))], 0.0, 1.0)
+    return b.plc(f"wedge_asym(theta={theta:g})")
+
+
 def spike(theta: float, k: int = 10) -> PLC:
     """Cone with unit generators at half-angle theta from the axis over a regular k-gon (apex on +z)."""
     t = math.radians(theta)
@@ -236,6 +249,7 @@ def fan(theta: float, k: int = 3) -> PLC:
 
 FAMILIES: dict[str, Family] = {
     "wedge": Family("wedge", wedge, 180.0, True, False),
+    "wedge_asym": Family("wedge_asym", wedge_asym, 180.0, True, False),
     "spike": Family("spike", spike, 90.0, True, True, default_k=10),
     "segment_facet": Family("segment_facet", segment_facet, 90.0, False, False),
     "segments": Family("segments", segments, 180.0, False, False),

@@ -35,7 +35,8 @@ FAN_KS_QUICK = [3, 6, 12]
 BUDGET_SECONDS = {"quick": 3.0, "full": 60.0}  # refine_gabriel time_limit; the case process is killed later
 COLUMNS = ["family", "k", "theta", "split", "status", "steiner_points", "smallest_subsegment", "seconds",
            "time_limit", "smallest_input_angle", "diagnosis"]
-FRONTIER_COLUMNS = ["family", "k", "split", "converges_from_theta", "not_converged", "thetas"]
+FRONTIER_COLUMNS = ["family", "k", "split", "converges_from_theta", "not_converged", "thetas",
+                    "not_converged_thetas"]
 CONVERGED = "converged"
 
 
@@ -108,7 +109,7 @@ def rows_from_records(records: list[dict]) -> list[dict]:
 
 def frontier(rows: list[dict]) -> list[dict]:
     """Per (family, k, split): the smallest theta such that this and every larger theta converged
-    (empty when the largest did not), and the number of non-converged thetas."""
+    (None when the largest did not), and the thetas that did not converge."""
     groups: dict[tuple, list[dict]] = {}
     for row in rows:
         groups.setdefault((row["family"], row["k"], row["split"]), []).append(row)
@@ -120,8 +121,10 @@ def frontier(rows: list[dict]) -> list[dict]:
             if row["status"] != CONVERGED:
                 break
             bound = row["theta"]
+        failed = [r["theta"] for r in group if r["status"] != CONVERGED]
         out.append({"family": family, "k": k, "split": split, "converges_from_theta": bound,
-                    "not_converged": sum(r["status"] != CONVERGED for r in group), "thetas": len(group)})
+                    "not_converged": len(failed), "thetas": len(group),
+                    "not_converged_thetas": ";".join(f"{t:g}" for t in failed)})
     return out
 
 

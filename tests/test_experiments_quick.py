@@ -47,7 +47,8 @@ def dangling(plc) -> list[tuple[int, int]]:
 
 
 CASES = [(f, theta, k) for f, theta, k in
-         [("wedge", 1.0, None), ("wedge", 45.0, None), ("wedge", 120.0, None), ("spike", 1.0, 10),
+         [("wedge", 1.0, None), ("wedge", 45.0, None), ("wedge", 120.0, None), ("wedge_asym", 3.0, None),
+          ("wedge_asym", 100.0, None), ("spike", 1.0, 10),
           ("spike", 60.0, 3), ("segment_facet", 2.5, None), ("segment_facet", 90.0, None),
           ("segments", 1.0, None), ("segments", 120.0, None), ("fan", 30.0, 12), ("fan", 1.0, 3),
           ("fan", 120.0, 3)]]
@@ -68,7 +69,8 @@ def test_family_is_closed_planar_and_has_its_angle(family, theta, k):
     assert min(edge_use.values()) >= 2  # no facet has a free edge: internal facets end on other facets
     assert len({frozenset(s) for s in plc.segments}) == len(plc.segments)
     assert np.all(plc.segments[:, 0] != plc.segments[:, 1])
-    if family == "wedge":  # facets 2 and 2 + n - 1 are the sides at the apex edge; interior = 180 - normals'
+    if family in ("wedge", "wedge_asym"):
+        # facets 2 and 2 + n - 1 are the sides at the apex edge; the interior angle is 180 - the normals' angle
         n_sides = int(plc.facet_ids.max()) - 1
         assert 180 - angle_deg(facet_normal(plc, 2), facet_normal(plc, 1 + n_sides)) == pytest.approx(theta)
     elif family == "spike":  # point k is the apex, on +z; generators at theta from the axis
