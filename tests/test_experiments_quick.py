@@ -70,7 +70,7 @@ def test_family_is_closed_planar_and_has_its_angle(family, theta, k):
     assert len({frozenset(s) for s in plc.segments}) == len(plc.segments)
     assert np.all(plc.segments[:, 0] != plc.segments[:, 1])
     if family in ("wedge", "wedge_asym"):
-        # facets 2 and 2 + n - 1 are the sides at the apex edge; the interior angle is 180 - the normals' angle
+        # facets 2 and 2 + n - 1 are the sides at the apex edge; interior angle = 180 - the normals' angle
         n_sides = int(plc.facet_ids.max()) - 1
         assert 180 - angle_deg(facet_normal(plc, 2), facet_normal(plc, 1 + n_sides)) == pytest.approx(theta)
     elif family == "spike":  # point k is the apex, on +z; generators at theta from the axis
