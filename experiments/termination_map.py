@@ -41,14 +41,14 @@ CONVERGED = "converged"
 
 
 def make_cases(quick: bool, budget: float, thetas: list[float] | None = None,
-               families: list[str] | None = None) -> list[dict]:
+               families: list[str] | None = None, fan_ks: list[int] | None = None) -> list[dict]:
     """Every (family, k, theta, split) the families accept, with the refinement time budget (seconds)."""
     thetas = thetas or (QUICK_THETAS if quick else FULL_THETAS)
     cases = []
     for name in families or list(FAMILIES):
         fam = FAMILIES[name]
         if name == "fan":
-            ks: list[int | None] = FAN_KS_QUICK if quick else FAN_KS_FULL
+            ks: list[int | None] = fan_ks or (FAN_KS_QUICK if quick else FAN_KS_FULL)
         else:
             ks = [fam.default_k if fam.uses_k else None]
         for k in ks:
@@ -187,11 +187,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--thetas", type=lambda s: [float(t) for t in s.split(",")],
                         help="comma-separated angles in degrees instead of the default grid")
     parser.add_argument("--families", type=lambda s: s.split(","), help=f"subset of {','.join(FAMILIES)}")
+    parser.add_argument("--ks", type=lambda s: [int(k) for k in s.split(",")],
+                        help="comma-separated fan sizes k instead of the default")
     parser.add_argument("--budget", type=float, help="refine_gabriel time_limit per case, seconds "
                         f"(default {BUDGET_SECONDS['quick']} with --quick, else {BUDGET_SECONDS['full']})")
     args = parser.parse_args(argv)
     budget = args.budget or BUDGET_SECONDS["quick" if args.quick else "full"]
-    cases = make_cases(args.quick, budget, args.thetas, args.families)
+    cases = make_cases(args.quick, budget, args.thetas, args.families, args.ks)
     records = sweep_from_args(args, run_case, cases, "termination_map", time_limit=3 * budget + 30)
     rows = rows_from_records(records)
     stem = output_stem("termination_map", args.quick)
