@@ -109,6 +109,7 @@ std::vector<InputAngle> smallest_input_angles(const PlcState& s) {
   keep_smallest(out, segment_segment(s, at));
   keep_smallest(out, segment_facet(s, at));
   keep_smallest(out, dihedral(s));
+  std::stable_sort(out.begin(), out.end(), [](const auto& x, const auto& y) { return x.degrees < y.degrees; });
   return out;
 }
 

@@ -87,6 +87,7 @@ struct Restricted {
   std::vector<Tetrahedron> tets;
   std::vector<Triangle> boundary_faces;
   std::vector<int> face_markers;
+  std::vector<int> face_facets;  // index into PlcState::facets of each boundary face
   std::vector<double> tet_regions;
 };
 Restricted restrict_delaunay(const PlcState& s, const PLC3& plc);

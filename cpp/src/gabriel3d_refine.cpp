@@ -26,6 +26,10 @@ class Refiner {
 
   // Runs to convergence of the subfacets and subsegments, or to a stop.
   std::optional<Stop> run();
+  // Splits the encroached faces and subsegments of the restricted Delaunay mesh (which can differ from the
+  // subfacets where points are cospherical). Sets *progress when a point was inserted.
+  std::optional<Stop> repair(const Restricted& mesh, const std::vector<Key>& segments, const GabrielReport& report,
+                             bool* progress);
   double seconds() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }
@@ -40,7 +44,8 @@ class Refiner {
   }
   // Splits `sub` if it still exists and (unless `always`) is still encroached by a vertex.
   std::optional<Stop> split(const Key& sub, bool always, bool* inserted);
-  std::optional<Stop> split_subfacet(const SubfacetRef& f, bool* inserted, bool* split_segment);
+  // Splits subfacet f (a face of facet f.facet's triangulation, or only a triangle on it when !require_face).
+  std::optional<Stop> split_subfacet(const SubfacetRef& f, bool require_face, bool* inserted, bool* split_segment);
   std::optional<Stop> too_short(const P3& p, const P3& q) const;
   std::optional<Stop> too_close(const P3& p) const;
   void inserted(int m);
@@ -162,11 +167,13 @@ std::optional<Key> first_crossed_subsegment(const Facet& facet, const Q2& g, con
 }
 
 // Splits subfacet f at its circumcenter, or splits the subsegments that point encroaches or lies beyond.
-std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool* inserted_point, bool* split_segment) {
+std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_face, bool* inserted_point,
+                                            bool* split_segment) {
   Facet& facet = *s_.facets[r.facet];
   FacetCDT::Face_handle fh;
   auto va = facet.vertex.at(r.a), vb = facet.vertex.at(r.b), vc = facet.vertex.at(r.c);
-  if (!facet.cdt.is_face(va, vb, vc, fh) || !encroached(r.a, r.b, r.c)) return std::nullopt;
+  if ((!facet.cdt.is_face(va, vb, vc, fh) && require_face) || !encroached(r.a, r.b, r.c)) return std::nullopt;
+  if (!require_face) fh = va->face();
   const P3 center = CGAL::circumcenter(s_.points[r.a], s_.points[r.b], s_.points[r.c]);
   // A circumcenter that encroaches a subsegment of this facet is not inserted: the subsegments are split instead.
   std::vector<Key> hit;
@@ -224,12 +231,25 @@ std::optional<Stop> Refiner::run() {
     if (subfacets.empty()) return std::nullopt;
     for (const auto& r : subfacets) {
       bool split_segment = false;
-      if (auto stop = split_subfacet(r, &progress, &split_segment)) return stop;
+      if (auto stop = split_subfacet(r, true, &progress, &split_segment)) return stop;
       if (split_segment) break;
     }
     if (!progress)  // every encroached subfacet's circumcenter was refused: the same state would repeat forever
       return Stop{Refine3Status::Stalled, "encroached subfacets remain whose circumcenters cannot be inserted"};
   }
+}
+
+std::optional<Stop> Refiner::repair(const Restricted& mesh, const std::vector<Key>& segments,
+                                    const GabrielReport& report, bool* progress) {
+  for (const auto& e : report.segments)
+    if (auto stop = split(segments[e.index], false, progress)) return stop;
+  for (const auto& e : report.faces) {
+    auto [a, b, c] = mesh.boundary_faces[e.index];
+    bool split_segment = false;
+    if (auto stop = split_subfacet({mesh.face_facets[e.index], a, b, c}, false, progress, &split_segment))
+      return stop;
+  }
+  return std::nullopt;
 }
 
 double smallest_subsegment(const PlcState& s) {
@@ -260,31 +280,46 @@ Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options) {
   Refine3Result out;
   out.diagnosis.smallest_angles = smallest_input_angles(s);
   Refiner refiner(s, options);
-  std::optional<Stop> stop = refiner.run();
-  Restricted mesh = restrict_delaunay(s, plc);
-  out.points.reserve(s.points.size());
-  for (const auto& p : s.points) out.points.push_back(from_cgal(p));
+  // Refine the subfacets, restrict the Delaunay tetrahedralization, check it exactly; where its boundary faces
+  // differ from the subfacets (cospherical points) and are encroached, split those too and start over.
+  std::optional<Stop> stop;
+  Restricted mesh;
+  std::vector<Key> segments;
+  bool clean = false;
+  for (;;) {
+    stop = refiner.run();
+    mesh = restrict_delaunay(s, plc);
+    out.points.clear();
+    for (const auto& p : s.points) out.points.push_back(from_cgal(p));
+    segments.clear();
+    out.segments.clear();
+    for (const auto& [sub, parent] : s.subsegments) {
+      segments.push_back(sub);
+      out.segments.push_back({sub.first, sub.second});
+    }
+    out.certificate = check_gabriel(out.points, mesh.boundary_faces, out.segments);
+    clean = out.certificate.faces.empty() && out.certificate.segments.empty();
+    if (stop || clean) break;
+    bool progress = false;
+    stop = refiner.repair(mesh, segments, out.certificate, &progress);
+    if (!stop && !progress)
+      stop = Stop{Refine3Status::Stalled, "encroached faces of the Delaunay mesh remain but none could be split"};
+    if (stop) break;
+  }
   out.tets = std::move(mesh.tets);
   out.boundary_faces = std::move(mesh.boundary_faces);
   out.face_markers = std::move(mesh.face_markers);
   out.tet_regions = std::move(mesh.tet_regions);
-  for (const auto& [sub, parent] : s.subsegments) out.segments.push_back({sub.first, sub.second});
-  out.certificate = check_gabriel(out.points, out.boundary_faces, out.segments);
-  bool clean = out.certificate.faces.empty() && out.certificate.segments.empty();
   out.steiner_on_segments = refiner.steiner_on_segments;
   out.steiner_on_facets = refiner.steiner_on_facets;
   out.smallest_subsegment = smallest_subsegment(s);
   count_steiner(s, out.diagnosis);
-  if (stop) {
+  if (clean) {
+    out.status = Refine3Status::Converged;
+    out.diagnosis.stop_reason = "every boundary face and subsegment has an empty diametral sphere";
+  } else {
     out.status = stop->status;
     out.diagnosis.stop_reason = stop->reason;
-  } else if (clean) {
-    out.status = Refine3Status::Converged;
-    out.diagnosis.stop_reason = "every subfacet and subsegment has an empty diametral sphere";
-  } else {
-    out.status = Refine3Status::Stalled;
-    out.diagnosis.stop_reason =
-        "the refined subfacets are Gabriel but the Delaunay faces covering the facets are not (degenerate input?)";
   }
   out.seconds = refiner.seconds();
   return out;

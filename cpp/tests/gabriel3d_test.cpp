@@ -122,6 +122,8 @@ TEST(Gabriel3DCheck, ThroughputOnSubdividedSphere) {
   EXPECT_TRUE(r.faces.empty());
 }
 
+double volume(const Refine3Result& r);
+
 PLC3 cube_plc() {
   PLC3 plc;
   plc.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
@@ -140,14 +142,7 @@ TEST(Gabriel3DRefine, CubeConvergesWithoutSteinerPoints) {
   EXPECT_EQ(r.points.size(), 8u);
   EXPECT_EQ(r.boundary_faces.size(), 12u);
   EXPECT_EQ(r.segments.size(), 12u);  // the cube's edges: the facets' boundary edges
-  double volume = 0;
-  for (auto [a, b, c, d] : r.tets) {
-    auto u = r.points[b], v = r.points[c], w = r.points[d], o = r.points[a];
-    double ux = u.x - o.x, uy = u.y - o.y, uz = u.z - o.z, vx = v.x - o.x, vy = v.y - o.y, vz = v.z - o.z;
-    double wx = w.x - o.x, wy = w.y - o.y, wz = w.z - o.z;
-    volume += (ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx)) / 6.0;
-  }
-  EXPECT_NEAR(volume, 1.0, 1e-12);  // positively oriented tets filling the unit cube
+  EXPECT_NEAR(volume(r), 1.0, 1e-12);  // positively oriented tets filling the unit cube
 }
 
 // A flat tetrahedron: the apex 0.1 above the center of an equilateral base with circumradius 1 encroaches the
@@ -160,12 +155,37 @@ PLC3 flat_tetrahedron_plc() {
   return plc;
 }
 
-TEST(Gabriel3DRefine, FlatTetrahedronNeedsSteinerPointsAndConverges) {
-  auto r = refine_gabriel(flat_tetrahedron_plc(), {});
+double volume(const Refine3Result& r) {
+  double sum = 0;
+  for (auto [a, b, c, d] : r.tets) {
+    auto u = r.points[b], v = r.points[c], w = r.points[d], o = r.points[a];
+    double ux = u.x - o.x, uy = u.y - o.y, uz = u.z - o.z, vx = v.x - o.x, vy = v.y - o.y, vz = v.z - o.z;
+    double wx = w.x - o.x, wy = w.y - o.y, wz = w.z - o.z;
+    sum += (ux * (vy * wz - vz * wy) - uy * (vx * wz - vz * wx) + uz * (vx * wy - vy * wx)) / 6.0;
+  }
+  return sum;
+}
+
+TEST(Gabriel3DRefine, ObtusePrismConvergesWithTwoSteinerPoints) {
+  // Right prism of height 1 over the triangle (0,0), (2,0), (1, tan 30deg) (angles 30, 30, 120 degrees). The side
+  // rectangle opposite the 120-degree corner has its triangles' spheres centered at its center (1, 0, 0.5) with
+  // radius sqrt(4 + 1)/2 = 1.118; the obtuse corners (1, 0.577, 0 or 1) are at sqrt(0.333 + 0.25) = 0.764: inside.
+  // Splitting the two long edges at their midpoints (1, 0, 0) and (1, 0, 1) cuts the rectangle into two 1 x 1
+  // squares (spheres of radius 0.707 around (0.5 or 1.5, 0, 0.5); the obtuse corners are at distance
+  // sqrt(0.25 + 0.333 + 0.25) = 0.913: outside), and the new edge halves of length 1 have spheres of radius 0.5
+  // that hold no vertex. Everything else is Gabriel from the start.
+  PLC3 plc;
+  const double h = std::tan(30.0 * 3.14159265358979323846 / 180.0);
+  plc.points = {{0, 0, 0}, {2, 0, 0}, {1, h, 0}, {0, 0, 1}, {2, 0, 1}, {1, h, 1}};
+  plc.triangles = {{0, 2, 1}, {3, 4, 5}, {0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {2, 0, 3}, {2, 3, 5}};
+  plc.facet_ids = {0, 1, 2, 2, 3, 3, 4, 4};
+  auto r = refine_gabriel(plc, {});
   EXPECT_EQ(r.status, Refine3Status::Converged) << r.diagnosis.stop_reason;
-  EXPECT_GT(r.steiner_on_segments + r.steiner_on_facets, 0);
+  EXPECT_EQ(r.steiner_on_segments, 2);
+  EXPECT_EQ(r.steiner_on_facets, 0);
   EXPECT_TRUE(r.certificate.faces.empty());
   EXPECT_TRUE(r.certificate.segments.empty());
+  EXPECT_NEAR(volume(r), h, 1e-12);  // base area 2 * h / 2, height 1
 }
 
 TEST(Gabriel3DRefine, ShellSplitsAtPowerOfTwoFromInputVertex) {
