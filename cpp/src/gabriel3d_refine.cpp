@@ -1,5 +1,7 @@
 // Ruppert-like Gabriel refinement of a PLC: subsegments first, then subfacets, until every diametral sphere is empty.
+#include <algorithm>
 #include <chrono>
+#include <tuple>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -16,8 +18,17 @@ struct Stop {
 };
 
 struct SubfacetRef {
-  int facet, a, b, c;
+  int facet, a, b, c;  // a < b < c (canonical) so that the rounded circumcenter does not depend on the order
+  bool operator<(const SubfacetRef& o) const {
+    return std::tie(facet, a, b, c) < std::tie(o.facet, o.a, o.b, o.c);
+  }
 };
+
+SubfacetRef canonical(SubfacetRef r) {
+  int v[3] = {r.a, r.b, r.c};
+  std::sort(v, v + 3);
+  return {r.facet, v[0], v[1], v[2]};
+}
 
 class Refiner {
  public:
@@ -80,9 +91,11 @@ std::vector<SubfacetRef> Refiner::encroached_subfacets() const {
       if (!fh->info().in_domain) continue;
       int a = fh->vertex(0)->info(), b = fh->vertex(1)->info(), c = fh->vertex(2)->info();
       if (CGAL::collinear(s_.points[a], s_.points[b], s_.points[c])) continue;  // rounding; left to the final check
-      if (encroached(a, b, c)) out.push_back({static_cast<int>(f), a, b, c});
+      if (encroached(a, b, c)) out.push_back(canonical({static_cast<int>(f), a, b, c}));
     }
   }
+  // The face order of a triangulation depends on where the walks of point location went (randomized): sort.
+  std::sort(out.begin(), out.end());
   return out;
 }
 
@@ -161,7 +174,8 @@ std::optional<Key> first_crossed_subsegment(const Facet& facet, const Q2& g, con
     auto x = CGAL::intersection(walk, sub);
     const Q2* p = boost::get<Q2>(&*x);
     EK::FT d2 = p ? CGAL::squared_distance(g, *p) : EK::FT(0);
-    if (!best_d2 || d2 < *best_d2) best_d2 = d2, best = key(u->info(), w->info());
+    Key k = key(u->info(), w->info());
+    if (!best_d2 || d2 < *best_d2 || (d2 == *best_d2 && k < *best)) best_d2 = d2, best = k;
   }
   return best;
 }
@@ -196,6 +210,7 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
     if (auto sub = first_crossed_subsegment(facet, g, q)) hit.push_back(*sub);
   }
   if (!hit.empty()) {
+    std::sort(hit.begin(), hit.end());
     *split_segment = true;
     for (const Key& sub : hit)
       if (auto stop = split(sub, true, inserted_point)) return stop;
@@ -246,7 +261,7 @@ std::optional<Stop> Refiner::repair(const Restricted& mesh, const std::vector<Ke
   for (const auto& e : report.faces) {
     auto [a, b, c] = mesh.boundary_faces[e.index];
     bool split_segment = false;
-    if (auto stop = split_subfacet({mesh.face_facets[e.index], a, b, c}, false, progress, &split_segment))
+    if (auto stop = split_subfacet(canonical({mesh.face_facets[e.index], a, b, c}), false, progress, &split_segment))
       return stop;
   }
   return std::nullopt;

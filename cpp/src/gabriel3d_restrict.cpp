@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <numeric>
 
 #include "gabriel3d_plc.h"
 
@@ -75,6 +76,27 @@ int flat_on_facet(const PlcState& s, const FacetCover& cover, DT3::Cell_handle c
     return f;
   }
   return -1;
+}
+
+// Sorts tets and boundary faces by their corners: the cell order of a Delaunay tetrahedralization depends on the
+// (randomized) insertion order, and the output and the repair order must not.
+void canonical_order(Restricted& out) {
+  std::vector<std::size_t> t(out.tets.size()), f(out.boundary_faces.size());
+  std::iota(t.begin(), t.end(), 0);
+  std::iota(f.begin(), f.end(), 0);
+  std::sort(t.begin(), t.end(), [&](auto i, auto j) { return out.tets[i] < out.tets[j]; });
+  std::sort(f.begin(), f.end(), [&](auto i, auto j) { return out.boundary_faces[i] < out.boundary_faces[j]; });
+  Restricted sorted;
+  for (auto i : t) {
+    sorted.tets.push_back(out.tets[i]);
+    sorted.tet_regions.push_back(out.tet_regions[i]);
+  }
+  for (auto i : f) {
+    sorted.boundary_faces.push_back(out.boundary_faces[i]);
+    sorted.face_markers.push_back(out.face_markers[i]);
+    sorted.face_facets.push_back(out.face_facets[i]);
+  }
+  out = std::move(sorted);
 }
 
 }  // namespace
@@ -165,6 +187,7 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
       out.face_facets.push_back(f);
     }
   }
+  canonical_order(out);
   return out;
 }
 
