@@ -29,12 +29,22 @@ def plc_of(points, facets: list[list[list[int]]]) -> PLC:
 
 def cube() -> PLC:
     pts = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]]
-    return plc_of(pts, [quad(0, 3, 2, 1), quad(4, 5, 6, 7), quad(0, 1, 5, 4), quad(1, 2, 6, 5), quad(2, 3, 7, 6),
-                        quad(3, 0, 4, 7)])
+    return plc_of(
+        pts,
+        [
+            quad(0, 3, 2, 1),
+            quad(4, 5, 6, 7),
+            quad(0, 1, 5, 4),
+            quad(1, 2, 6, 5),
+            quad(2, 3, 7, 6),
+            quad(3, 0, 4, 7),
+        ],
+    )
 
 
 def wedge(theta: float) -> PLC:
-    """Two unit-square facets meeting at segment (0, 1) at dihedral angle theta (degrees), closed by three facets."""
+    """Two unit-square facets meeting at segment (0, 1) at dihedral angle theta (degrees), closed by three
+    facets."""
     h = np.tan(np.radians(theta))
     pts = [[0, 0, 0], [0, 1, 0], [1, 0, 0], [1, 1, 0], [1, 0, h], [1, 1, h]]
     return plc_of(pts, [quad(0, 1, 3, 2), quad(0, 4, 5, 1), [[0, 2, 4]], [[1, 5, 3]], quad(2, 3, 5, 4)])
@@ -66,18 +76,22 @@ def assert_result_consistent(res, plc: PLC) -> None:
     assert res.stats["encroached_segments"] == len(again.segments)
 
 
-# ---- check_gabriel ----------------------------------------------------------------------------------------------
+# ---- check_gabriel
+# ----------------------------------------------------------------------------------------------
+
 
 def test_check_flat_sliver_face_is_encroached():
     # Base: equilateral triangle with circumcenter (0,0,0), radius 1; apex 0.1 above: depth 1 - 0.1 = 0.9.
     s = np.sqrt(3) / 2
     pts = np.array([[1, 0, 0], [-0.5, s, 0], [-0.5, -s, 0], [0, 0, 0.1]])
-    mesh = TetMesh(points=pts, tets=np.zeros((0, 4), np.int64), boundary_faces=np.array([[0, 2, 1], [0, 1, 3]]),
-                   face_markers=np.zeros(2, np.int64))
+    mesh = TetMesh(
+        points=pts,
+        tets=np.zeros((0, 4), np.int64),
+        boundary_faces=np.array([[0, 2, 1], [0, 1, 3]]),
+        face_markers=np.zeros(2, np.int64),
+    )
     rep = check_gabriel(mesh)
-    # Face (0, 1, 3) is obtuse at the apex (angle ~ 2 atan(0.866 / 0.5)... > 90 deg), so vertex 2 (distance
-    # sqrt(3) from 0 and 1) is checked against a sphere centered off the face: it is not inside (worked out by the
-    # exact predicate; asserted only for face 0 here).
+    # Only face 0 is asserted: the apex lies on face (0, 1, 3) itself and cannot encroach it.
     assert 0 in rep.faces.tolist()
     i = rep.faces.tolist().index(0)
     assert rep.face_vertices[i] == 3
@@ -87,8 +101,13 @@ def test_check_flat_sliver_face_is_encroached():
 def test_check_right_angle_is_not_encroached():
     # (0, 1, 0) sees the segment (-1,0,0)-(1,0,0) at exactly 90 degrees (Thales): on the sphere, not inside.
     pts = np.array([[-1, 0, 0], [1, 0, 0], [0, 1, 0]], dtype=float)
-    mesh = TetMesh(points=pts, tets=np.zeros((0, 4), np.int64), boundary_faces=np.zeros((0, 3), np.int64),
-                   face_markers=np.zeros(0, np.int64), segments=np.array([[0, 1]]))
+    mesh = TetMesh(
+        points=pts,
+        tets=np.zeros((0, 4), np.int64),
+        boundary_faces=np.zeros((0, 3), np.int64),
+        face_markers=np.zeros(0, np.int64),
+        segments=np.array([[0, 1]]),
+    )
     assert check_gabriel(mesh).ok
     mesh.points = np.vstack([pts, [[0, 0.99, 0]]])
     rep = check_gabriel(mesh)
@@ -97,8 +116,12 @@ def test_check_right_angle_is_not_encroached():
 
 def test_check_rejects_bad_faces():
     pts = np.array([[0, 0, 0], [1, 0, 0], [2, 0, 0]], dtype=float)
-    mesh = TetMesh(points=pts, tets=np.zeros((0, 4), np.int64), boundary_faces=np.array([[0, 1, 2]]),
-                   face_markers=np.zeros(1, np.int64))
+    mesh = TetMesh(
+        points=pts,
+        tets=np.zeros((0, 4), np.int64),
+        boundary_faces=np.array([[0, 1, 2]]),
+        face_markers=np.zeros(1, np.int64),
+    )
     with pytest.raises(InvalidInputError, match="collinear"):
         check_gabriel(mesh)
     mesh.boundary_faces = np.array([[0, 1, 7]])
@@ -112,23 +135,38 @@ def test_check_agrees_with_brute_force_on_integer_points(coords):
     # Integer coordinates: squared distances are exact in float64, so a brute-force test is exact too.
     pts = np.array(coords, dtype=float)
     n = len(pts)
-    faces = [(a, b, c) for a in range(n) for b in range(a + 1, n) for c in range(b + 1, n)
-             if np.linalg.norm(np.cross(pts[b] - pts[a], pts[c] - pts[a])) > 0][:40]
+    faces = [
+        (a, b, c)
+        for a in range(n)
+        for b in range(a + 1, n)
+        for c in range(b + 1, n)
+        if np.linalg.norm(np.cross(pts[b] - pts[a], pts[c] - pts[a])) > 0
+    ][:40]
     segs = [(a, b) for a in range(n) for b in range(a + 1, n)]
-    mesh = TetMesh(points=pts, tets=np.zeros((0, 4), np.int64), boundary_faces=np.array(faces).reshape(-1, 3),
-                   face_markers=np.zeros(len(faces), np.int64), segments=np.array(segs))
+    mesh = TetMesh(
+        points=pts,
+        tets=np.zeros((0, 4), np.int64),
+        boundary_faces=np.array(faces).reshape(-1, 3),
+        face_markers=np.zeros(len(faces), np.int64),
+        segments=np.array(segs),
+    )
     rep = check_gabriel(mesh)
-    # Segment (a, b): p strictly inside the sphere with diameter ab iff (a - p).(b - p) < 0 (exact on integers).
-    expect = [k for k, (a, b) in enumerate(segs)
-              if any(np.dot(pts[a] - pts[p], pts[b] - pts[p]) < 0 for p in range(n) if p not in (a, b))]
+    # Segment (a, b): p is strictly inside its diametral sphere iff (a - p).(b - p) < 0 (exact on integers).
+    expect = [
+        k
+        for k, (a, b) in enumerate(segs)
+        if any(np.dot(pts[a] - pts[p], pts[b] - pts[p]) < 0 for p in range(n) if p not in (a, b))
+    ]
     assert rep.segments.tolist() == expect
 
 
-# ---- refine_gabriel ---------------------------------------------------------------------------------------------
+# ---- refine_gabriel
+# ---------------------------------------------------------------------------------------------
+
 
 def test_cube_converges_without_steiner_points():
-    # Square faces: the fourth corner lies on each triangle's diametral sphere (not inside); edges are seen from the
-    # other corners at 45-90 degrees... at most 90: Gabriel. Nothing to do.
+    # Square faces: the fourth corner lies on each triangle's diametral sphere (not inside), the other corners
+    # outside; an edge is seen from every other corner at an angle of at most 90 degrees. Nothing to do.
     plc = cube()
     res = refine_gabriel(plc, max_steiner=50)
     assert res.status == "converged", res.stats["diagnosis"]["stop_reason"]
@@ -159,8 +197,8 @@ def test_spike_ends_within_budget_and_names_the_apex(theta):
     assert_result_consistent(res, plc)
     assert res.stats["steiner_points"] <= 150
     smallest = res.stats["diagnosis"]["smallest_angles"][0]
-    # At the apex (index 10) two neighbouring generators make 2 asin(sin(theta) sin(18 deg)) < theta, and a generator
-    # makes an even smaller angle with the planes of the side facets through the apex it is not on.
+    # At the apex (index 10) neighbouring generators make 2 asin(sin(theta) sin(18 deg)) < theta, and a
+    # generator makes a smaller angle still with the plane of a side facet through the apex it is not on.
     generators = 2 * np.degrees(np.arcsin(np.sin(np.radians(theta)) * np.sin(np.radians(18))))
     assert 10 in smallest["vertices"]
     assert smallest["degrees"] <= generators + 1e-9
@@ -170,7 +208,7 @@ def test_budget_and_min_length_are_statuses():
     plc = spike(1)
     res = refine_gabriel(plc, max_steiner=3)
     assert res.status == "budget_exhausted" and res.stats["steiner_points"] == 3
-    # The base edges have length 2 tan(1 deg) sin(18 deg) = 0.0108; no split may make an edge shorter than 0.01.
+    # Base edges: 2 tan(1 deg) sin(18 deg) = 0.0108 long; no split may make an edge shorter than 0.01.
     res = refine_gabriel(plc, max_steiner=1000, min_length=0.01)
     assert res.status == "min_length_reached"
     assert "min_length" in res.stats["diagnosis"]["stop_reason"]
@@ -203,14 +241,15 @@ def test_invalid_plc_is_reported():
 
 
 def schonhardt() -> PLC:
-    """The Schönhardt prism: top triangle twisted by 30 degrees; side quads split along their reflex diagonals."""
+    """The Schönhardt prism: top triangle twisted by 30 degrees; side quads split along their reflex
+    diagonals."""
     path = DATA / "schonhardt.off"
     if not path.exists():
         pytest.skip("../shared/data not present")
     lines = [ln for ln in path.read_text().split("\n")[1:] if ln.strip()]
     n, m = map(int, lines[0].split()[:2])
-    pts = np.array([[float(v) for v in ln.split()] for ln in lines[1:1 + n]])
-    tris = np.array([[int(v) for v in ln.split()[1:4]] for ln in lines[1 + n:1 + n + m]])
+    pts = np.array([[float(v) for v in ln.split()] for ln in lines[1 : 1 + n]])
+    tris = np.array([[int(v) for v in ln.split()[1:4]] for ln in lines[1 + n : 1 + n + m]])
     return PLC(points=pts, triangles=tris, facet_ids=np.arange(len(tris)))
 
 
