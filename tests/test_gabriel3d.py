@@ -197,8 +197,7 @@ def test_spike_ends_within_budget_and_names_the_apex(theta):
     assert_result_consistent(res, plc)
     assert res.stats["steiner_points"] <= 150
     smallest = res.stats["diagnosis"]["smallest_angles"][0]
-    # At the apex (index 10) neighbouring generators make 2 asin(sin(theta) sin(18 deg)) < theta, and a
-    # generator makes a smaller angle still with the plane of a side facet through the apex it is not on.
+    # At the apex (index 10) neighbouring generators make 2 asin(sin(theta) sin(18 deg)) < theta degrees.
     generators = 2 * np.degrees(np.arcsin(np.sin(np.radians(theta)) * np.sin(np.radians(18))))
     assert 10 in smallest["vertices"]
     assert smallest["degrees"] <= generators + 1e-9

@@ -43,18 +43,40 @@ std::vector<InputAngle> segment_segment(const PlcState& s, const std::vector<std
   return out;
 }
 
-// Angles between an input segment and the plane of a facet through one of its ends (not containing the segment).
+// Does the direction d from facet vertex v, projected onto the facet's plane, point into the facet (into one of
+// its domain triangles at v)? Floating point: a diagnosis.
+bool points_into(const Facet& f, int v, const Vec& d) {
+  auto vh = f.vertex.at(v);
+  const Q2& o = vh->point();
+  double ox = CGAL::to_double(o.x()), oy = CGAL::to_double(o.y());
+  double dx = dot(d, f.u), dy = dot(d, f.v);
+  auto turn = [&](const Q2& p) {  // cross(p - o, d): positive when d is counter-clockwise from p - o
+    return (CGAL::to_double(p.x()) - ox) * dy - (CGAL::to_double(p.y()) - oy) * dx;
+  };
+  auto fc = f.cdt.incident_faces(vh), done = fc;
+  do {
+    if (f.cdt.is_infinite(fc) || !fc->info().in_domain) continue;
+    int i = fc->index(vh);
+    const Q2 &p = fc->vertex(FacetCDT::ccw(i))->point(), &q = fc->vertex(FacetCDT::cw(i))->point();
+    if (turn(p) > 0 && turn(q) < 0) return true;  // d strictly inside the angle from p - o to q - o (ccw)
+  } while (++fc != done);
+  return false;
+}
+
+// Angles between an input segment and a facet through one of its ends, where the segment leans over the facet
+// (its projection points into the facet); other directions are covered by the segment-segment angles.
 std::vector<InputAngle> segment_facet(const PlcState& s, const std::vector<std::vector<int>>& at) {
   std::vector<InputAngle> out;
   for (int v = 0; v < s.n_input; ++v)
     for (int g : at[v]) {
       const auto& seg = s.segments[g];
       int end = seg.a == v ? seg.b : seg.a;
+      Vec d = sub(s.points[end], s.points[v]);
       for (int f : s.point_facets[v]) {
-        if (s.facets[f]->vertex.count(end)) continue;
-        Vec d = sub(s.points[end], s.points[v]);
-        double deg = 90.0 - angle(d, normal(*s.facets[f]));
-        out.push_back({"segment-facet", std::abs(deg), {v, end}, {s.facets[f]->id}});
+        const Facet& facet = *s.facets[f];
+        if (facet.vertex.count(end) || !points_into(facet, v, d)) continue;
+        double deg = std::abs(90.0 - angle(d, normal(facet)));
+        out.push_back({"segment-facet", deg, {v, end}, {facet.id}});
       }
     }
   return out;
