@@ -240,14 +240,15 @@ std::optional<Stop> Refiner::run() {
       progress = true;
     }
     last_encroached_segments_ = 0;
-    // Level 2: subfacets, back to level 1 as soon as a subsegment was split.
+    // Level 2: the subfacets found encroached by one scan, each re-checked when its turn comes. Subsegments split
+    // on the way (encroached by a circumcenter) get priority again at the next level-1 scan; a rescan after every
+    // such split would cost a full pass over the subfacets per Steiner point.
     auto subfacets = encroached_subfacets();
     last_encroached_facets_ = static_cast<long>(subfacets.size());
     if (subfacets.empty()) return std::nullopt;
     for (const auto& r : subfacets) {
       bool split_segment = false;
       if (auto stop = split_subfacet(r, true, &progress, &split_segment)) return stop;
-      if (split_segment) break;
     }
     if (!progress)  // every encroached subfacet's circumcenter was refused: the same state would repeat forever
       return Stop{Refine3Status::Stalled, "encroached subfacets remain whose circumcenters cannot be inserted"};
