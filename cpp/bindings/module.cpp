@@ -7,6 +7,7 @@ namespace py = pybind11;
 
 namespace nonobtuse::bindings {
 void bind_mesh2d(py::module_& m);
+void bind_plc(py::module_& m);
 }
 
 PYBIND11_MODULE(_core, m) {
@@ -23,4 +24,5 @@ PYBIND11_MODULE(_core, m) {
     }
   });
   nonobtuse::bindings::bind_mesh2d(m);
+  nonobtuse::bindings::bind_plc(m);
 }
