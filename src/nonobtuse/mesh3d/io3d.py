@@ -38,22 +38,23 @@ def atomic_write(path: Path, write: Callable[[Path], None]) -> None:
         raise
 
 
-def _jsonable(x: Any) -> Any:
+def jsonable(x: Any) -> Any:
+    """`x` with numpy arrays and scalars turned into lists and Python numbers, for json.dumps."""
     if isinstance(x, np.ndarray):
         return x.tolist()
     if isinstance(x, np.generic):
         return x.item()
     if isinstance(x, dict):
-        return {str(k): _jsonable(v) for k, v in x.items()}
+        return {str(k): jsonable(v) for k, v in x.items()}
     if isinstance(x, (list, tuple)):
-        return [_jsonable(v) for v in x]
+        return [jsonable(v) for v in x]
     return x
 
 
 def tetmesh_to_dict(mesh: TetMesh) -> dict[str, Any]:
     """The JSON schema object of `mesh` (stats keys of REQUIRED_STATS filled with None when absent)."""
     stats = {k: None for k in REQUIRED_STATS}
-    stats.update(_jsonable(mesh.stats))
+    stats.update(jsonable(mesh.stats))
     out = {"points": mesh.points.tolist(), "tets": np.asarray(mesh.tets).tolist(),
            "boundary_faces": np.asarray(mesh.boundary_faces).tolist(),
            "face_markers": np.asarray(mesh.face_markers).tolist(),

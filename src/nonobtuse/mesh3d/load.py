@@ -163,7 +163,7 @@ def _read_stl(path: Path) -> RawInput:
     elif data.lstrip()[:5].lower() == b"solid":
         nums = re.findall(rb"vertex\s+(\S+)\s+(\S+)\s+(\S+)", data)
         try:
-            corners = np.array(nums, dtype=np.float64).reshape(-1, 3)
+            corners = np.array([[float(x) for x in row] for row in nums], dtype=np.float64).reshape(-1, 3)
         except ValueError:
             raise InvalidInputError(f"{path}: malformed ASCII STL vertex line") from None
         if len(corners) % 3:
