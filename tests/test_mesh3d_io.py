@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -50,7 +51,7 @@ def test_failed_write_leaves_the_old_file_and_no_temporary(tmp_path, monkeypatch
     import meshio
 
     def half_write(path, *args, **kwargs):  # writes part of the file, then fails like a full disk
-        open(path, "w").write("partial")
+        Path(path).write_text("partial")
         raise OSError("disk full")
 
     monkeypatch.setattr(meshio, "write", half_write)
