@@ -6,8 +6,8 @@ import json
 
 import numpy as np
 import pytest
-from mesh3d_shapes import CUBE_POINTS, CUBE_TRIANGLES, TET_TRIANGLES, write_off
 
+from mesh3d_shapes import CUBE_POINTS, CUBE_TRIANGLES, TET_TRIANGLES, write_off
 from nonobtuse.cli import EXIT_INVALID, EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS, main
 
 pytest.importorskip("nonobtuse.mesh3d.gabriel", reason="check_gabriel/refine_gabriel not merged yet")
@@ -28,8 +28,9 @@ def flat_tet(tmp_path):
 
 
 def test_check3d_gabriel_cube_exits_0(cube, capsys):
-    # each boundary triangle is half a unit square: its diametral sphere has the square's diagonal as diameter;
-    # the fourth corner lies on it, not inside, and the other cube corners are farther. Segments likewise.
+    # each boundary triangle is half a unit square: its diametral sphere has the square's diagonal as
+    # diameter; the fourth corner lies on it, not inside, and the other cube corners are farther. Segments
+    # likewise.
     assert main(["check3d", str(cube), "--json"]) == EXIT_OK
     out = json.loads(capsys.readouterr().out)
     assert out["encroached_facets"] == 0 and out["encroached_segments"] == 0

@@ -6,9 +6,15 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from mesh3d_shapes import (CUBE_POINTS, CUBE_QUADS, CUBE_TRIANGLES, write_off, write_stl_ascii,
-                           write_stl_binary)
 
+from mesh3d_shapes import (
+    CUBE_POINTS,
+    CUBE_QUADS,
+    CUBE_TRIANGLES,
+    write_off,
+    write_stl_ascii,
+    write_stl_binary,
+)
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import load_plc
 
@@ -78,7 +84,8 @@ def test_stl_negative_zero_equals_zero(tmp_path):
     assert len(load_plc(path).points) == 8
 
 
-POLY_BOX_WITH_SQUARE_HOLE = """# box [0,4]^2 x [0,2] split at z = 1 into two regions; the bottom facet has a square hole
+# box [0,4]^2 x [0,2] split at z = 1 into two regions; the bottom facet has a square hole
+POLY_BOX_WITH_SQUARE_HOLE = """# box split into two regions, bottom facet with a hole
 16 3 0 0
 1 0 0 0
 2 4 0 0

@@ -4,24 +4,24 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from mesh3d_shapes import CUBE_POINTS, CUBE_TRIANGLES
 
+from mesh3d_shapes import CUBE_POINTS, CUBE_TRIANGLES
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import PLC, tetrahedralize
+from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes
 from nonobtuse.mesh3d.load import facet_boundary_segments, merge_coplanar_facets
 from nonobtuse.mesh3d.tetrahedralize import input_points_first, tet_faces_once
 
 
 def cube_plc() -> PLC:
     plc = merge_coplanar_facets(PLC(CUBE_POINTS, CUBE_TRIANGLES, np.arange(12)))
-    return PLC(plc.points, plc.triangles, plc.facet_ids, facet_boundary_segments(plc.triangles, plc.facet_ids))
+    segments = facet_boundary_segments(plc.triangles, plc.facet_ids)
+    return PLC(plc.points, plc.triangles, plc.facet_ids, segments)
 
 
 def volume(mesh) -> float:
-    p = mesh.points[mesh.tets]
-    return float(np.einsum("ij,ij->i", p[:, 1] - p[:, 0], np.cross(p[:, 2] - p[:, 0], p[:, 3] - p[:, 0])).sum()
-                 / 6)
+    return float(signed_tet_volumes(mesh.points, mesh.tets).sum())
 
 
 def check_common(mesh, plc):
@@ -80,7 +80,8 @@ def test_unknown_backend_and_option():
 
 def test_input_points_first_renumbers_and_keeps_absent_inputs():
     inputs = np.array([[0.0, 0, 0], [1, 0, 0], [5, 5, 5]])
-    # a mesh whose points are (1,0,0), (0,0,0), (0,1,0), (0,0,1): inputs 1 and 0 in another order, input 2 absent
+    # a mesh whose points are (1,0,0), (0,0,0), (0,1,0), (0,0,1): inputs 1 and 0 in another order, input 2
+    # absent
     points = np.array([[1.0, 0, 0], [0, 0, 0], [0, 1, 0], [0, 0, 1]])
     merged, tets = input_points_first(inputs, points, np.array([[0, 1, 2, 3]]))
     assert merged.tolist() == [[0, 0, 0], [1, 0, 0], [5, 5, 5], [0, 1, 0], [0, 0, 1]]

@@ -4,16 +4,22 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from mesh3d_shapes import (CUBE_POINTS, CUBE_TRIANGLES, TET_POINTS, TET_TRIANGLES,
-                           two_tets_touching_at_a_vertex, write_off)
 
+from mesh3d_shapes import (
+    CUBE_POINTS,
+    CUBE_TRIANGLES,
+    TET_POINTS,
+    TET_TRIANGLES,
+    two_tets_touching_at_a_vertex,
+    write_off,
+)
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import load_plc
 
 
 def load_off(tmp_path, points, faces, **kw):
-    return load_plc(write_off(tmp_path / "x.off", np.asarray(points, dtype=float), np.asarray(faces).tolist()),
-                    **kw)
+    path = write_off(tmp_path / "x.off", np.asarray(points, dtype=float), np.asarray(faces).tolist())
+    return load_plc(path, **kw)
 
 
 def test_empty_file(tmp_path):
@@ -126,7 +132,8 @@ def test_duplicate_face(tmp_path):
 def test_self_intersection_names_two_faces(tmp_path):
     # two tets; the second is the first shifted by (0.2, 0.2, 0.2): their surfaces cross
     pts = np.concatenate([TET_POINTS, TET_POINTS + 0.2])
-    with pytest.raises(InvalidInputError, match=r"self-intersection: faces \d+ \[.*\] and \d+ \[.*\] intersect"):
+    with pytest.raises(InvalidInputError, match=r"self-intersection: faces \d+ \[.*\] and \d+ \[.*\] "
+                                                r"intersect"):
         load_off(tmp_path, pts, np.concatenate([TET_TRIANGLES, TET_TRIANGLES + 4]))
 
 

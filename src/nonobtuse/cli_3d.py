@@ -1,5 +1,5 @@
-"""3D subcommands: check3d (tetrahedralize with a backend, exact Gabriel check of the boundary, control volumes)
-and refine3d (Gabriel refinement of the boundary; writes the mesh)."""
+"""3D subcommands: check3d (tetrahedralize with a backend, exact Gabriel check of the boundary, control
+volumes) and refine3d (Gabriel refinement of the boundary; writes the mesh)."""
 
 from __future__ import annotations
 
@@ -28,7 +28,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("input", help=".off .obj .ply .stl .poly .smesh")
     p.add_argument("-o", "--output", required=True, help="output mesh: .json, .vtu or .msh")
     p.add_argument("--max-steiner", type=int, default=None, help="Steiner point budget")
-    p.add_argument("--min-length", type=float, default=None, help="do not split subsegments shorter than this")
+    p.add_argument("--min-length", type=float, default=None,
+                   help="do not split subsegments shorter than this")
     p.add_argument("--time-limit", type=float, default=None, help="seconds")
     p.add_argument("--split", choices=("shells", "midpoint"), default="shells")
     p.add_argument("--fix-orientation", action="store_true", help="reorient inconsistently oriented faces")
@@ -57,7 +58,8 @@ def run_check3d(args: argparse.Namespace) -> int:
     mesh = tetrahedralize(plc, args.backend)
     report = check_gabriel(mesh)
     facets, segments = encroached_counts(report)
-    summary = {"input": args.input, "backend": args.backend, "points": len(mesh.points), "tets": len(mesh.tets),
+    summary = {"input": args.input, "backend": args.backend, "points": len(mesh.points),
+               "tets": len(mesh.tets),
                "boundary_faces": len(mesh.boundary_faces), "steiner_points": mesh.stats["steiner_points"],
                "encroached_facets": facets, "encroached_segments": segments,
                "gabriel": report.to_dict(), "control_volumes": control_volumes3d(mesh).to_dict()}

@@ -4,11 +4,11 @@ Within a tet T = (a, b, c, d) the piece of the Voronoi face dual to edge e = (i,
 (M, C_f1, C_T, C_f2): M the midpoint of e, C_f1 and C_f2 the circumcenters of the two faces of T containing e,
 C_T the circumcenter of T. All four points are equidistant from i and j, so the quadrilateral lies in the
 bisector plane of e. Its signed area is measured along the direction i -> j; it is positive when T's
-circumcenter lies on the side of the faces that T occupies, and negative for obtuse configurations. Summing the
-pieces of all tets around e gives the dual area A_e; the coupling coefficient of e is A_e / |e|, and a negative
-coefficient breaks the M-matrix property. The part of T nearest to i is the union of the pyramids with apex i
-over the three pieces of the edges at i, of volume A * |e| / 6 each, so the Voronoi cell volumes of all vertices
-sum to the mesh volume (signed pieces, exactly up to rounding).
+circumcenter lies on the side of the faces that T occupies, and negative for obtuse configurations. Summing
+the pieces of all tets around e gives the dual area A_e; the coupling coefficient of e is A_e / |e|, and a
+negative coefficient breaks the M-matrix property. The part of T nearest to i is the union of the pyramids
+with apex i over the three pieces of the edges at i, of volume A * |e| / 6 each, so the Voronoi cell volumes
+of all vertices sum to the mesh volume (signed pieces, exactly up to rounding).
 
 Everything is computed in floating point (constructions, not decisions): the exact certificate is the Gabriel
 check of the boundary faces, this module measures its consequence.
@@ -53,6 +53,13 @@ class ControlVolumes3D:
                 "total_volume": float(self.volumes.sum())}
 
 
+def signed_tet_volumes(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
+    """Signed volumes (t,) of tets (t, 4): det[b-a, c-a, d-a] / 6, positive for positively oriented tets."""
+    p = points[tets]
+    a = p[:, 0]
+    return np.einsum("ij,ij->i", p[:, 1] - a, np.cross(p[:, 2] - a, p[:, 3] - a)) / 6.0
+
+
 def triangle_circumcenters(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
     """Circumcenters (k, 3) of triangles with corners a, b, c (each (k, 3)) in 3D."""
     u, v = b - a, c - a
@@ -82,7 +89,8 @@ def dual_area_pieces(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray, 
     c2 = triangle_circumcenters(xi, xj, xl)
     c = np.repeat(ct, 6, axis=0)
     # Quadrilateral M -> C(ijk) -> C_T -> C(ijl): for (i, j, k, l) positive (det[j-i, k-i, l-i] > 0) and a
-    # circumcenter inside the tet it runs counter-clockwise seen from j, so its area vector points along i -> j.
+    # circumcenter inside the tet it runs counter-clockwise seen from j, so its area vector points
+    # along i -> j.
     area_vec = 0.5 * (np.cross(c1 - m, c - m) + np.cross(c - m, c2 - m))
     e = xj - xi
     signed = (area_vec * e).sum(1) / np.linalg.norm(e, axis=1)

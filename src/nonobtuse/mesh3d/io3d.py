@@ -3,8 +3,8 @@
 
 JSON schema (one object): ``points`` (n, 3) floats, the PLC's points first and in input order; ``tets`` (t, 4)
 positively oriented; ``boundary_faces`` (f, 3); ``face_markers`` (f,); ``segments`` (k, 2); ``stats`` with at
-least ``status``, ``steiner_points``, ``encroached_facets``, ``encroached_segments``, ``seconds`` (null when not
-known). Floats are written with repr, so they read back bit for bit.
+least ``status``, ``steiner_points``, ``encroached_facets``, ``encroached_segments``, ``seconds`` (null when
+not known). Floats are written with repr, so they read back bit for bit.
 """
 
 from __future__ import annotations

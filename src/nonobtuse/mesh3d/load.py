@@ -1,8 +1,8 @@
 """Reading 3D inputs into a validated :class:`~nonobtuse.mesh3d.plc.PLC`.
 
 Formats (by suffix): surfaces .off, .obj, .ply (meshio), .stl (binary and ASCII; exactly equal vertices are
-merged, first occurrence first); TetGen PLCs .poly and .smesh (polygonal facets with facet holes, volume holes,
-regions; nodes from the sibling .node file when the node count is 0).
+merged, first occurrence first); TetGen PLCs .poly and .smesh (polygonal facets with facet holes, volume
+holes, regions; nodes from the sibling .node file when the node count is 0).
 
 Polygonal facets are triangulated in 2D (the constrained Delaunay triangulation of the C++ core on the polygon
 projected along its dominant normal axis, facet holes removed); a facet must be exactly planar. Triangles of
@@ -83,8 +83,8 @@ class _Tokens:
         try:
             return [kind(w) for w in words]
         except ValueError:
-            raise self.error(f"expected numbers in {what}, got {' '.join(words)!r}", self.line_no[self.pos - 1]) \
-                from None
+            line = self.line_no[self.pos - 1]
+            raise self.error(f"expected numbers in {what}, got {' '.join(words)!r}", line) from None
 
 
 def _read_text(path: Path) -> str:
@@ -169,7 +169,8 @@ def _read_stl(path: Path) -> RawInput:
         if len(corners) % 3:
             raise InvalidInputError(f"{path}: ASCII STL with {len(corners)} vertices, not a multiple of 3")
     else:
-        raise InvalidInputError(f"{path}: not an STL file (neither binary of consistent size nor 'solid' ASCII)")
+        raise InvalidInputError(f"{path}: not an STL file (neither binary of consistent size nor 'solid' "
+                                f"ASCII)")
     points, inverse = merge_equal_points(corners.astype(np.float64))
     faces = inverse.reshape(-1, 3)
     return RawInput(points, [Facet([f]) for f in faces], source=str(path))
@@ -209,7 +210,8 @@ def _read_tetgen(path: Path) -> RawInput:
         points = np.array([r[1:4] for r in rows], dtype=np.float64)
     base = first_index if first_index in (0, 1) else 0
     n_facets = tok.numbers(tok.next_line("the facet header")[:1], int, "the facet header")[0]
-    facets = [(_smesh_facet if path.suffix == ".smesh" else _poly_facet)(tok, base, j) for j in range(n_facets)]
+    read_facet = _smesh_facet if path.suffix == ".smesh" else _poly_facet
+    facets = [read_facet(tok, base, j) for j in range(n_facets)]
     holes = _point_list(tok, "hole", 3)
     regions = _point_list(tok, "region", 4) if tok.pos < len(tok.lines) else np.zeros((0, 4))
     return RawInput(points, facets, holes, regions, source=str(path))
@@ -269,7 +271,8 @@ def _check_indices(raw: RawInput) -> None:
         for loop in f.loops:
             if len(loop) and (loop.min() < 0 or loop.max() >= n):
                 bad = loop[(loop < 0) | (loop >= n)][0]
-                raise InvalidInputError(f"facet {j} ({f.where or raw.source}) refers to vertex {bad}, but there "
+                raise InvalidInputError(f"facet {j} ({f.where or raw.source}) refers to vertex {bad}, but "
+                                        f"there "
                                         f"are {n} vertices")
 
 
@@ -298,8 +301,8 @@ def triangulate_facet(points: np.ndarray, facet: Facet, j: int) -> np.ndarray:
         raise InvalidInputError(f"facet {j} ({facet.where}): its polygons do not bound a planar region "
                                 f"(crossing or degenerate polygons)")
     _check_planar(points, local, tri[0], j, facet)
-    # The 2D triangles are counter-clockwise. Orient them like the first polygon: the triangle on the inner side
-    # of the polygon's first edge (a, b) contains it as (a, b) when the polygon runs counter-clockwise.
+    # The 2D triangles are counter-clockwise. Orient them like the first polygon: the triangle on the inner
+    # side of the polygon's first edge (a, b) contains it as (a, b) when the polygon runs counter-clockwise.
     a, b = to_local[int(first[0])], to_local[int(first[1])]
     d = np.stack([tri, np.roll(tri, -1, axis=1)], axis=2).reshape(-1, 2)
     ccw = bool(((d[:, 0] == a) & (d[:, 1] == b)).any())
@@ -313,7 +316,8 @@ def _check_planar(points: np.ndarray, local: np.ndarray, ref: np.ndarray, j: int
     off = np.flatnonzero(_core.plc_orient3d(points, quads))
     if len(off):
         v = local[off[0]]
-        raise InvalidInputError(f"facet {j} ({facet.where}) is not planar: vertex {v} {points[v].tolist()} is "
+        raise InvalidInputError(f"facet {j} ({facet.where}) is not planar: vertex {v} {points[v].tolist()} "
+                                f"is "
                                 f"off the plane of its vertices {a}, {b}, {c}")
 
 
@@ -378,9 +382,9 @@ def build_plc(raw: RawInput, *, surface: bool, fix_orientation: bool = False) ->
 def load_plc(path: str | Path, *, fix_orientation: bool = False) -> PLC:
     """Read and validate a PLC from `path` (format by suffix, see the module docstring).
 
-    Returns a PLC with the file's vertices in file order (STL: distinct vertices in order of first occurrence),
-    triangulated facets, facet ids, segments, holes and regions. Surfaces must be closed, manifold (edges and
-    vertices), consistently oriented (or `fix_orientation=True`: reoriented by BFS, each component outward),
+    Returns a PLC with the file's vertices in file order (STL: distinct vertices in order of first
+    occurrence), triangulated facets, facet ids, segments, holes and regions. Surfaces must be closed,
+    manifold (edges and vertices), consistently oriented (or `fix_orientation=True`: reoriented by BFS, each component outward),
     without degenerate, duplicate or self-intersecting faces. Raises InvalidInputError naming the problem and
     where. Cost: O(m log m) for m triangles plus the self-intersection sweep.
     """

@@ -3,17 +3,17 @@ first, in input order, and positively oriented tets (exact orient3d; rows are sw
 
 What each backend guarantees:
 
-- ``"cgal"``: the Delaunay tetrahedralization of the PLC's vertices (CGAL, exact predicates), no Steiner point.
-  The boundary faces are the PLC's triangles as given (facet ids as markers) and the segments the PLC's; they
-  are faces/edges of the tetrahedralization only where they are Delaunay. Tets are kept when their centroid has
-  generalized winding number >= 1/2 w.r.t. the PLC triangles (floating point: it only selects which tets are
-  reported; the exact Gabriel check reads the boundary faces and points). Volume holes and regions are not
+- ``"cgal"``: the Delaunay tetrahedralization of the PLC's vertices (CGAL, exact predicates), no Steiner
+  point. The boundary faces are the PLC's triangles as given (facet ids as markers) and the segments the
+  PLC's; they are faces/edges of the tetrahedralization only where they are Delaunay. Tets are kept when
+  their centroid has generalized winding number >= 1/2 w.r.t. the PLC triangles (floating point: it only selects which tets
+  are reported; the exact Gabriel check reads the boundary faces and points). Volume holes and regions are not
   applied. This is the "before" state of the Gabriel refinement.
 - ``"tetgen"``: TetGen through the ``tetgen`` package. Default switches ``pq1.414YAQ``: the boundary is kept
   (``Y``: no Steiner point on the boundary), interior quality points are added; ``switches=...`` passes any
   string (e.g. ``"pq1.414AQ"`` lets TetGen split the boundary). TetGen keeps the input points first and in
-  order; holes and regions of the PLC are passed on (``A`` gives region attributes). Boundary faces are TetGen's
-  faces on input facets with the facet id as marker.
+  order; holes and regions of the PLC are passed on (``A`` gives region attributes). Boundary faces are
+  TetGen's faces on input facets with the facet id as marker.
 - ``"ftetwild"``: fTetWild through ``pytetwild``. It remeshes the surface within an envelope (it moves it), so
   input points may be absent from the output. Output points exactly equal to an input point are mapped to that
   input index; absent input points are kept as unreferenced points so that the input comes first. Boundary
@@ -69,8 +69,8 @@ def tet_faces_once(tets: np.ndarray) -> np.ndarray:
 
 @contextlib.contextmanager
 def _stdout_to_stderr():
-    """Route the C-level stdout (file descriptor 1) to stderr: the tetgen extension prints progress there, which
-    would corrupt the --json output of the CLI."""
+    """Route the C-level stdout (file descriptor 1) to stderr: the tetgen extension prints progress
+    there, which would corrupt the --json output of the CLI."""
     sys.stdout.flush()
     saved = os.dup(1)
     try:
@@ -140,7 +140,8 @@ def _ftetwild(plc: PLC, options: dict[str, Any]) -> TetMesh:
             "loglevel": 6, "quiet": True, "vtk_ordering": False, "disable_filtering": False}
     unknown = set(options) - set(opts)
     if unknown:
-        raise InvalidInputError(f"backend 'ftetwild': unknown options {sorted(unknown)}; known {sorted(opts)}")
+        raise InvalidInputError(f"backend 'ftetwild': unknown options {sorted(unknown)}; "
+                                f"known {sorted(opts)}")
     opts.update(options)
     wrapper = _load_ftetwild()
     no_sizing_field = (np.empty((0, 3)), np.empty((0, 4), dtype=np.int32), np.empty(0))
@@ -153,9 +154,10 @@ def _ftetwild(plc: PLC, options: dict[str, Any]) -> TetMesh:
                    stats={"ftetwild_options": opts})
 
 
-def input_points_first(inputs: np.ndarray, points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Renumber a mesh (points, tets) so that `inputs` come first in their order: an output point exactly equal
-    to an input point takes its index, the other output points follow in their order."""
+def input_points_first(inputs: np.ndarray, points: np.ndarray,
+                       tets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Renumber a mesh (points, tets) so that `inputs` come first in their order: an output point exactly
+    equal to an input point takes its index, the other output points follow in their order."""
     merged, inv = merge_equal_points(np.concatenate([inputs, points]))
     n = len(inputs)
     if len(np.unique(inv[:n])) != n:
@@ -173,8 +175,8 @@ def tetrahedralize(plc: PLC, backend: str = "cgal", **options: Any) -> TetMesh:
 
     Returns a TetMesh: points (input points first, in input order), positively oriented tets, boundary faces
     with markers, segments; stats with backend, seconds and steiner_points (output points not in the input).
-    What each backend guarantees is in the module docstring. Raises InvalidInputError for an unknown backend or
-    option, or when the backend fails on the input.
+    What each backend guarantees is in the module docstring. Raises InvalidInputError for an unknown backend
+    or option, or when the backend fails on the input.
     """
     if backend not in _BACKEND_FUNCS:
         raise InvalidInputError(f"unknown backend {backend!r}; expected one of {BACKENDS}")

@@ -1,8 +1,8 @@
-"""Validation of 3D piecewise linear complexes (PLCs): every problem is an :class:`InvalidInputError` naming what
-and where (face and vertex indices, coordinates, the source file).
+"""Validation of 3D piecewise linear complexes (PLCs): every problem is an :class:`InvalidInputError` naming
+what and where (face and vertex indices, coordinates, the source file).
 
-Geometric decisions (degenerate faces, self-intersections, coplanarity) use the exact predicates of the C++ core
-(CGAL exact-predicates kernel); the rest is combinatorics on the triangle list.
+Geometric decisions (degenerate faces, self-intersections, coplanarity) use the exact predicates of the C++
+core (CGAL exact-predicates kernel); the rest is combinatorics on the triangle list.
 """
 
 from __future__ import annotations
@@ -82,7 +82,8 @@ def check_faces(plc: PLC) -> None:
     t = plc.triangles
     rep = np.flatnonzero((t[:, 0] == t[:, 1]) | (t[:, 1] == t[:, 2]) | (t[:, 0] == t[:, 2]))
     if len(rep):
-        raise InvalidInputError(f"degenerate face {rep[0]} {t[rep[0]].tolist()}: a repeated vertex{_where(plc)}")
+        raise InvalidInputError(f"degenerate face {rep[0]} {t[rep[0]].tolist()}: a repeated "
+                                f"vertex{_where(plc)}")
     col = np.flatnonzero(_core.plc_collinear(plc.points, t))
     if len(col):
         f = col[0]
@@ -123,8 +124,8 @@ def check_manifold_vertices(plc: PLC, ef: EdgeFaces) -> None:
     t = plc.triangles
     m = len(t)
     corner_of = lambda f, k: 3 * f + k  # noqa: E731 - corner k of face f
-    # Each triangle edge (row 3f + k: t[f,k] -> t[f,k+1]) touches corners k and k+1 of face f. Two faces sharing
-    # the edge join their corners at each endpoint. Only manifold edges (two faces) matter here.
+    # Each triangle edge (row 3f + k: t[f,k] -> t[f,k+1]) touches corners k and k+1 of face f. Two faces
+    # sharing the edge join their corners at each endpoint. Only manifold edges (two faces) matter here.
     f_of = np.arange(3 * m) // 3
     k_of = np.arange(3 * m) % 3
     r1, r2 = manifold_face_pairs(ef)
@@ -144,7 +145,8 @@ def check_manifold_vertices(plc: PLC, ef: EdgeFaces) -> None:
     bad = np.flatnonzero(fans_per_vertex > 1)
     if len(bad):
         v = bad[0]
-        raise InvalidInputError(f"non-manifold {_pt(plc, v)}: its faces form {fans_per_vertex[v]} separate fans "
+        raise InvalidInputError(f"non-manifold {_pt(plc, v)}: its faces form {fans_per_vertex[v]} separate "
+                                f"fans "
                                 f"(surface sheets touching at a point){_where(plc)}")
 
 
@@ -177,7 +179,8 @@ def orientation_flips(plc: PLC, ef: EdgeFaces) -> np.ndarray | None:
     bad = np.flatnonzero((flip[f1] ^ flip[f2]) != same_direction)
     if len(bad):
         a, b = np.sort(d[r1[bad[0]]])
-        raise InvalidInputError(f"non-orientable surface (Moebius-like): no consistent orientation across edge "
+        raise InvalidInputError(f"non-orientable surface (Moebius-like): no consistent orientation across "
+                                f"edge "
                                 f"({a}, {b}) of faces {f1[bad[0]]} and {f2[bad[0]]}{_where(plc)}")
     return flip.astype(bool)
 
