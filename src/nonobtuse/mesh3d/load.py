@@ -384,9 +384,9 @@ def load_plc(path: str | Path, *, fix_orientation: bool = False) -> PLC:
 
     Returns a PLC with the file's vertices in file order (STL: distinct vertices in order of first
     occurrence), triangulated facets, facet ids, segments, holes and regions. Surfaces must be closed,
-    manifold (edges and vertices), consistently oriented (or `fix_orientation=True`: reoriented by BFS, each component outward),
-    without degenerate, duplicate or self-intersecting faces. Raises InvalidInputError naming the problem and
-    where. Cost: O(m log m) for m triangles plus the self-intersection sweep.
+    manifold (edges and vertices), consistently oriented (or `fix_orientation=True`: reoriented by BFS, each
+    component outward), without degenerate, duplicate or self-intersecting faces. Raises InvalidInputError
+    naming the problem and where. Cost: O(m log m) for m triangles plus the self-intersection sweep.
     """
     path = Path(path)
     suffix = path.suffix.lower()

@@ -5,10 +5,10 @@ What each backend guarantees:
 
 - ``"cgal"``: the Delaunay tetrahedralization of the PLC's vertices (CGAL, exact predicates), no Steiner
   point. The boundary faces are the PLC's triangles as given (facet ids as markers) and the segments the
-  PLC's; they are faces/edges of the tetrahedralization only where they are Delaunay. Tets are kept when
-  their centroid has generalized winding number >= 1/2 w.r.t. the PLC triangles (floating point: it only selects which tets
-  are reported; the exact Gabriel check reads the boundary faces and points). Volume holes and regions are not
-  applied. This is the "before" state of the Gabriel refinement.
+  PLC's; they are faces/edges of the tetrahedralization only where they are Delaunay. Tets are kept when their
+  centroid has generalized winding number >= 1/2 w.r.t. the PLC triangles (floating point: it only selects
+  which tets are reported; the exact Gabriel check reads the boundary faces and points). Volume holes and
+  regions are not applied. This is the "before" state of the Gabriel refinement.
 - ``"tetgen"``: TetGen through the ``tetgen`` package. Default switches ``pq1.414YAQ``: the boundary is kept
   (``Y``: no Steiner point on the boundary), interior quality points are added; ``switches=...`` passes any
   string (e.g. ``"pq1.414AQ"`` lets TetGen split the boundary). TetGen keeps the input points first and in
@@ -26,6 +26,7 @@ import contextlib
 import importlib.util
 import os
 import sys
+import tempfile
 import time
 from dataclasses import replace
 from typing import Any
@@ -79,6 +80,18 @@ def _stdout_to_stderr():
     finally:
         os.dup2(saved, 1)
         os.close(saved)
+
+
+@contextlib.contextmanager
+def _in_temporary_directory():
+    """Run with the working directory set to a fresh temporary directory, removed afterwards."""
+    previous = os.getcwd()
+    with tempfile.TemporaryDirectory(prefix="nonobtuse-ftetwild-") as tmp:
+        os.chdir(tmp)
+        try:
+            yield
+        finally:
+            os.chdir(previous)
 
 
 def _cgal(plc: PLC, options: dict[str, Any]) -> TetMesh:
@@ -145,8 +158,9 @@ def _ftetwild(plc: PLC, options: dict[str, Any]) -> TetMesh:
     opts.update(options)
     wrapper = _load_ftetwild()
     no_sizing_field = (np.empty((0, 3)), np.empty((0, 4), dtype=np.int32), np.empty(0))
-    v, t = wrapper.tetrahedralize_mesh(plc.points, plc.triangles.astype(np.uint32), *opts.values(),
-                                       *no_sizing_field)
+    with _in_temporary_directory():  # fTetWild writes __tracked_surface.stl into the working directory
+        v, t = wrapper.tetrahedralize_mesh(plc.points, plc.triangles.astype(np.uint32), *opts.values(),
+                                           *no_sizing_field)
     points, tets = input_points_first(plc.points, np.asarray(v, dtype=np.float64), np.asarray(t, np.int64))
     tets = positively_oriented(points, tets)
     faces = tet_faces_once(tets)
