@@ -221,3 +221,11 @@ def test_sphere_stl_equals_sphere_off():
         return tuple(np.roll(t, -k).tolist())
 
     assert {canon(t) for t in to_off[stl.triangles]} == {canon(t) for t in off.triangles}
+
+
+def test_manifold_smesh_is_oriented_outward(tmp_path):
+    # facet orientation is free in TetGen files: the reversed faces (0, 1, 2) and (3, 2, 1) come out outward,
+    # reversed, as (2, 1, 0) and (1, 2, 3) (normals -z and (1, 1, 1))
+    (tmp_path / "t.smesh").write_text("4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n"
+                                      "4 0\n3 0 1 2\n3 0 1 3\n3 0 3 2\n3 3 2 1\n0\n0\n")
+    assert load_plc(tmp_path / "t.smesh").triangles.tolist() == [[2, 1, 0], [0, 1, 3], [0, 3, 2], [1, 2, 3]]

@@ -116,14 +116,13 @@ def check_closed(plc: PLC, ef: EdgeFaces, *, require_manifold: bool) -> None:
                 f"{ef.faces_of(many[0]).tolist()}; {_pt(plc, a)}, {_pt(plc, b)}{_where(plc)}")
 
 
-def check_manifold_vertices(plc: PLC, ef: EdgeFaces) -> None:
-    """Raise on a vertex whose faces form more than one fan (two surface sheets touching at a point).
+def fans_per_vertex(plc: PLC, ef: EdgeFaces) -> np.ndarray:
+    """Per vertex, the number of fans its faces form (1 for a manifold vertex, 0 for an unused one).
 
-    The corners (face, vertex) around a vertex are joined when their faces share an edge through the vertex;
-    a manifold vertex has exactly one group. Cost: O(m log m)."""
+    The corners (face, vertex) around a vertex are joined when their faces share an edge (of exactly two
+    faces) through the vertex; each group is a fan. Corner k of face f is number 3f + k. Cost: O(m log m)."""
     t = plc.triangles
     m = len(t)
-    corner_of = lambda f, k: 3 * f + k  # noqa: E731 - corner k of face f
     # Each triangle edge (row 3f + k: t[f,k] -> t[f,k+1]) touches corners k and k+1 of face f. Two faces
     # sharing the edge join their corners at each endpoint. Only manifold edges (two faces) matter here.
     f_of = np.arange(3 * m) // 3
@@ -134,19 +133,23 @@ def check_manifold_vertices(plc: PLC, ef: EdgeFaces) -> None:
         v1 = t[f_of[r1], (k_of[r1] + end) % 3]
         # the corner of face 2 at the same vertex
         k2 = np.where(t[f_of[r2], k_of[r2]] == v1, k_of[r2], (k_of[r2] + 1) % 3)
-        rows.append(corner_of(f_of[r1], (k_of[r1] + end) % 3))
-        cols.append(corner_of(f_of[r2], k2))
+        rows.append(3 * f_of[r1] + (k_of[r1] + end) % 3)
+        cols.append(3 * f_of[r2] + k2)
     rows, cols = np.concatenate(rows), np.concatenate(cols)
     graph = coo_matrix((np.ones(len(rows)), (rows, cols)), shape=(3 * m, 3 * m))
     _, label = connected_components(graph, directed=False)
     vertex_of_corner = t.ravel()
     fans = np.unique(np.stack([vertex_of_corner, label], axis=1), axis=0)
-    fans_per_vertex = np.bincount(fans[:, 0], minlength=len(plc.points))
-    bad = np.flatnonzero(fans_per_vertex > 1)
+    return np.bincount(fans[:, 0], minlength=len(plc.points))
+
+
+def check_manifold_vertices(plc: PLC, ef: EdgeFaces) -> None:
+    """Raise on a vertex whose faces form more than one fan (two surface sheets touching at a point)."""
+    fans = fans_per_vertex(plc, ef)
+    bad = np.flatnonzero(fans > 1)
     if len(bad):
         v = bad[0]
-        raise InvalidInputError(f"non-manifold {_pt(plc, v)}: its faces form {fans_per_vertex[v]} separate "
-                                f"fans "
+        raise InvalidInputError(f"non-manifold {_pt(plc, v)}: its faces form {fans[v]} separate fans "
                                 f"(surface sheets touching at a point){_where(plc)}")
 
 
@@ -235,8 +238,9 @@ def validate_plc(plc: PLC, *, require_manifold: bool = True, fix_orientation: bo
     duplicate faces; closed (every edge in at least two faces); with `require_manifold` (surface inputs: OFF,
     OBJ, PLY, STL) also manifold edges (exactly two faces), manifold vertices (one fan) and consistent
     orientation; finally no self-intersection (exact). PLCs with several regions (.poly/.smesh) have internal
-    facets and legitimately non-manifold edges: pass require_manifold=False; their facet orientation is not
-    checked (TetGen does not use it).
+    facets and legitimately non-manifold edges: pass require_manifold=False. Their facet orientation is free
+    (TetGen ignores it), so when such a PLC is a manifold surface after all (every edge in two faces, every
+    vertex one fan) it is reoriented consistently and outward; otherwise its orientation is left as given.
     Cost: O(m log m) plus the candidate pairs of the self-intersection sweep.
     """
     check_points(plc)
@@ -246,5 +250,7 @@ def validate_plc(plc: PLC, *, require_manifold: bool = True, fix_orientation: bo
     if require_manifold:
         check_manifold_vertices(plc, ef)
         plc = check_orientation(plc, ef, fix=fix_orientation)
+    elif (ef.count == 2).all() and (fans_per_vertex(plc, ef) <= 1).all():
+        plc = check_orientation(plc, ef, fix=True)
     check_self_intersections(plc)
     return plc
