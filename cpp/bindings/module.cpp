@@ -7,6 +7,7 @@ namespace py = pybind11;
 
 namespace nonobtuse::bindings {
 void bind_mesh2d(py::module_& m);
+void bind_validate2d(py::module_& m);
 void bind_plc(py::module_& m);
 }
 
@@ -24,5 +25,6 @@ PYBIND11_MODULE(_core, m) {
     }
   });
   nonobtuse::bindings::bind_mesh2d(m);
+  nonobtuse::bindings::bind_validate2d(m);
   nonobtuse::bindings::bind_plc(m);
 }
