@@ -24,7 +24,7 @@ def load_off(tmp_path, points, faces, **kw):
 
 def test_empty_file(tmp_path):
     (tmp_path / "e.off").write_text("  \n")
-    with pytest.raises(InvalidInputError, match="empty file"):
+    with pytest.raises(InvalidInputError, match="e.off: the file is empty"):
         load_plc(tmp_path / "e.off")
 
 
@@ -35,11 +35,11 @@ def test_no_faces(tmp_path):
 
 @pytest.mark.parametrize("name, content, message", [
     ("w.off", "PLY\n3 1 0\n", "not an OFF file"),
-    ("w.off", "OFF\n1 0 0\n0 zero 0\n", "w.off:3: expected numbers in vertex 0"),
+    ("w.off", "OFF\n1 0 0\n0 zero 0\n", "w.off:3: vertex 0 must be a number, found 'zero'"),
     ("w.stl", "hello world, this is not an STL file" * 3, "not an STL file"),
     ("w.ply", "OFF\n", "not a PLY file"),
     ("w.xyz", "1 2 3\n", "unknown 3D format"),
-    ("w.off", b"\xff\xfe\x00OFF", "not a text file"),
+    ("w.off", b"\xff\xfe\x00OFF", "w.off: cannot read the file"),
 ])
 def test_wrong_format(tmp_path, name, content, message):
     path = tmp_path / name
@@ -50,7 +50,7 @@ def test_wrong_format(tmp_path, name, content, message):
 
 def test_truncated_file_names_what_is_missing(tmp_path):
     (tmp_path / "t.off").write_text("OFF\n4 4 0\n0 0 0\n1 0 0\n")
-    with pytest.raises(InvalidInputError, match="end of file while reading vertex 2"):
+    with pytest.raises(InvalidInputError, match="t.off:4: the file ends early: expected vertex 2"):
         load_plc(tmp_path / "t.off")
 
 

@@ -10,32 +10,17 @@ not known). Floats are written with repr, so they read back bit for bit.
 from __future__ import annotations
 
 import json
-import os
-import tempfile
-from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from nonobtuse.errors import InvalidInputError
+from nonobtuse.io._files import atomic_path, atomic_text
 from nonobtuse.mesh3d.plc import TetMesh
 
 REQUIRED_STATS = ("status", "steiner_points", "encroached_facets", "encroached_segments", "seconds")
 MESHIO_FORMATS = {".vtu": "vtu", ".msh": "gmsh22"}
-
-
-def atomic_write(path: Path, write: Callable[[Path], None]) -> None:
-    """Call write(tmp) on a temporary file next to `path`, then move it onto `path` (atomic on POSIX)."""
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=path.suffix, dir=path.parent or ".")
-    os.close(fd)
-    try:
-        write(Path(tmp))
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
 
 
 def jsonable(x: Any) -> Any:
@@ -71,9 +56,11 @@ def write_tetmesh(mesh: TetMesh, path: str | Path) -> None:
     suffix = path.suffix.lower()
     if suffix == ".json":
         text = json.dumps(tetmesh_to_dict(mesh))
-        atomic_write(path, lambda tmp: tmp.write_text(text))
+        with atomic_text(path) as f:
+            f.write(text)
     elif suffix in MESHIO_FORMATS:
-        atomic_write(path, lambda tmp: _write_meshio(mesh, tmp, MESHIO_FORMATS[suffix]))
+        with atomic_path(path) as tmp:
+            _write_meshio(mesh, tmp, MESHIO_FORMATS[suffix])
     else:
         raise InvalidInputError(f"{path}: unknown mesh format {suffix!r}; expected .json, .vtu or .msh")
 

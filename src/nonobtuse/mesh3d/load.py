@@ -23,6 +23,7 @@ from scipy.sparse.csgraph import connected_components
 
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
+from nonobtuse.io._files import Line, Lines
 from nonobtuse.mesh3d.plc import PLC
 from nonobtuse.mesh3d.validate3d import edge_faces, manifold_face_pairs, validate_plc
 
@@ -52,86 +53,51 @@ class RawInput:
 
 
 # ---------------------------------------------------------------------------------------------------------
-# Tokenised text with line numbers (OFF, OBJ, .poly, .smesh, .node)
+# Text formats (OFF, OBJ, .poly, .smesh, .node), read line by line with file:line messages
 
 
-class _Tokens:
-    """Whitespace tokens of a text file without '#' comments, each with its line number."""
-
-    def __init__(self, path: Path):
-        self.path = path
-        self.lines: list[list[str]] = []
-        self.line_no: list[int] = []
-        for no, line in enumerate(_read_text(path).splitlines(), start=1):
-            words = line.split("#", 1)[0].split()
-            if words:
-                self.lines.append(words)
-                self.line_no.append(no)
-        self.pos = 0  # next line
-
-    def error(self, msg: str, line: int | None = None) -> InvalidInputError:
-        at = self.line_no[min(self.pos, len(self.line_no) - 1)] if line is None and self.line_no else line
-        return InvalidInputError(f"{self.path}:{at}: {msg}")
-
-    def next_line(self, what: str) -> list[str]:
-        if self.pos >= len(self.lines):
-            raise InvalidInputError(f"{self.path}: unexpected end of file while reading {what}")
-        self.pos += 1
-        return self.lines[self.pos - 1]
-
-    def numbers(self, words: list[str], kind: type, what: str) -> list:
-        try:
-            return [kind(w) for w in words]
-        except ValueError:
-            line = self.line_no[self.pos - 1]
-            raise self.error(f"expected numbers in {what}, got {' '.join(words)!r}", line) from None
+def _floats(line: Line, start: int, n: int, what: str) -> list[float]:
+    line.need(start + n, what)
+    return [line.float(k, what) for k in range(start, start + n)]
 
 
-def _read_text(path: Path) -> str:
-    try:
-        data = path.read_bytes()
-    except OSError as e:
-        raise InvalidInputError(f"cannot read {path}: {e.strerror}") from None
-    if not data.strip():
-        raise InvalidInputError(f"empty file {path}")
-    try:
-        return data.decode("utf-8")
-    except UnicodeDecodeError:
-        raise InvalidInputError(f"{path}: not a text file (wrong format for suffix {path.suffix})") from None
+def _ints(line: Line, start: int, n: int, what: str) -> list[int]:
+    line.need(start + n, what)
+    return [line.int(k, what) for k in range(start, start + n)]
 
 
 def _read_off(path: Path) -> RawInput:
-    tok = _Tokens(path)
-    head = tok.next_line("the OFF header")
-    if not head[0].upper().endswith("OFF"):
-        raise tok.error(f"not an OFF file: the first line is {' '.join(head)!r}, expected 'OFF'")
-    counts = head[1:] if len(head) > 1 else tok.next_line("the OFF counts")
-    nv, nf = tok.numbers(counts[:2], int, "the OFF counts")
-    pts = [tok.numbers(tok.next_line(f"vertex {i}")[:3], float, f"vertex {i}") for i in range(nv)]
+    lines = Lines(path)
+    head = lines.next("the OFF header")
+    if not head.tokens[0].upper().endswith("OFF"):
+        raise head.error(f"not an OFF file: the first line is {' '.join(head.tokens)!r}, expected 'OFF'")
+    counts = head if len(head.tokens) > 1 else lines.next("the OFF counts")
+    start = 1 if counts is head else 0
+    nv, nf = (counts.count(start + k, "the OFF counts") for k in range(2))
+    pts = [_floats(lines.next(f"vertex {i}"), 0, 3, f"vertex {i}") for i in range(nv)]
     facets = []
     for j in range(nf):
-        words = tok.next_line(f"face {j}")
-        n = tok.numbers(words[:1], int, f"face {j}")[0]
-        idx = tok.numbers(words[1 : 1 + n], int, f"face {j}")
-        if len(idx) != n:
-            raise tok.error(f"face {j} announces {n} vertices but lists {len(idx)}")
-        facets.append(Facet([np.array(idx, dtype=np.int64)], where=f"{path}:{tok.line_no[tok.pos - 1]}"))
-    return RawInput(_points_array(pts, path), facets, source=str(path))
+        line = lines.next(f"face {j}")
+        n = line.count(0, f"the vertex count of face {j}")
+        facets.append(Facet([np.array(_ints(line, 1, n, f"face {j}"), dtype=np.int64)],
+                            where=f"{line.file}:{line.number}"))
+    return RawInput(_points_array(pts), facets, source=str(path))
 
 
 def _read_obj(path: Path) -> RawInput:
-    tok = _Tokens(path)
+    lines = Lines(path)
     pts, facets = [], []
-    for words, no in zip(tok.lines, tok.line_no):
-        tok.pos += 1
-        if words[0] == "v":
-            pts.append(tok.numbers(words[1:4], float, "a vertex"))
-        elif words[0] == "f":
-            idx = tok.numbers([w.split("/")[0] for w in words[1:]], int, "a face")
+    while not lines.at_end():
+        line = lines.next("a line")
+        if line.tokens[0] == "v":
+            pts.append(_floats(line, 1, 3, "a vertex"))
+        elif line.tokens[0] == "f":
+            line.tokens = [w.split("/")[0] for w in line.tokens]  # v/vt/vn: the vertex index
+            idx = _ints(line, 1, len(line.tokens) - 1, "a face")
             # OBJ indices are 1-based; negative ones count back from the last vertex read so far
             idx = [i - 1 if i > 0 else len(pts) + i for i in idx]
-            facets.append(Facet([np.array(idx, dtype=np.int64)], where=f"{path}:{no}"))
-    return RawInput(_points_array(pts, path), facets, source=str(path))
+            facets.append(Facet([np.array(idx, dtype=np.int64)], where=f"{line.file}:{line.number}"))
+    return RawInput(_points_array(pts), facets, source=str(path))
 
 
 def _read_ply(path: Path) -> RawInput:
@@ -187,74 +153,70 @@ def merge_equal_points(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return corners[np.sort(first)], rank[inv]
 
 
-def _points_array(pts: list, path: Path) -> np.ndarray:
-    if any(len(p) != 3 for p in pts):
-        raise InvalidInputError(f"{path}: a vertex has fewer than 3 coordinates")
+def _points_array(pts: list) -> np.ndarray:
     return np.array(pts, dtype=np.float64).reshape(-1, 3)
 
 
 def _read_tetgen(path: Path) -> RawInput:
     """TetGen .poly (facets of polygons with facet holes) or .smesh (one polygon per facet)."""
-    tok = _Tokens(path)
-    head = tok.numbers(tok.next_line("the node header"), float, "the node header")
-    n_nodes, dim = int(head[0]), int(head[1]) if len(head) > 1 else 3
+    lines = Lines(path)
+    head = lines.next("the node header")
+    n_nodes = head.count(0, "the number of nodes")
+    dim = head.int(1, "the dimension") if len(head.tokens) > 1 else 3
     if dim != 3:
-        raise tok.error(f"dimension {dim}: only 3D PLCs are read here")
+        raise head.error(f"dimension {dim}: only 3D PLCs are read here")
     if n_nodes == 0:
-        points, first_index = _read_node(path.with_suffix(".node"))
+        points, first_index = _read_nodes(Lines(path.with_suffix(".node")))
     else:
-        rows = [tok.numbers(tok.next_line(f"node {i}"), float, f"node {i}") for i in range(n_nodes)]
-        if any(len(r) < 4 for r in rows):
-            raise tok.error("a node line needs an index and 3 coordinates")
-        first_index = int(rows[0][0])
-        points = np.array([r[1:4] for r in rows], dtype=np.float64)
+        points, first_index = _node_rows(lines, n_nodes)
     base = first_index if first_index in (0, 1) else 0
-    n_facets = tok.numbers(tok.next_line("the facet header")[:1], int, "the facet header")[0]
+    n_facets = lines.next("the facet header").count(0, "the number of facets")
     read_facet = _smesh_facet if path.suffix == ".smesh" else _poly_facet
-    facets = [read_facet(tok, base, j) for j in range(n_facets)]
-    holes = _point_list(tok, "hole", 3)
-    regions = _point_list(tok, "region", 4) if tok.pos < len(tok.lines) else np.zeros((0, 4))
+    facets = [read_facet(lines, base, j) for j in range(n_facets)]
+    holes = _point_list(lines, "hole", 3)
+    regions = _point_list(lines, "region", 4) if not lines.at_end() else np.zeros((0, 4))
     return RawInput(points, facets, holes, regions, source=str(path))
 
 
-def _read_node(path: Path) -> tuple[np.ndarray, int]:
-    tok = _Tokens(path)
-    n = tok.numbers(tok.next_line("the node header")[:1], int, "the node header")[0]
-    rows = [tok.numbers(tok.next_line(f"node {i}")[:4], float, f"node {i}") for i in range(n)]
+def _node_rows(lines: Lines, n: int) -> tuple[np.ndarray, int]:
+    """n node lines "index x y z ..."; returns the coordinates and the first index (0 or 1 based)."""
+    rows = [lines.next(f"node {i}").need(4, f"node {i}: an index and 3 coordinates") for i in range(n)]
+    points = np.array([_floats(r, 1, 3, f"node {i}") for i, r in enumerate(rows)], dtype=np.float64)
+    return points.reshape(-1, 3), (rows[0].int(0, "the node index") if rows else 0)
+
+
+def _read_nodes(lines: Lines) -> tuple[np.ndarray, int]:
+    head = lines.next("the node header")
+    n = head.count(0, "the number of nodes")
     if n == 0:
-        raise InvalidInputError(f"{path}: no nodes")
-    return np.array([r[1:4] for r in rows], dtype=np.float64), int(rows[0][0])
+        raise head.error("no nodes")
+    return _node_rows(lines, n)
 
 
-def _loop(tok: _Tokens, words: list[str], base: int, what: str) -> np.ndarray:
-    nums = tok.numbers(words, int, what)
-    if not nums or len(nums) < 1 + nums[0]:
-        raise tok.error(f"{what}: expected a vertex count and that many indices")
-    return np.array(nums[1 : 1 + nums[0]], dtype=np.int64) - base
+def _loop(line: Line, base: int, what: str) -> np.ndarray:
+    n = line.count(0, f"the vertex count of {what}")
+    return np.array(_ints(line, 1, n, what), dtype=np.int64) - base
 
 
-def _smesh_facet(tok: _Tokens, base: int, j: int) -> Facet:
-    words = tok.next_line(f"facet {j}")
-    return Facet([_loop(tok, words, base, f"facet {j}")], where=f"{tok.path}:{tok.line_no[tok.pos - 1]}")
+def _smesh_facet(lines: Lines, base: int, j: int) -> Facet:
+    line = lines.next(f"facet {j}")
+    return Facet([_loop(line, base, f"facet {j}")], where=f"{line.file}:{line.number}")
 
 
-def _poly_facet(tok: _Tokens, base: int, j: int) -> Facet:
-    head = tok.numbers(tok.next_line(f"facet {j}"), int, f"facet {j}")
-    where = f"{tok.path}:{tok.line_no[tok.pos - 1]}"
-    n_polygons, n_holes = head[0], head[1] if len(head) > 1 else 0
-    loops = [_loop(tok, tok.next_line(f"facet {j} polygon {k}"), base, f"facet {j} polygon {k}")
+def _poly_facet(lines: Lines, base: int, j: int) -> Facet:
+    head = lines.next(f"facet {j}")
+    n_polygons = head.count(0, f"the polygon count of facet {j}")
+    n_holes = head.count(1, f"the hole count of facet {j}") if len(head.tokens) > 1 else 0
+    loops = [_loop(lines.next(f"facet {j} polygon {k}"), base, f"facet {j} polygon {k}")
              for k in range(n_polygons)]
-    rows = [tok.numbers(tok.next_line(f"facet {j} hole {k}")[:4], float, f"facet {j} hole")
-            for k in range(n_holes)]
-    return Facet(loops, np.array([r[1:4] for r in rows], dtype=np.float64).reshape(-1, 3), where)
+    holes = [_floats(lines.next(f"facet {j} hole {k}"), 1, 3, f"facet {j} hole {k}") for k in range(n_holes)]
+    return Facet(loops, np.array(holes, dtype=np.float64).reshape(-1, 3), f"{head.file}:{head.number}")
 
 
-def _point_list(tok: _Tokens, what: str, cols: int) -> np.ndarray:
-    n = tok.numbers(tok.next_line(f"the {what} list")[:1], int, f"the {what} list")[0]
-    rows = [tok.numbers(tok.next_line(f"{what} {k}")[: 1 + cols], float, f"{what} {k}") for k in range(n)]
-    if any(len(r) < 1 + cols for r in rows):
-        raise tok.error(f"a {what} line needs an index and {cols} numbers")
-    return np.array([r[1:] for r in rows], dtype=np.float64).reshape(-1, cols)
+def _point_list(lines: Lines, what: str, cols: int) -> np.ndarray:
+    n = lines.next(f"the {what} list").count(0, f"the number of {what}s")
+    rows = [_floats(lines.next(f"{what} {k}"), 1, cols, f"{what} {k}") for k in range(n)]
+    return np.array(rows, dtype=np.float64).reshape(-1, cols)
 
 
 READERS = {".off": _read_off, ".obj": _read_obj, ".ply": _read_ply, ".stl": _read_stl,
