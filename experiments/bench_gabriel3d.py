@@ -41,13 +41,13 @@ COLUMNS = ["input", "method", "status", "points", "boundary_steiner", "steiner",
 
 def measure(name: str, method: str, plc, mesh, status: str, seconds: float) -> dict[str, Any]:
     """One CSV row: counts of the mesh and its exact Gabriel check."""
-    d = check_gabriel(mesh).to_dict()
+    report = check_gabriel(mesh)
     n = len(plc.points)
     bverts = np.unique(mesh.boundary_faces)
     return {"input": name, "method": method, "status": status, "points": len(mesh.points),
             "boundary_steiner": int((bverts >= n).sum()), "steiner": len(mesh.points) - n,
-            "boundary_faces": len(mesh.boundary_faces), "encroached_facets": d["encroached_facets"],
-            "encroached_segments": d["encroached_segments"], "seconds": round(seconds, 3)}
+            "boundary_faces": len(mesh.boundary_faces), "encroached_facets": len(report.faces),
+            "encroached_segments": len(report.segments), "seconds": round(seconds, 3)}
 
 
 def run_backend(name: str, plc, method: str, backend: str, **options) -> dict[str, Any]:
