@@ -154,6 +154,19 @@ def test_poly_facets_with_holes_and_regions(tmp_path):
     assert (4, 6) not in seg and (5, 7) not in seg  # a diagonal of the top square is flat
 
 
+def test_poly_dangling_segment_inside_a_facet(tmp_path):
+    # the top facet (file line "1 0 2": 1 polygon, marker 2) gets a second polygon of 2 vertices, its diagonal
+    # 5-7 (1-based): the facet's triangulation must use it, and it becomes a PLC segment (0-based (4, 6))
+    closed = POLY_BOX_WITH_SQUARE_HOLE.replace("7 1\n2 1 0\n", "8 1\n1 0 5\n4 13 14 15 16\n2 1 0\n")
+    text = closed.replace("1 0 2\n4 5 6 7 8\n", "2 0 2\n4 5 6 7 8\n2 5 7\n")
+    (tmp_path / "d.poly").write_text(text)
+    plc = load_plc(tmp_path / "d.poly")
+    top = np.sort(plc.triangles[plc.facet_ids == 2], axis=1).tolist()
+    assert sorted(top) == [[4, 5, 6], [4, 6, 7]]
+    seg = {tuple(s) for s in plc.segments.tolist()}
+    assert len(seg) == 25 and (4, 6) in seg
+
+
 def test_smesh_and_node_file(tmp_path):
     (tmp_path / "t.node").write_text("4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n")
     (tmp_path / "t.smesh").write_text("0 3 0 0\n4 1\n3 0 2 1 5\n3 0 1 3 5\n3 0 3 2 5\n3 1 2 3 5\n0\n0\n")

@@ -122,7 +122,7 @@ _STL_RECORD = np.dtype([("normal", "<f4", 3), ("v", "<f4", (3, 3)), ("attr", "<u
 def _read_stl(path: Path) -> RawInput:
     data = path.read_bytes()
     if not data.strip():
-        raise InvalidInputError(f"empty file {path}")
+        raise InvalidInputError(f"{path}: the file is empty")
     n = int.from_bytes(data[80:84], "little") if len(data) >= 84 else -1
     if n >= 0 and 84 + 50 * n == len(data):  # binary (the header may still start with "solid")
         corners = np.frombuffer(data, dtype=_STL_RECORD, count=n, offset=84)["v"].reshape(-1, 3)
