@@ -11,7 +11,8 @@ diametral sphere) is run on the mesh produced:
 
 Columns: input, method, status, points, boundary_steiner (boundary-face vertices that are not input points),
 steiner (all output points that are not input points), boundary_faces, encroached_facets, encroached_segments
-("n/a" for fTetWild, whose output does not mark segments), seconds. CSV to experiments/results/bench_gabriel3d.csv, and a table on stdout.
+("n/a" for fTetWild, whose output does not mark segments), seconds. CSV to
+experiments/results/bench_gabriel3d.csv, and a table on stdout.
 
 Run: ``PYTHONPATH=src .venv/bin/python experiments/bench_gabriel3d.py [--quick] [files...]``
 (--quick: inputs up to 500 triangles, our refinement limited to 20 s and 2,000 points).
@@ -48,7 +49,8 @@ def measure(name: str, method: str, plc, mesh, status: str, seconds: float) -> d
             "boundary_steiner": int((bverts >= n).sum()), "steiner": len(mesh.points) - n,
             "boundary_faces": len(mesh.boundary_faces), "encroached_facets": len(report.faces),
             # fTetWild does not say which of its edges are segments: nothing to check there
-            "encroached_segments": len(report.segments) if len(mesh.segments) else "n/a", "seconds": round(seconds, 3)}
+            "encroached_segments": len(report.segments) if len(mesh.segments) else "n/a",
+            "seconds": round(seconds, 3)}
 
 
 def run_backend(name: str, plc, method: str, backend: str, **options) -> dict[str, Any]:
