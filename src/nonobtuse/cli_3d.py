@@ -74,7 +74,7 @@ def run_check3d(args: argparse.Namespace) -> int:
 
 
 def run_refine3d(args: argparse.Namespace) -> int:
-    from nonobtuse.mesh3d import check_gabriel, load_plc, refine_gabriel, write_tetmesh
+    from nonobtuse.mesh3d import check_gabriel, control_volumes3d, load_plc, refine_gabriel, write_tetmesh
 
     t0 = time.perf_counter()
     plc = load_plc(args.input, fix_orientation=args.fix_orientation)
@@ -86,7 +86,8 @@ def run_refine3d(args: argparse.Namespace) -> int:
     # Convergence is certified by the exact check of the mesh as written, not taken from the status alone.
     facets, segments = encroached_counts(check_gabriel(result.mesh))
     stats = {**result.stats, "status": result.status, "encroached_facets": facets,
-             "encroached_segments": segments, "seconds": time.perf_counter() - t0}
+             "encroached_segments": segments, "seconds": time.perf_counter() - t0,
+             "negative_couplings": control_volumes3d(result.mesh).negative_couplings}
     write_tetmesh(replace(result.mesh, stats={**result.mesh.stats, **stats}), args.output)
     print(f"refine3d: {result.status} after {stats['seconds']:.2f} s; wrote {args.output}", file=sys.stderr)
     _print({"input": args.input, "output": args.output, **stats}, args.json)
