@@ -160,7 +160,7 @@ def plot(rows: list[dict], path: Path) -> None:
         ax.set_yscale("log")
         ax.set_xscale("log")
         ax.set_xlabel("theta (degrees)")
-        ax.set_ylabel("Steiner points (hollow: not converged)")
+        ax.set_ylabel("Steiner points (0 drawn at 0.5; hollow: not converged)")
         legend(ax, fontsize=7)
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
