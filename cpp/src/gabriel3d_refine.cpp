@@ -48,6 +48,7 @@ class Refiner {
 
  private:
   std::optional<Stop> budget_left() const;
+  bool out_of_time() const { return seconds() > o_.time_limit; }
   std::vector<Key> encroached_subsegments() const;
   std::vector<SubfacetRef> encroached_subfacets() const;
   bool encroached(int a, int b, int c) const {
@@ -71,15 +72,17 @@ class Refiner {
 std::optional<Stop> Refiner::budget_left() const {
   if (steiner_on_segments + steiner_on_facets >= o_.max_steiner)
     return Stop{Refine3Status::BudgetExhausted, "max_steiner (" + std::to_string(o_.max_steiner) + ") reached"};
-  if (seconds() > o_.time_limit)
+  if (out_of_time())
     return Stop{Refine3Status::BudgetExhausted, "time_limit (" + std::to_string(o_.time_limit) + " s) reached"};
   return std::nullopt;
 }
 
 std::vector<Key> Refiner::encroached_subsegments() const {
   std::vector<Key> out;
-  for (const auto& [sub, parent] : s_.subsegments)
+  for (const auto& [sub, parent] : s_.subsegments) {
     if (encroached(sub.first, sub.second, -1)) out.push_back(sub);
+    if (out_of_time()) break;  // run() stops at its next budget check
+  }
   return out;
 }
 
@@ -93,6 +96,7 @@ std::vector<SubfacetRef> Refiner::encroached_subfacets() const {
       if (CGAL::collinear(s_.points[a], s_.points[b], s_.points[c])) continue;  // rounding; left to the final check
       if (encroached(a, b, c)) out.push_back(canonical({static_cast<int>(f), a, b, c}));
     }
+    if (out_of_time()) break;
   }
   // The face order of a triangulation depends on where the walks of point location went (randomized): sort.
   std::sort(out.begin(), out.end());
@@ -228,6 +232,7 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
 
 std::optional<Stop> Refiner::run() {
   for (;;) {
+    if (auto stop = budget_left()) return stop;
     bool progress = false;
     // Level 1: subsegments, until none is encroached.
     for (auto subs = encroached_subsegments(); !subs.empty(); subs = encroached_subsegments()) {
