@@ -180,23 +180,25 @@ Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex&
   const P3 &pa = points[a], &pb = points[b];
   SearchBall ball = c < 0 ? search_ball(pa, pb) : search_ball(pa, pb, points[c]);
   P3 center(ball.center[0], ball.center[1], ball.center[2]);
-  if (ball.everything) center = c < 0 ? CGAL::midpoint(pa, pb) : CGAL::circumcenter(pa, pb, points[c]);
+  if (ball.everything) center = c < 0 ? CGAL::midpoint(pa, pb) : CGAL::centroid(pa, pb, points[c]);
   double radius = std::sqrt(CGAL::to_double(CGAL::squared_distance(center, pa)));
-  Encroachment best;
+  // Candidates by decreasing floating-point depth; the first one the exact predicate confirms is reported. Deep
+  // encroachers are confirmed at once, so a big sphere over many points costs one exact test, not one per point.
+  std::vector<std::pair<double, int>> found;
   index.for_each_in(ball, [&](int t) {
     if (t == a || t == b || t == c) return;
-    if (candidates) ++*candidates;
+    double depth = 1.0 - std::sqrt(CGAL::to_double(CGAL::squared_distance(center, points[t]))) / radius;
+    found.emplace_back(-depth, t);
+  });
+  if (candidates) *candidates += found.size();
+  std::sort(found.begin(), found.end());
+  for (const auto& [minus_depth, t] : found) {
     const P3& pt = points[t];
     bool inside = c < 0 ? CGAL::side_of_bounded_sphere(pa, pb, pt) == CGAL::ON_BOUNDED_SIDE
                         : CGAL::side_of_bounded_sphere(pa, pb, points[c], pt) == CGAL::ON_BOUNDED_SIDE;
-    if (!inside) return;
-    double depth = 1.0 - std::sqrt(CGAL::to_double(CGAL::squared_distance(center, pt))) / radius;
-    if (best.vertex < 0 || depth > best.depth || (depth == best.depth && t < best.vertex)) {
-      best.vertex = t;
-      best.depth = depth;
-    }
-  });
-  return best;
+    if (inside) return {-1, t, -minus_depth};
+  }
+  return {};
 }
 
 }  // namespace nonobtuse::gabriel3d

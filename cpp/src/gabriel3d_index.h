@@ -90,8 +90,9 @@ void PointIndex::for_each_in(const SearchBall& ball, Visit&& visit) const {
   }
 }
 
-// The deepest point strictly inside the diametral sphere of segment ab (c == -1) or triangle abc, other than the
-// simplex's own vertices; index == -1 when the sphere is empty. Exact decisions; depth in floating point.
+// The point strictly inside the diametral sphere of segment ab (c == -1) or triangle abc, other than the simplex's
+// own vertices, that is deepest by floating-point depth among those the exact predicate confirms (exact ties in
+// depth are vanishingly rare and only change which encroacher is named); vertex == -1 when the sphere is empty.
 Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex& index, int a, int b, int c,
                                 std::size_t* candidates = nullptr);
 

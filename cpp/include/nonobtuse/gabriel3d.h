@@ -22,7 +22,7 @@ using Tetrahedron = std::array<int, 4>;  // indices, positively oriented
 // A boundary simplex (face or segment) whose open diametral sphere holds a mesh vertex.
 struct Encroachment {
   int index = -1;      // row in the faces (or segments) that were checked
-  int vertex = -1;     // the deepest encroaching vertex
+  int vertex = -1;     // the deepest encroaching vertex (by floating-point depth; encroachment itself is exact)
   double depth = 0.0;  // 1 - |vertex - center| / radius, in (0, 1]; floating point, for display only
 };
 
