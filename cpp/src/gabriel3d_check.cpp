@@ -176,7 +176,7 @@ int PointIndex::nearest(const P3& q) const {
 }
 
 Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex& index, int a, int b, int c,
-                                std::size_t* candidates) {
+                                std::size_t* candidates, const std::function<bool(int)>& ignore) {
   const P3 &pa = points[a], &pb = points[b];
   SearchBall ball = c < 0 ? search_ball(pa, pb) : search_ball(pa, pb, points[c]);
   P3 center(ball.center[0], ball.center[1], ball.center[2]);
@@ -186,7 +186,7 @@ Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex&
   // encroachers are confirmed at once, so a big sphere over many points costs one exact test, not one per point.
   std::vector<std::pair<double, int>> found;
   index.for_each_in(ball, [&](int t) {
-    if (t == a || t == b || t == c) return;
+    if (t == a || t == b || t == c || (ignore && ignore(t))) return;
     double depth = 1.0 - std::sqrt(CGAL::to_double(CGAL::squared_distance(center, points[t]))) / radius;
     found.emplace_back(-depth, t);
   });

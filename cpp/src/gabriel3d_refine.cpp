@@ -54,6 +54,18 @@ class Refiner {
   bool encroached(int a, int b, int c) const {
     return deepest_encroacher(s_.points, index_, a, b, c).vertex >= 0;
   }
+  // A subfacet of facet f encroached by a point not on f. Points on f are left out: in exact arithmetic a
+  // constrained Delaunay triangle holds no visible facet vertex in its circumcircle, so such encroachers are
+  // rounding artifacts of the 2D frame (near-cocircular points; splitting for them wasted hundreds of points on
+  // a regular 10-gon) or lie behind a subsegment they encroach (then that subsegment is split). The exact check
+  // of the final mesh, whose facet faces are Delaunay in 3D, is authoritative; repair() fixes what it finds.
+  bool subfacet_encroached(int f, int a, int b, int c) const {
+    auto on_f = [&](int t) {
+      const auto& on = s_.point_facets[t];
+      return std::find(on.begin(), on.end(), f) != on.end();
+    };
+    return deepest_encroacher(s_.points, index_, a, b, c, nullptr, on_f).vertex >= 0;
+  }
   // Splits `sub` if it still exists and (unless `always`) is still encroached by a vertex.
   std::optional<Stop> split(const Key& sub, bool always, bool* inserted);
   // Splits subfacet f (a face of facet f.facet's triangulation, or only a triangle on it when !require_face).
@@ -94,7 +106,7 @@ std::vector<SubfacetRef> Refiner::encroached_subfacets() const {
       if (!fh->info().in_domain) continue;
       int a = fh->vertex(0)->info(), b = fh->vertex(1)->info(), c = fh->vertex(2)->info();
       if (CGAL::collinear(s_.points[a], s_.points[b], s_.points[c])) continue;  // rounding; left to the final check
-      if (encroached(a, b, c)) out.push_back(canonical({static_cast<int>(f), a, b, c}));
+      if (subfacet_encroached(static_cast<int>(f), a, b, c)) out.push_back(canonical({static_cast<int>(f), a, b, c}));
     }
     if (out_of_time()) break;
   }
@@ -190,7 +202,9 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
   Facet& facet = *s_.facets[r.facet];
   FacetCDT::Face_handle fh;
   auto va = facet.vertex.at(r.a), vb = facet.vertex.at(r.b), vc = facet.vertex.at(r.c);
-  if ((!facet.cdt.is_face(va, vb, vc, fh) && require_face) || !encroached(r.a, r.b, r.c)) return std::nullopt;
+  if (require_face ? !facet.cdt.is_face(va, vb, vc, fh) || !subfacet_encroached(r.facet, r.a, r.b, r.c)
+                   : !encroached(r.a, r.b, r.c))
+    return std::nullopt;
   if (!require_face) fh = va->face();
   const P3 center = CGAL::circumcenter(s_.points[r.a], s_.points[r.b], s_.points[r.c]);
   // A circumcenter that encroaches a subsegment of this facet is not inserted: the subsegments are split instead.
