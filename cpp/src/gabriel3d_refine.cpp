@@ -54,17 +54,21 @@ class Refiner {
   bool encroached(int a, int b, int c) const {
     return deepest_encroacher(s_.points, index_, a, b, c).vertex >= 0;
   }
-  // A subfacet of facet f encroached by a point not on f. Points on f are left out: in exact arithmetic a
-  // constrained Delaunay triangle holds no visible facet vertex in its circumcircle, so such encroachers are
-  // rounding artifacts of the 2D frame (near-cocircular points; splitting for them wasted hundreds of points on
-  // a regular 10-gon) or lie behind a subsegment they encroach (then that subsegment is split). The exact check
-  // of the final mesh, whose facet faces are Delaunay in 3D, is authoritative; repair() fixes what it finds.
+  // A subfacet (a, b, c) of facet f encroached in 3D, not counting points of f that the facet's triangulation
+  // sees outside the subfacet's circumcircle (exact 2D test in its frame). In exact arithmetic the two tests agree
+  // for points in the facet's plane; they differ only through the rounding of the frame and of Steiner points
+  // (near-cocircular points, e.g. a regular 10-gon, where splitting for them wasted hundreds of points). Points
+  // of f inside the 2D circumcircle lie behind a subsegment and do count. The exact check of the final mesh is
+  // authoritative either way; repair() fixes what it finds.
   bool subfacet_encroached(int f, int a, int b, int c) const {
-    auto on_f = [&](int t) {
-      const auto& on = s_.point_facets[t];
-      return std::find(on.begin(), on.end(), f) != on.end();
+    const Facet& facet = *s_.facets[f];
+    const Q2 &pa = facet.vertex.at(a)->point(), &pb = facet.vertex.at(b)->point(), &pc = facet.vertex.at(c)->point();
+    auto artifact = [&](int t) {
+      auto it = facet.vertex.find(t);
+      return it != facet.vertex.end() &&
+             CGAL::side_of_bounded_circle(pa, pb, pc, it->second->point()) != CGAL::ON_BOUNDED_SIDE;
     };
-    return deepest_encroacher(s_.points, index_, a, b, c, nullptr, on_f).vertex >= 0;
+    return deepest_encroacher(s_.points, index_, a, b, c, nullptr, artifact).vertex >= 0;
   }
   // Splits `sub` if it still exists and (unless `always`) is still encroached by a vertex.
   std::optional<Stop> split(const Key& sub, bool always, bool* inserted);
