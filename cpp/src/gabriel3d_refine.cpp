@@ -32,8 +32,9 @@ SubfacetRef canonical(SubfacetRef r) {
 
 class Refiner {
  public:
-  Refiner(PlcState& s, const Refine3Options& o)
-      : s_(s), o_(o), index_(s.points), start_(std::chrono::steady_clock::now()) {}
+  Refiner(PlcState& s, const Refine3Options& o, bool ignore_frame_artifacts)
+      : s_(s), o_(o), ignore_frame_artifacts_(ignore_frame_artifacts), index_(s.points),
+        start_(std::chrono::steady_clock::now()) {}
 
   // Runs to convergence of the subfacets and subsegments, or to a stop.
   std::optional<Stop> run();
@@ -65,7 +66,7 @@ class Refiner {
     const Q2 &pa = facet.vertex.at(a)->point(), &pb = facet.vertex.at(b)->point(), &pc = facet.vertex.at(c)->point();
     auto artifact = [&](int t) {
       auto it = facet.vertex.find(t);
-      return it != facet.vertex.end() &&
+      return ignore_frame_artifacts_ && it != facet.vertex.end() &&
              CGAL::side_of_bounded_circle(pa, pb, pc, it->second->point()) != CGAL::ON_BOUNDED_SIDE;
     };
     return deepest_encroacher(s_.points, index_, a, b, c, nullptr, artifact).vertex >= 0;
@@ -80,6 +81,7 @@ class Refiner {
 
   PlcState& s_;
   const Refine3Options& o_;
+  bool ignore_frame_artifacts_;
   PointIndex index_;
   std::chrono::steady_clock::time_point start_;
   long last_encroached_segments_ = 0, last_encroached_facets_ = 0;
@@ -313,12 +315,14 @@ const char* to_string(Refine3Status status) {
   return "stalled";
 }
 
-Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options) {
+namespace {
+
+Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool ignore_frame_artifacts) {
   using namespace gabriel3d;
   PlcState s = build_plc_state(plc);
   Refine3Result out;
   out.diagnosis.smallest_angles = smallest_input_angles(s);
-  Refiner refiner(s, options);
+  Refiner refiner(s, options, ignore_frame_artifacts);
   // Refine the subfacets, restrict the Delaunay tetrahedralization, check it exactly; where its boundary faces
   // differ from the subfacets (cospherical points) and are encroached, split those too and start over.
   std::optional<Stop> stop;
@@ -362,6 +366,22 @@ Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options) {
   }
   out.seconds = refiner.seconds();
   return out;
+}
+
+}  // namespace
+
+// First without the frame-rounding encroachers (fewest Steiner points). When that stalls (the Delaunay faces
+// that cover a facet then sit on rounding-level slivers whose circumcenters coincide with existing vertices),
+// once more from the input counting them: their extra points usually break the near-cospherical ties.
+Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options) {
+  Refine3Result first = refine_once(plc, options, true);
+  if (first.status != Refine3Status::Stalled) return first;
+  Refine3Options rest = options;
+  rest.time_limit = std::max(0.0, options.time_limit - first.seconds);
+  Refine3Result second = refine_once(plc, rest, false);
+  second.seconds += first.seconds;
+  second.diagnosis.stop_reason += " (second attempt; the first stalled: " + first.diagnosis.stop_reason + ")";
+  return second;
 }
 
 }  // namespace nonobtuse
