@@ -26,16 +26,19 @@ def convex_point_set(seed: int, n_hull: int, n_inner: int) -> Domain:
 
 
 def star_with_hole(seed: int, n_outer: int, n_inner: int) -> Domain:
-    """A star-shaped (generally non-convex) polygon with vertex radii in [500, 1000] at sorted angles, a
-    square hole [-100, 100]^2, and n_inner points at radius in (150, 450): inside the polygon (which contains
-    the disk of radius 500 cos(pi / 8) > 460 as n_outer >= 8) and outside the hole (whose corners are at
-    radius 141.5)."""
+    """A star-shaped (generally non-convex) polygon with vertex radii in [500, 1000], a square hole
+    [-100, 100]^2, and n_inner points at radius in (150, 400).
+
+    Vertex i sits at angle (2 pi / n)(i + u_i) with u_i in [0, 1/2): consecutive angles differ by at least
+    pi / n, so at radius >= 500 rounding to integers (moves < 1) cannot reorder them and the polygon is simple.
+    Gaps are below 3 pi / n <= 3 pi / 8, so the polygon contains the disk of radius 500 cos(3 pi / 16) > 415:
+    the inner points are inside it and outside the hole (whose corners are at radius 141.5)."""
     rng = np.random.default_rng(seed)
-    a = np.sort(rng.uniform(0, 2 * np.pi, n_outer))
+    a = 2 * np.pi / n_outer * (np.arange(n_outer) + rng.uniform(0, 0.5, n_outer))
     rad = rng.uniform(500, 1000, n_outer)
     outer = np.round(np.c_[rad * np.cos(a), rad * np.sin(a)])
     hole = np.array([[-100, -100], [100, -100], [100, 100], [-100, 100]], dtype=float)
-    r, b = rng.uniform(150, 450, n_inner), rng.uniform(0, 2 * np.pi, n_inner)
+    r, b = rng.uniform(150, 400, n_inner), rng.uniform(0, 2 * np.pi, n_inner)
     inner = np.unique(np.round(np.c_[r * np.cos(b), r * np.sin(b)]), axis=0)
     pts = np.r_[outer, hole, inner]
     n = len(outer)
