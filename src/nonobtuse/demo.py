@@ -4,7 +4,8 @@ Four layers separated by three wavy interfaces (interior constraints), a wavy to
 with its own region attribute and conductivity. Every curve is sampled at its own spacing, as digitised
 horizons are, so the constrained Delaunay triangulation is full of flat triangles: obtuse angles on the
 boundary and on the interfaces, hence wrong-sign control-volume coefficients. The refinement step extends
-:func:`run` with one :func:`stage_report` call on the refined mesh.
+:func:`run` then refines the boundary and the interfaces with the fewest Steiner points it can and reports the
+same figures again, beside the lower bound and Triangle -pD's count for the same domain.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from nonobtuse.check import KINDS, check_mesh
 from nonobtuse.control_volumes import control_volumes
 from nonobtuse.domain import Domain
 from nonobtuse.mesh import Mesh
+from nonobtuse.refine import refine
 from nonobtuse.triangulate import triangulate
 
 LENGTH_M = 4000.0
@@ -80,5 +82,20 @@ def run(out: Callable[[str], None] = print) -> int:
     domain = cross_section()
     out(f"{domain.source}: {LENGTH_M / 1000:g} km long, {CURVES[-1][0]:g} m thick, {len(CURVES) - 2} "
         f"interfaces, {len(domain.points)} points, {len(domain.segments)} segments")
-    out(stage_report("constrained Delaunay triangulation", triangulate(domain)))
+    out(stage_report("before: constrained Delaunay triangulation", triangulate(domain)))
+    result = refine(domain)
+    s = result.stats
+    out(stage_report(f"after: refine (greedy, {s['status']} in {s['seconds']:.2f} s)", result.mesh))
+    out(f"  Steiner points: {s['steiner_points']} (lower bound {s['lower_bound']})")
+    out(f"  Triangle -pD on the same domain: {_triangle_pd_summary(domain)}")
     return 0
+
+
+def _triangle_pd_summary(domain: Domain) -> str:
+    from nonobtuse.peers import triangle_pd
+
+    try:
+        steiner, seconds = triangle_pd(domain)
+    except ImportError:
+        return "not measured (the 'triangle' package is not installed; pip install 'nonobtuse[dev]')"
+    return f"{steiner} Steiner points ({seconds:.2f} s)"
