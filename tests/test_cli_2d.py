@@ -75,3 +75,18 @@ def test_demo_reports(capsys):
     out = capsys.readouterr().out
     assert "constrained Delaunay triangulation" in out
     assert "wrong-sign coefficients (exact)" in out
+    assert "after: refine (greedy, converged" in out and "Triangle -pD on the same domain" in out
+
+
+def test_demo_refinement_removes_every_wrong_sign_boundary_coefficient():
+    from nonobtuse import control_volumes, refine, triangulate
+    from nonobtuse.demo import CONDUCTIVITY, cross_section
+
+    domain = cross_section()
+    before = control_volumes(triangulate(domain), CONDUCTIVITY)
+    result = refine(domain)
+    after = control_volumes(result.mesh, CONDUCTIVITY)
+    boundary = 0  # edge kind index of boundary edges (nonobtuse.check.KINDS)
+    assert (before.kind[before.wrong_sign] == boundary).any()  # the demo starts with a real problem
+    assert not (after.kind[after.wrong_sign] == boundary).any()
+    assert result.stats["steiner_points"] >= result.stats["lower_bound"] > 0
