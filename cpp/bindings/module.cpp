@@ -7,6 +7,8 @@ namespace py = pybind11;
 
 namespace nonobtuse::bindings {
 void bind_mesh2d(py::module_& m);
+void bind_check2d(py::module_& m);
+void bind_validate2d(py::module_& m);
 void bind_refine2d(py::module_& m);
 }
 
@@ -24,5 +26,7 @@ PYBIND11_MODULE(_core, m) {
     }
   });
   nonobtuse::bindings::bind_mesh2d(m);
+  nonobtuse::bindings::bind_check2d(m);
+  nonobtuse::bindings::bind_validate2d(m);
   nonobtuse::bindings::bind_refine2d(m);
 }
