@@ -24,10 +24,10 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(ROOT / "src"), str(ROOT / "tests")]
 
 import triangle  # noqa: E402
-from refine_helpers import SHARED, cgshop_domain  # noqa: E402
 
 import nonobtuse  # noqa: E402
 from nonobtuse import Domain  # noqa: E402
+from refine_helpers import SHARED, cgshop_domain  # noqa: E402
 
 STRATEGIES = ("greedy", "project-flip", "projection")
 
@@ -115,7 +115,10 @@ def main() -> None:
     sizes = [10**3, 10**4] if args.quick else [10**3, 10**4, 10**5, 10**6]
     for n in sizes:
         for gen in (convex, star, thin_layer):
-            run(f"{gen.__name__}_{n}", gen.__name__, gen(n, np.random.default_rng(n)), rows)
+            try:
+                run(f"{gen.__name__}_{n}", gen.__name__, gen(n, np.random.default_rng(n)), rows)
+            except nonobtuse.InvalidInputError as e:  # a generated input that is not a valid domain
+                print(f"{gen.__name__}_{n}: skipped, {e}")
     out = ROOT / "experiments" / "results"
     out.mkdir(parents=True, exist_ok=True)
     with open(out / "bench_refine2d.csv", "w", newline="") as fh:

@@ -18,7 +18,9 @@ def cgshop_domain(path: Path) -> Domain:
     d = json.loads(path.read_text())
     pts = np.c_[d["points_x"], d["points_y"]].astype(np.float64)
     rb = d["region_boundary"]
-    seg = [(rb[i], rb[(i + 1) % len(rb)]) for i in range(len(rb))] + [tuple(c) for c in d["additional_constraints"]]
+    seg = [(rb[i], rb[(i + 1) % len(rb)]) for i in range(len(rb))] + [
+        tuple(c) for c in d["additional_constraints"]
+    ]
     return Domain(points=pts, segments=np.array(seg, dtype=np.int64), source=str(path))
 
 

@@ -62,7 +62,9 @@ def test_convex_point_sets_reach_the_bound_or_theorem_3(seed, n_hull, n_inner):
     check_result(res, domain)
     s = res.stats
     # optimal is True exactly when the bound is attained, or, without interior points, by Theorem 3.
-    no_inner = all(e["edge"][0] < len(domain.points) for e in s["edges"]) and len(s["edges"]) == len(domain.points)
+    no_inner = all(e["edge"][0] < len(domain.points) for e in s["edges"]) and len(s["edges"]) == len(
+        domain.points
+    )
     assert s["optimal"] == (True if s["steiner_points"] == s["lower_bound"] or no_inner else None)
 
 

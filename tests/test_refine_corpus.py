@@ -8,9 +8,9 @@ import json
 from pathlib import Path
 
 import pytest
-from refine_helpers import SHARED, cgshop_domain, obtuse_boundary_sides
 
 import nonobtuse
+from refine_helpers import SHARED, cgshop_domain, obtuse_boundary_sides
 
 PINS = json.loads((Path(__file__).parent / "data" / "refine_corpus.json").read_text())["files"]
 

@@ -64,7 +64,9 @@ enum class Step { Place, Defer, Stuck };
 // Chooses the next Steiner point on `cur` (violated) given the walk's encroachers and nearby sides.
 Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& deferred, Point& p) {
   const Point &s = cur.s->point(), &e = cur.e->point();
-  auto empty = [&](const Point& c) { return subsegment_is_empty(s, c, w.encroachers); };
+  auto empty = [&](const Point& c) {
+    return subsegment_is_empty(s, c, w.encroachers) && st.keeps_triangles_valid(cur, c);
+  };
   auto allowed = [&](const Point& c) { return empty(c) && forbidder(w.nearby, c) == nullptr; };
   Vertex_handle blocker;
   const double t_greedy = greedy_parameter(s, e, w.encroachers, &blocker);
@@ -83,9 +85,9 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
     const Side* f = forbidder(w.nearby, p);
     if (f == nullptr) return Step::Place;
     auto [t_start, t_end] = forbidden_interval(s, e, *f);
-    // An interval starting within 2^-30 |e - s| of s counts as starting at s: s was itself placed at the start of
+    // An interval starting within 2^-20 |e - s| of s counts as starting at s: s was itself placed at the start of
     // f's interval (on f's circle up to rounding), and moving back to it would only creep forward by ulps.
-    if (!in_closed_disk(s, *f) && t_start > 0x1p-30) {
+    if (!in_closed_disk(s, *f) && t_start > 0x1p-20) {
       // Theorem 3: move back to the start of the forbidden interval. Where two intervals touch (the single-point
       // gap of Lemma 2, e.g. the foot of an obtuse apex), the exact gap point is among the candidates.
       if (pick_point(s, e, t_start, allowed, p)) return Step::Place;

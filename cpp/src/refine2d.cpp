@@ -60,7 +60,14 @@ std::string to_string(RefineStrategy s) {
   return "?";
 }
 
-std::string to_string(RefineStatus s) { return s == RefineStatus::Converged ? "converged" : "budget_exhausted"; }
+std::string to_string(RefineStatus s) {
+  switch (s) {
+    case RefineStatus::Converged: return "converged";
+    case RefineStatus::BudgetExhausted: return "budget_exhausted";
+    case RefineStatus::Stalled: return "stalled";
+  }
+  return "?";
+}
 
 RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   auto start = std::chrono::steady_clock::now();
@@ -78,10 +85,31 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
     st.edges[k].lower_bound = st.greedy_count(sides[k], st.walk_diametral_disk(sides[k]).encroachers);
   const bool convex = is_convex_polygon(st);
 
-  switch (options.strategy) {
-    case RefineStrategy::Greedy: refine2d::greedy_refine(st); break;
-    case RefineStrategy::ProjectFlip: refine2d::project_flip(st); break;
-    case RefineStrategy::Projection: refine2d::projection_refine(st); break;
+  auto run = [&] {
+    switch (options.strategy) {
+      case RefineStrategy::Greedy: refine2d::greedy_refine(st); break;
+      case RefineStrategy::ProjectFlip: refine2d::project_flip(st); break;
+      case RefineStrategy::Projection: refine2d::projection_refine(st); break;
+    }
+  };
+  run();
+  // Rescue: a side can be left violated when no double point near the strategy's choice keeps the neighbouring
+  // triangles valid (an apex nearly on the line, a few ulps away). Split such sides near their midpoint, far
+  // from both ends, and run the strategy again; at most 3 rounds.
+  for (int round = 0; round < 3 && st.budget_left(); ++round) {
+    std::vector<Side> stuck;
+    for (const Side& side : st.boundary_sides())
+      if (st.is_violated(side)) stuck.push_back(side);
+    if (stuck.empty()) break;
+    st.fallback_used = true;
+    for (const Side& side : stuck) {
+      refine2d::Point p;
+      auto valid = [&](const refine2d::Point& c) { return st.keeps_triangles_valid(side, c); };
+      if (st.budget_left() && st.is_violated(side) &&
+          refine2d::pick_point(side.s->point(), side.e->point(), 0.5, valid, p))
+        st.split(side, p);
+    }
+    run();
   }
 
   RefineResult2 r;
@@ -90,10 +118,9 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   r.steiner_points = st.placed;
   for (const auto& e : st.edges) r.lower_bound += e.lower_bound;
   r.edges = st.edges;
-  if (r.obtuse_boundary_triangles > 0 && st.budget_left())
-    throw InternalError("refine: " + std::to_string(r.obtuse_boundary_triangles) +
-                        " boundary triangles still obtuse with Steiner budget left (a split was refused)");
-  r.status = r.obtuse_boundary_triangles == 0 ? RefineStatus::Converged : RefineStatus::BudgetExhausted;
+  r.status = r.obtuse_boundary_triangles == 0 ? RefineStatus::Converged
+             : st.budget_left()                 ? RefineStatus::Stalled
+                                                : RefineStatus::BudgetExhausted;
   if (r.status == RefineStatus::Converged && r.steiner_points == r.lower_bound)
     r.optimal = 1;
   else if (r.status == RefineStatus::Converged && options.strategy == RefineStrategy::Greedy && convex &&

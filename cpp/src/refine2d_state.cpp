@@ -155,19 +155,27 @@ std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
   return out;
 }
 
-Vertex_handle State::split(const Side& side, const Point& p) {
+bool State::keeps_triangles_valid(const Side& side, const Point& p) const {
   Face_handle fl = left_face(side);
   if (fl == nullptr) throw InternalError("refine2d: split of an edge that is not a constraint");
   int i = fl->index(apex(side));
   Face_handle fr = fl->neighbor(i);
-  // p must keep both triangles next to the edge counter-clockwise once split (it may be off the line by ulps).
+  // p (possibly off the line by ulps) must keep both triangles next to the edge counter-clockwise once split.
   for (Face_handle f : {fl, fr}) {
     Vertex_handle c = f->vertex(f == fl ? i : fr->index(fl));
     if (cdt.is_infinite(c)) continue;
     auto o = CGAL::orientation(side.s->point(), side.e->point(), c->point());
     if (CGAL::orientation(side.s->point(), p, c->point()) != o || CGAL::orientation(p, side.e->point(), c->point()) != o)
-      return nullptr;
+      return false;
   }
+  return true;
+}
+
+Vertex_handle State::split(const Side& side, const Point& p) {
+  if (!keeps_triangles_valid(side, p)) return nullptr;
+  Face_handle fl = left_face(side);
+  int i = fl->index(apex(side));
+  Face_handle fr = fl->neighbor(i);
   cdt::FaceInfo left = fl->info(), right = fr->info();
   Vertex_handle v = cdt.insert(p, CDT::EDGE, fl, i);
   v->info() = n_input + static_cast<int>(placed);

@@ -70,6 +70,9 @@ class State {
   // (returns nullptr) when p would invert a triangle next to the edge (p off the line by more than its
   // neighbours allow). Cost: O(degree of p) plus the flips.
   Vertex_handle split(const Side& side, const Point& p);
+  // p would keep the two triangles next to the side counter-clockwise after the split (exact; p may be ulps
+  // off the line, and a neighbouring apex nearly on it).
+  bool keeps_triangles_valid(const Side& side, const Point& p) const;
 
   bool budget_left() const { return placed < budget; }
   // Every boundary side pushed on the queue.

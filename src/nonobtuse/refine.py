@@ -13,7 +13,7 @@ from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh import Mesh
 
 STRATEGIES = ("greedy", "project-flip", "projection")
-CONVERGED, BUDGET_EXHAUSTED = "converged", "budget_exhausted"
+CONVERGED, BUDGET_EXHAUSTED, STALLED = "converged", "budget_exhausted", "stalled"
 
 
 @dataclass
@@ -27,7 +27,8 @@ class RefineResult:
             certificate of ``mesh``: 0 when converged), ``edges``: one dict per input boundary edge
             ``{"edge": [a, b], "steiner_points": k, "lower_bound": l}`` (a, b input point indices, the domain on
             the left of a -> b).
-    status: ``"converged"`` or ``"budget_exhausted"`` (then ``mesh`` is the partial result).
+    status: ``"converged"``, ``"budget_exhausted"`` or ``"stalled"`` (budget left, but a violated side admits no
+            double split point keeping its neighbouring triangles valid); ``mesh`` is then the partial result.
     """
 
     mesh: Mesh

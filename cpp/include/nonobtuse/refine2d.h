@@ -14,7 +14,9 @@ enum class RefineStrategy : std::int8_t {
   Projection = 2,   // baseline (paper section 4.1): foot of every encroaching visible vertex, repeated
 };
 
-enum class RefineStatus : std::int8_t { Converged = 0, BudgetExhausted = 1 };
+// Stalled: budget left, but some violated side admits no double split point that keeps its neighbouring
+// triangles valid (even after the midpoint rescue); the partial mesh is returned, as for BudgetExhausted.
+enum class RefineStatus : std::int8_t { Converged = 0, BudgetExhausted = 1, Stalled = 2 };
 
 struct RefineOptions {
   RefineStrategy strategy = RefineStrategy::Greedy;
