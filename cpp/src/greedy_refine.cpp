@@ -7,12 +7,17 @@
 // a forbidden interval: inside the open half-disk of another boundary subsegment f met by the walk, where the
 // point would break f (Figure 5). Then x moves back to the interval's start (Theorem 3's rule).
 //
+// PSLGs (issue 4): an interface or dangling subsegment is swept once for both of its sides (encroachers of both,
+// t* = min over both); a sweep starting at an acute junction puts its first point on a power-of-two shell
+// (concentric_shells.cpp, with the termination argument of that rule).
+//
 // Termination: every step inserts one Steiner point strictly inside the subsegment being refined, and the
 // budget caps the points; a side is deferred at most once (the deferred set), so the queue drains. Within the
 // budget, for convex polygons Theorem 3 bounds the points by the optimum; in general (holes, reflex vertices,
 // interfaces) no polynomial bound is known (paper, Figure 6), hence the budget and the status.
 #include <set>
 
+#include "concentric_shells.h"
 #include "refine2d_state.h"
 
 namespace nonobtuse::refine2d {
@@ -77,6 +82,9 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
   };
   // Paper 4.3: blocked by a boundary vertex whose subsegment is violated: refine that one first.
   if (may_defer && blocker != nullptr && blocked_by_violated_boundary(st, blocker)) return defer();
+  // Concentric shells: from an acute junction the first point goes on a power-of-two shell (concentric_shells.cpp).
+  if (is_acute_junction(st, cur.s, cur.e) && pick_point(s, e, shell_parameter(s, e, t_greedy), allowed, p))
+    return Step::Place;
   double t = t_greedy;
   // Each iteration places a point or moves t strictly back toward s (to a forbidden interval's start, or by a
   // relative 2^-40 when rounding put the start inside the interval again); every candidate is checked exactly.
@@ -111,7 +119,8 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
 // are on its line or just outside), so the first walk's encroachers and nearby sides stay a superset.
 void sweep(State& st, Side cur, std::set<Key>& deferred) {
   DiskWalk w = st.walk_diametral_disk(cur);
-  while (st.budget_left() && st.is_violated(cur)) {
+  // Interfaces: both sides at once (the walk collected both sides' encroachers).
+  while (st.budget_left() && (st.is_violated(cur) || st.is_violated({cur.e, cur.s}))) {
     keep_encroaching(cur.s->point(), cur.e->point(), w.encroachers);
     if (w.encroachers.empty()) throw InternalError("greedy_refine: a violated subsegment without encroacher");
     Point p;
@@ -132,7 +141,12 @@ void greedy_refine(State& st) {
   while (!st.queue.empty() && st.budget_left()) {
     Side side = st.queue.front();
     st.queue.pop_front();
-    if (st.is_violated(side)) sweep(st, side, deferred);
+    if (!st.is_violated(side)) continue;
+    const std::size_t before = st.queue.size();
+    st.propagation.begin(side.s->info(), side.e->info(), st.placed);
+    sweep(st, shell_anchor(st, side), deferred);
+    for (std::size_t i = before; i < st.queue.size(); ++i) st.propagation.queued(st.queue[i].s->info(), st.queue[i].e->info());
+    st.propagation.end(st.placed);
   }
 }
 

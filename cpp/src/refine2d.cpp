@@ -11,8 +11,9 @@ using refine2d::Face_handle;
 using refine2d::Side;
 using refine2d::State;
 
-// Exact certificate of a mesh as returned: the number of boundary segments (one triangle) whose triangle is
-// obtuse at the apex opposite them (CGAL::angle on the stored doubles). Interfaces are issue 4.
+// Exact certificate of a mesh as returned: the number of constrained subsegment sides (one per incident domain
+// triangle: one for a boundary segment, two for an interface or dangling segment) whose triangle is obtuse at the
+// apex opposite the subsegment (CGAL::angle on the stored doubles).
 long long count_obtuse_boundary(const Mesh2& mesh) {
   std::unordered_map<std::uint64_t, std::vector<int>> apexes;  // segment key -> apex of each incident triangle
   auto key = [](int a, int b) {
@@ -28,7 +29,7 @@ long long count_obtuse_boundary(const Mesh2& mesh) {
   long long bad = 0;
   for (const auto& s : mesh.segments) {
     const auto& a = apexes[key(s[0], s[1])];
-    if (a.size() == 1 && CGAL::angle(pt(s[0]), pt(a[0]), pt(s[1])) == CGAL::OBTUSE) ++bad;
+    for (int c : a) bad += CGAL::angle(pt(s[0]), pt(c), pt(s[1])) == CGAL::OBTUSE;
   }
   return bad;
 }
@@ -80,9 +81,14 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   // constraints, so no refinement placing Steiner points on E uses fewer. Edges are disjoint, so the bounds add.
   // (Encroachers are the input vertices reachable inside E's half-disk without crossing a constraint; for a
   // convex domain these are exactly the visible ones.)
-  std::vector<Side> sides = st.boundary_sides();
-  for (std::size_t k = 0; k < sides.size(); ++k)
-    st.edges[k].lower_bound = st.greedy_count(sides[k], st.walk_diametral_disk(sides[k]).encroachers);
+  // An interface edge is one single-edge problem with the encroachers of both sides (the walk collects both).
+  std::vector<bool> bounded(st.edges.size(), false);
+  for (const Side& side : st.boundary_sides()) {
+    int k = st.edge_of(side);
+    if (bounded[k]) continue;
+    bounded[k] = true;
+    st.edges[k].lower_bound = st.greedy_count(side, st.walk_diametral_disk(side).encroachers);
+  }
   const bool convex = is_convex_polygon(st);
 
   auto run = [&] {
@@ -118,6 +124,7 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   r.steiner_points = st.placed;
   for (const auto& e : st.edges) r.lower_bound += e.lower_bound;
   r.edges = st.edges;
+  r.diagnosis = refine2d::diagnose(st);
   r.status = r.obtuse_boundary_triangles == 0 ? RefineStatus::Converged
              : st.budget_left()                 ? RefineStatus::Stalled
                                                 : RefineStatus::BudgetExhausted;

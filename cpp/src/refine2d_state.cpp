@@ -25,8 +25,8 @@ State::State(const Domain2& d, long long b) : domain(d), n_input(static_cast<int
   cdt::build(cdt, domain);
   for (const Side& side : boundary_sides()) {
     int a = side.s->info(), c = side.e->info();
-    edge_index_[{std::min(a, c), std::max(a, c)}] = static_cast<int>(edges.size());
-    edges.push_back({{a, c}, 0, 0});
+    if (edge_index_.emplace(std::make_pair(std::min(a, c), std::max(a, c)), static_cast<int>(edges.size())).second)
+      edges.push_back({{a, c}, 0, 0});  // an interface appears once, as (min, max)
   }
 }
 
@@ -40,8 +40,7 @@ Face_handle State::left_face(const Side& side) const {
 
 bool State::is_boundary_side(const Side& side) const {
   Face_handle f = left_face(side);
-  if (f == nullptr || !f->info().in_domain) return false;
-  return !f->neighbor(f->index(apex(side)))->info().in_domain;
+  return f != nullptr && f->info().in_domain;
 }
 
 Vertex_handle State::apex(const Side& side) const {
@@ -82,21 +81,29 @@ DiskWalk State::walk_diametral_disk(const Side& side) const {
   double cx = 0.5 * (s.x() + e.x()), cy = 0.5 * (s.y() + e.y());
   double r2 = 0.25 * CGAL::to_double(CGAL::squared_distance(s, e));
   double reach = r2 * (1 + 1e-9) + 1e-300;  // pruning slack: walk a little too far rather than too little
-  std::vector<Face_handle> stack{left_face(side)};
-  std::unordered_set<Face_handle> seen{stack.back()};
+  const Side reverse{side.e, side.s};
+  const bool left_domain = is_boundary_side(side), right_domain = is_boundary_side(reverse);
+  std::vector<Face_handle> stack;
+  if (left_domain) stack.push_back(left_face(side));
+  if (right_domain) stack.push_back(left_face(reverse));
+  std::unordered_set<Face_handle> seen(stack.begin(), stack.end());
   std::unordered_set<Vertex_handle> found;
+  auto on_domain_side = [&](const Point& q) {
+    return (left_domain && encroaches(s, e, q)) || (right_domain && encroaches(e, s, q));
+  };
   while (!stack.empty()) {
     Face_handle f = stack.back();
     stack.pop_back();
     for (int i = 0; i < 3; ++i) {
       Vertex_handle v = f->vertex(i);
-      if (v != side.s && v != side.e && !cdt.is_infinite(v) && !found.count(v) && encroaches(s, e, v->point())) {
+      if (v != side.s && v != side.e && !cdt.is_infinite(v) && !found.count(v) && on_domain_side(v->point())) {
         found.insert(v);
         out.encroachers.push_back(v);
       }
       if (f->is_constrained(i)) {
         Side other{f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))};
-        if (!same_side(other, side) && is_boundary_side(other)) out.nearby.push_back(other);
+        if (!same_side(other, side) && !same_side(other, reverse) && is_boundary_side(other))
+          out.nearby.push_back(other);
         continue;
       }
       Face_handle g = f->neighbor(i);
@@ -197,8 +204,10 @@ Vertex_handle State::split(const Side& side, const Point& p) {
       queue.push_back({opposite.e, opposite.s});
     }
   } while (++fc != done);
-  queue.push_back({side.s, v});
-  queue.push_back({v, side.e});
+  for (Side sub : {Side{side.s, v}, Side{v, side.e}}) {  // both orientations: an interface has two sides
+    queue.push_back(sub);
+    queue.push_back({sub.e, sub.s});
+  }
   return v;
 }
 
@@ -228,12 +237,12 @@ double greedy_parameter(const Point& s, const Point& e, const std::vector<Vertex
 }
 
 void keep_encroaching(const Point& s, const Point& e, std::vector<Vertex_handle>& q) {
-  q.erase(std::remove_if(q.begin(), q.end(), [&](Vertex_handle v) { return !encroaches(s, e, v->point()); }),
+  q.erase(std::remove_if(q.begin(), q.end(), [&](Vertex_handle v) { return !inside_diametral_disk(s, e, v->point()); }),
           q.end());
 }
 
 bool subsegment_is_empty(const Point& s, const Point& p, const std::vector<Vertex_handle>& q) {
-  return std::none_of(q.begin(), q.end(), [&](Vertex_handle v) { return encroaches(s, p, v->point()); });
+  return std::none_of(q.begin(), q.end(), [&](Vertex_handle v) { return inside_diametral_disk(s, p, v->point()); });
 }
 
 int State::greedy_count(const Side& side, std::vector<Vertex_handle> q) const {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cdt.h"
+#include "refine2d_diagnosis.h"
 #include "nonobtuse/refine2d.h"
 
 namespace nonobtuse::refine2d {
@@ -47,8 +48,8 @@ class State {
 
   // The face on the left of s -> e, or nullptr when (s, e) is not a constrained edge of the CDT (anymore).
   Face_handle left_face(const Side& side) const;
-  // A constrained subsegment with a domain triangle on its left and none on its right. (Issue 4 relaxes this to
-  // "a domain triangle on its left" so that both sides of an interface are refined.)
+  // A constrained subsegment with a domain triangle on its left (issue 4: both sides of an interface or of a
+  // dangling segment are boundary sides, each refined on its own; an outer boundary edge has one).
   bool is_boundary_side(const Side& side) const;
   // A boundary side whose triangle is obtuse at the apex (exact: CGAL::angle(s, apex, e) == OBTUSE).
   bool is_violated(const Side& side) const;
@@ -57,9 +58,10 @@ class State {
   // Every boundary side of the current CDT.
   std::vector<Side> boundary_sides() const;
 
-  // Vertices strictly inside the open diametral half-disk of `side` (exact: left of s -> e and
-  // angle(s, q, e) == OBTUSE), found by walking from the side's triangle across unconstrained edges into every
-  // triangle meeting the closed disk. Constraints stop the walk, which gives visibility; the float distance
+  // Vertices strictly inside the open diametral disk of the subsegment on a domain side of it (exact: strictly
+  // left of s -> e with the left a domain side, or strictly right with the right a domain side, and
+  // angle(s, q, e) == OBTUSE), found by walking from the subsegment's domain triangles (one for a boundary edge,
+  // two for an interface) across unconstrained edges into every triangle meeting the closed disk. Constraints stop the walk, which gives visibility; the float distance
   // test only prunes the walk (conservatively, with slack): every decision on a vertex is exact.
   // Cost: the number of triangles meeting the disk.
   DiskWalk walk_diametral_disk(const Side& side) const;
@@ -77,8 +79,12 @@ class State {
   bool budget_left() const { return placed < budget; }
   // Every boundary side pushed on the queue.
   void enqueue_all();
-  // The index in `edges` of the input boundary edge a subsegment lies on.
+  // The index in `edges` of the input boundary edge a subsegment lies on (either orientation).
   int edge_of(const Side& side) const;
+  // The index in `edges` of the input edge Steiner point `index` (>= n_input) was placed on.
+  int steiner_edge(int index) const { return steiner_edge_.at(index - n_input); }
+  // Provenance of the work queue (issue 4 diagnosis, refine2d_diagnosis.cpp).
+  Propagation propagation;
   // Single-edge Greedy-Refine (Theorem 2) of `side` against the vertices `q` only, without inserting anything:
   // the number of Steiner points it places, each rounded as the refinement rounds them.
   int greedy_count(const Side& side, std::vector<Vertex_handle> q) const;
@@ -130,6 +136,13 @@ bool pick_point_at_or_before(const Point& s, const Point& e, double t, Valid&& v
 // |q - s|^2). 1 when no q blocks. `blocker` receives the minimizing vertex.
 double greedy_parameter(const Point& s, const Point& e, const std::vector<Vertex_handle>& q,
                         Vertex_handle* blocker = nullptr);
+
+// Exact: q strictly inside the open diametral disk of [s, e], on either side (not on the line). The encroacher
+// lists come from walk_diametral_disk, which only collects vertices on domain sides, so for a boundary edge this
+// is `encroaches`, and for an interface it treats both sides at once (t* = min over both sides' encroachers).
+inline bool inside_diametral_disk(const Point& s, const Point& e, const Point& q) {
+  return CGAL::orientation(s, e, q) != CGAL::COLLINEAR && CGAL::angle(s, q, e) == CGAL::OBTUSE;
+}
 
 // Keeps the vertices of q still encroaching [s, e] (disks of subsegments that share e shrink as s advances).
 void keep_encroaching(const Point& s, const Point& e, std::vector<Vertex_handle>& q);

@@ -26,7 +26,15 @@ class RefineResult:
             or None when unknown), ``seconds`` (float), ``obtuse_boundary_triangles`` (int, the exact
             certificate of ``mesh``: 0 when converged), ``edges``: one dict per input boundary edge
             ``{"edge": [a, b], "steiner_points": k, "lower_bound": l}`` (a, b input point indices, the domain on
-            the left of a -> b).
+            the left of a -> b; an interface or dangling segment, with the domain on both sides, once as a < b),
+            ``diagnosis``: ``junctions`` (at most 10 dicts ``vertex, constraints, min_angle_degrees,
+            steiner_points``: the input vertices where constraints meet that drew the most Steiner points, each
+            point counted at the nearer end of its input edge), ``angles`` (at most 10 dicts ``vertex, edge,
+            neighbour, degrees, steiner_points``: the input angle between ``edge`` and its closest constraint
+            ``neighbour`` at ``vertex``), ``initial_violations`` (violated subsegments that started a cascade),
+            ``propagation_depth`` (the most distinct input edges one initial violation put Steiner points on) and
+            ``propagation_splits`` (the most Steiner points it caused); propagation is tracked by the greedy
+            strategy only.
     status: ``"converged"``, ``"budget_exhausted"`` or ``"stalled"`` (budget left, but a violated side admits no
             double split point keeping its neighbouring triangles valid); ``mesh`` is then the partial result.
     """
@@ -41,12 +49,14 @@ class RefineResult:
 
 
 def refine(domain: Domain, strategy: str = "greedy", max_steiner: int | None = None) -> RefineResult:
-    """Adds Steiner points on the boundary edges of ``domain`` until every boundary triangle of its constrained
-    Delaunay triangulation is nonobtuse opposite its boundary edge.
+    """Adds Steiner points on the constraint segments of ``domain`` until every triangle of its constrained
+    Delaunay triangulation is nonobtuse opposite each constrained edge it has (boundary, interface or dangling).
 
-    domain:      a validated :class:`~nonobtuse.domain.Domain` (closed boundary loops, or ``convex_hull=True``
-                 for point sets: the hull edges are the boundary). Interior constraints (interfaces) are kept
-                 but not refined yet.
+    domain:      a validated :class:`~nonobtuse.domain.Domain`: a PSLG with closed boundary loops (or
+                 ``convex_hull=True`` for point sets: the hull edges are the boundary), holes, interior
+                 interfaces meeting at junctions, dangling segments, isolated points, region attributes. Both
+                 sides of every interior constraint are refined: each must be nonobtuse on its own (each side
+                 carries its own conductivity).
     strategy:    ``"greedy"`` (sensitive Greedy-Refine: the longest empty subsegment from one end, never inside
                  another subsegment's diametral disk; optimal for one edge and for convex polygons),
                  ``"project-flip"`` or ``"projection"`` (the paper's baselines).
@@ -90,6 +100,7 @@ def refine(domain: Domain, strategy: str = "greedy", max_steiner: int | None = N
             {"edge": [int(a), int(b)], "steiner_points": int(k), "lower_bound": int(lb)}
             for a, b, k, lb in np.asarray(r["edges"]).reshape(-1, 4)
         ],
+        "diagnosis": r["diagnosis"],
     }
     m = r["mesh"]
     mesh = Mesh(

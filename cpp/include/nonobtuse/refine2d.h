@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "nonobtuse/refine2d_diagnosis.h"
 #include "nonobtuse/types.h"
 
 namespace nonobtuse {
@@ -24,7 +25,8 @@ struct RefineOptions {
   long long max_steiner = -1;
 };
 
-// Per boundary edge of the input (a constrained edge of the input's CDT with the domain on exactly one side).
+// Per boundary edge of the input: a constrained edge of the input's CDT with the domain on one side (a boundary
+// edge) or on both (an interface or dangling segment, listed once, as (min, max)).
 struct BoundaryEdgeStats {
   Segment edge;            // input point indices (a, b), the domain on the left of a -> b
   int steiner_points = 0;  // Steiner points placed on it
@@ -41,6 +43,7 @@ struct RefineResult2 {
   // edge. 0 whenever status == Converged.
   long long obtuse_boundary_triangles = 0;
   std::vector<BoundaryEdgeStats> edges;
+  RefineDiagnosis2 diagnosis;  // where the Steiner points went (junctions, input angles, propagation)
   double seconds = 0.0;
 };
 
