@@ -15,6 +15,7 @@
 // budget caps the points; a side is deferred at most once (the deferred set), so the queue drains. Within the
 // budget, for convex polygons Theorem 3 bounds the points by the optimum; in general (holes, reflex vertices,
 // interfaces) no polynomial bound is known (paper, Figure 6), hence the budget and the status.
+#include <optional>
 #include <set>
 
 #include "concentric_shells.h"
@@ -26,11 +27,12 @@ namespace {
 using Key = std::pair<int, int>;
 Key key(const Side& side) { return {side.s->info(), side.e->info()}; }
 
-// The side among `nearby` whose open diametral half-disk strictly contains p, or nullptr.
-const Side* forbidder(const std::vector<Side>& nearby, const Point& p) {
-  for (const Side& f : nearby)
-    if (encroaches(f.s->point(), f.e->point(), p)) return &f;
-  return nullptr;
+// A boundary side (other than `cur`) that a Steiner point at p on `cur` would break, if any: p in its forbidden
+// interval.
+std::optional<Side> forbidder(const State& st, const Side& cur, const Point& p) {
+  std::vector<Side> broken = st.sides_broken_by(cur, p);
+  if (broken.empty()) return std::nullopt;
+  return broken.front();
 }
 
 // The forbidden interval of [s, e] with respect to f: the parameters t1 <= t2 where s + t (e - s) crosses f's
@@ -66,15 +68,15 @@ bool blocked_by_violated_boundary(const State& st, Vertex_handle blocker) {
 
 enum class Step { Place, Defer, Stuck };
 
-// Chooses the next Steiner point on `cur` (violated) given the walk's encroachers and nearby sides.
+// Chooses the next Steiner point on `cur` (violated) given the walk's encroachers.
 Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& deferred, Point& p) {
   const Point &s = cur.s->point(), &e = cur.e->point();
   auto empty = [&](const Point& c) {
-    return subsegment_is_empty(s, c, w.encroachers) && st.keeps_triangles_valid(cur, c);
+    return st.subsegment_is_empty(cur, s, c, w.encroachers) && st.keeps_triangles_valid(cur, c);
   };
-  auto allowed = [&](const Point& c) { return empty(c) && forbidder(w.nearby, c) == nullptr; };
+  auto allowed = [&](const Point& c) { return empty(c) && !forbidder(st, cur, c); };
   Vertex_handle blocker;
-  const double t_greedy = greedy_parameter(s, e, w.encroachers, &blocker);
+  const double t_greedy = st.greedy_parameter(cur, s, e, w.encroachers, &blocker);
   const bool may_defer = !deferred.count(key(cur));
   auto defer = [&] {
     deferred.insert(key(cur));
@@ -90,8 +92,8 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
   // relative 2^-40 when rounding put the start inside the interval again); every candidate is checked exactly.
   for (int iter = 0; iter < 64; ++iter) {
     if (!pick_point_at_or_before(s, e, t, empty, p)) break;
-    const Side* f = forbidder(w.nearby, p);
-    if (f == nullptr) return Step::Place;
+    std::optional<Side> f = forbidder(st, cur, p);
+    if (!f) return Step::Place;
     auto [t_start, t_end] = forbidden_interval(s, e, *f);
     // An interval starting within 2^-20 |e - s| of s counts as starting at s: s was itself placed at the start of
     // f's interval (on f's circle up to rounding), and moving back to it would only creep forward by ulps.
@@ -116,7 +118,7 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
 
 // Refines the violated side from s toward e until the remaining subsegment is fine, a step is deferred, or the
 // budget is spent. The walk runs once: points placed on this edge never encroach its other subsegments (they
-// are on its line or just outside), so the first walk's encroachers and nearby sides stay a superset.
+// are on its line or just outside), so the first walk's encroachers stay a superset.
 void sweep(State& st, Side cur, std::set<Key>& deferred) {
   DiskWalk w = st.walk_diametral_disk(cur);
   // Interfaces: both sides at once (the walk collected both sides' encroachers).

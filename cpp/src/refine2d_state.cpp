@@ -43,6 +43,13 @@ bool State::is_boundary_side(const Side& side) const {
   return f != nullptr && f->info().in_domain;
 }
 
+std::vector<Face_handle> State::domain_faces(const Side& side) const {
+  std::vector<Face_handle> out;
+  for (const Side& sd : {side, Side{side.e, side.s}})
+    if (is_boundary_side(sd)) out.push_back(left_face(sd));
+  return out;
+}
+
 Vertex_handle State::apex(const Side& side) const {
   Face_handle f = left_face(side);
   for (int i = 0; i < 3; ++i)
@@ -75,49 +82,106 @@ void State::enqueue_all() {
   for (const Side& side : boundary_sides()) queue.push_back(side);
 }
 
-DiskWalk State::walk_diametral_disk(const Side& side) const {
-  DiskWalk out;
-  const Point &s = side.s->point(), &e = side.e->point();
-  double cx = 0.5 * (s.x() + e.x()), cy = 0.5 * (s.y() + e.y());
-  double r2 = 0.25 * CGAL::to_double(CGAL::squared_distance(s, e));
+template <class Visit>
+void State::walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit) const {
+  double cx = 0.5 * (a.x() + b.x()), cy = 0.5 * (a.y() + b.y());
+  double r2 = 0.25 * CGAL::to_double(CGAL::squared_distance(a, b));
   double reach = r2 * (1 + 1e-9) + 1e-300;  // pruning slack: walk a little too far rather than too little
-  const Side reverse{side.e, side.s};
-  const bool left_domain = is_boundary_side(side), right_domain = is_boundary_side(reverse);
-  std::vector<Face_handle> stack;
-  if (left_domain) stack.push_back(left_face(side));
-  if (right_domain) stack.push_back(left_face(reverse));
-  std::unordered_set<Face_handle> seen(stack.begin(), stack.end());
-  std::unordered_set<Vertex_handle> found;
-  auto on_domain_side = [&](const Point& q) {
-    return (left_domain && encroaches(s, e, q)) || (right_domain && encroaches(e, s, q));
-  };
+  std::vector<Face_handle> stack(start);
+  std::unordered_set<Face_handle> seen(start.begin(), start.end());
   while (!stack.empty()) {
     Face_handle f = stack.back();
     stack.pop_back();
+    if (visit(f)) return;
+    for (int i = 0; i < 3; ++i) {
+      if (f->is_constrained(i)) continue;
+      Face_handle g = f->neighbor(i);
+      if (seen.count(g) || cdt.is_infinite(g)) continue;
+      // The union of (face ∩ disk) along the walk stays connected: consecutive faces share a piece of the
+      // crossed edge inside the disk.
+      if (distance2_to_segment(cx, cy, f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point()) > reach)
+        continue;
+      seen.insert(g);
+      stack.push_back(g);
+    }
+  }
+}
+
+DiskWalk State::walk_diametral_disk(const Side& side) const {
+  DiskWalk out;
+  const Point &s = side.s->point(), &e = side.e->point();
+  std::unordered_set<Vertex_handle> found;
+  const bool left = is_boundary_side(side), right = is_boundary_side({side.e, side.s});
+  auto on_domain_side = [&](const Point& q) { return (left && encroaches(s, e, q)) || (right && encroaches(e, s, q)); };
+  walk_disk(domain_faces(side), s, e, [&](Face_handle f) {
     for (int i = 0; i < 3; ++i) {
       Vertex_handle v = f->vertex(i);
       if (v != side.s && v != side.e && !cdt.is_infinite(v) && !found.count(v) && on_domain_side(v->point())) {
         found.insert(v);
         out.encroachers.push_back(v);
       }
-      if (f->is_constrained(i)) {
-        Side other{f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))};
-        if (!same_side(other, side) && !same_side(other, reverse) && is_boundary_side(other))
-          out.nearby.push_back(other);
-        continue;
-      }
-      Face_handle g = f->neighbor(i);
-      if (seen.count(g) || cdt.is_infinite(g)) continue;
-      const Point &u = f->vertex(CDT::ccw(i))->point(), &w = f->vertex(CDT::cw(i))->point();
-      if (distance2_to_segment(cx, cy, u, w) > reach) continue;
-      seen.insert(g);
-      stack.push_back(g);
     }
-  }
+    return false;
+  });
   // Deterministic order (the walk order depends on face handles): by vertex index.
   std::sort(out.encroachers.begin(), out.encroachers.end(),
             [](Vertex_handle a, Vertex_handle b) { return a->info() < b->info(); });
   return out;
+}
+
+std::vector<Side> State::sides_broken_by(const Side& side, const Point& p) const {
+  std::vector<Side> out;
+  const Side reverse{side.e, side.s};
+  std::vector<Face_handle> stack = domain_faces(side);
+  std::unordered_set<Face_handle> seen(stack.begin(), stack.end());
+  while (!stack.empty()) {
+    Face_handle f = stack.back();
+    stack.pop_back();
+    for (int i = 0; i < 3; ++i) {
+      Side edge{f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))};  // f is on its left
+      if (f->is_constrained(i)) {
+        if (!same_side(edge, side) && !same_side(edge, reverse) && is_boundary_side(edge) &&
+            encroaches(edge.s->point(), edge.e->point(), p))
+          out.push_back(edge);
+        continue;
+      }
+      Face_handle g = f->neighbor(i);
+      if (seen.count(g) || cdt.is_infinite(g)) continue;
+      seen.insert(g);
+      if (CGAL::side_of_bounded_circle(g->vertex(0)->point(), g->vertex(1)->point(), g->vertex(2)->point(), p) ==
+          CGAL::ON_BOUNDED_SIDE)
+        stack.push_back(g);
+    }
+  }
+  return out;
+}
+
+bool State::reachable_within(const Side& start, const Point& a, const Point& b, Vertex_handle q) const {
+  bool found = false;
+  walk_disk(domain_faces(start), a, b, [&](Face_handle f) { return found = f->has_vertex(q); });
+  return found;
+}
+
+double State::greedy_parameter(const Side& start, const Point& s, const Point& e, const std::vector<Vertex_handle>& q,
+                               Vertex_handle* blocker) const {
+  double dx = e.x() - s.x(), dy = e.y() - s.y();
+  std::vector<std::pair<double, Vertex_handle>> order;
+  for (Vertex_handle v : q) {
+    double wx = v->point().x() - s.x(), wy = v->point().y() - s.y();
+    double den = wx * dx + wy * dy;  // > |w|^2 > 0 for an encroacher: (q - s).(e - s) = |q - s|^2 - (s - q).(e - q)
+    if (den > 0) order.emplace_back((wx * wx + wy * wy) / den, v);
+  }
+  std::sort(order.begin(), order.end(),
+            [](const auto& a, const auto& b) { return std::make_pair(a.first, a.second->info()) <
+                                                      std::make_pair(b.first, b.second->info()); });
+  // The first q (by t) that the subsegment [s, s + t d] would actually see: reachable inside its disk without
+  // crossing a constraint. Vertices hidden behind a constraint (a reflex spike) do not block (paper 4.4).
+  for (const auto& [t, v] : order)
+    if (t < 1 && reachable_within(start, s, Point(s.x() + t * dx, s.y() + t * dy), v)) {
+      if (blocker) *blocker = v;
+      return t;
+    }
+  return 1.0;
 }
 
 std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
@@ -220,29 +284,16 @@ int State::edge_of(const Side& side) const {
   return it->second;
 }
 
-double greedy_parameter(const Point& s, const Point& e, const std::vector<Vertex_handle>& q,
-                        Vertex_handle* blocker) {
-  double dx = e.x() - s.x(), dy = e.y() - s.y(), best = 1.0;
-  for (Vertex_handle v : q) {
-    double wx = v->point().x() - s.x(), wy = v->point().y() - s.y();
-    double den = wx * dx + wy * dy;  // > |w|^2 > 0 for an encroacher: (q - s).(e - s) = |q - s|^2 - (s - q).(e - q)
-    if (den <= 0) continue;
-    double t = (wx * wx + wy * wy) / den;
-    if (t < best) {
-      best = t;
-      if (blocker) *blocker = v;
-    }
-  }
-  return best;
-}
-
 void keep_encroaching(const Point& s, const Point& e, std::vector<Vertex_handle>& q) {
   q.erase(std::remove_if(q.begin(), q.end(), [&](Vertex_handle v) { return !inside_diametral_disk(s, e, v->point()); }),
           q.end());
 }
 
-bool subsegment_is_empty(const Point& s, const Point& p, const std::vector<Vertex_handle>& q) {
-  return std::none_of(q.begin(), q.end(), [&](Vertex_handle v) { return inside_diametral_disk(s, p, v->point()); });
+bool State::subsegment_is_empty(const Side& start, const Point& s, const Point& p,
+                                const std::vector<Vertex_handle>& q) const {
+  return std::none_of(q.begin(), q.end(), [&](Vertex_handle v) {
+    return inside_diametral_disk(s, p, v->point()) && reachable_within(start, s, p, v);
+  });
 }
 
 int State::greedy_count(const Side& side, std::vector<Vertex_handle> q) const {
@@ -254,9 +305,10 @@ int State::greedy_count(const Side& side, std::vector<Vertex_handle> q) const {
   for (std::size_t step = 0; step < 2 * q.size() + 8; ++step) {
     keep_encroaching(x, e, q);
     if (q.empty()) break;
-    double t = greedy_parameter(x, e, q);
+    double t = greedy_parameter(side, x, e, q);
+    if (t >= 1) break;
     Point p;
-    auto empty = [&](const Point& c) { return subsegment_is_empty(x, c, q); };
+    auto empty = [&](const Point& c) { return subsegment_is_empty(side, x, c, q); };
     if (!pick_point_at_or_before(x, e, t, empty, p)) break;
     x = p;
     ++count;

@@ -30,7 +30,6 @@ struct Side {
 // What the walk over the diametral disk of a side found.
 struct DiskWalk {
   std::vector<Vertex_handle> encroachers;  // vertices strictly inside the open half-disk, reachable from the side
-  std::vector<Side> nearby;                // other boundary sides met by the walk (candidate forbidders)
 };
 
 class State {
@@ -51,6 +50,9 @@ class State {
   // A constrained subsegment with a domain triangle on its left (issue 4: both sides of an interface or of a
   // dangling segment are boundary sides, each refined on its own; an outer boundary edge has one).
   bool is_boundary_side(const Side& side) const;
+  // The domain triangles next to the subsegment of `side`: its left face first when that is in the domain, then
+  // the right one when that is (two for an interface or dangling segment). Visibility walks start from these.
+  std::vector<Face_handle> domain_faces(const Side& side) const;
   // A boundary side whose triangle is obtuse at the apex (exact: CGAL::angle(s, apex, e) == OBTUSE).
   bool is_violated(const Side& side) const;
   // The apex of the side's triangle (call only on a boundary side).
@@ -59,9 +61,9 @@ class State {
   std::vector<Side> boundary_sides() const;
 
   // Vertices strictly inside the open diametral disk of the subsegment on a domain side of it (exact: strictly
-  // left of s -> e with the left a domain side, or strictly right with the right a domain side, and
-  // angle(s, q, e) == OBTUSE), found by walking from the subsegment's domain triangles (one for a boundary edge,
-  // two for an interface) across unconstrained edges into every triangle meeting the closed disk. Constraints stop the walk, which gives visibility; the float distance
+  // left of s -> e when the left is a domain side, strictly right when the right is, and angle(s, q, e) ==
+  // OBTUSE), found by walking from its domain_faces across unconstrained edges into every triangle meeting the
+  // closed disk. Constraints stop the walk, which gives visibility; the float distance
   // test only prunes the walk (conservatively, with slack): every decision on a vertex is exact.
   // Cost: the number of triangles meeting the disk.
   DiskWalk walk_diametral_disk(const Side& side) const;
@@ -85,11 +87,37 @@ class State {
   int steiner_edge(int index) const { return steiner_edge_.at(index - n_input); }
   // Provenance of the work queue (issue 4 diagnosis, refine2d_diagnosis.cpp).
   Propagation propagation;
+  // The boundary sides (other than `side`) that a vertex at p, on `side`, would make violated: exactly those
+  // among the edges of p's conflict zone (the triangles whose circumcircle strictly contains p, reachable from
+  // `side`'s domain_faces across unconstrained edges; their triangles get p as apex) whose open half-disk contains p.
+  // These are the forbidden intervals of `side` that contain p, visibility included. Cost: the conflict zone.
+  std::vector<Side> sides_broken_by(const Side& side, const Point& p) const;
+
+  // The greedy end from s toward e (s on the side `start`, whose left face touches [s, e]): the smallest
+  // t = |q - s|^2 / ((q - s) . d), d = e - s, over the vertices q of `q` that [s, s + t d] would see, i.e. that
+  // are reachable inside its diametral disk from `start`'s triangle without crossing a constraint (paper 4.4:
+  // only visible vertices encroach). At that t, q reaches the circle of [s, s + t d] (paper-notes:
+  // (s - q).(x - q) >= 0 iff t (q - s).d <= |q - s|^2). 1 when nothing blocks; `blocker` receives the vertex.
+  // Cost: one disk walk per candidate tried, in increasing t (usually one).
+  double greedy_parameter(const Side& start, const Point& s, const Point& e, const std::vector<Vertex_handle>& q,
+                          Vertex_handle* blocker = nullptr) const;
+  // True when no vertex of q that [s, p] would see (reachable_within) encroaches it (exact encroachment, on
+  // either side: q only holds vertices of domain sides).
+  bool subsegment_is_empty(const Side& start, const Point& s, const Point& p,
+                           const std::vector<Vertex_handle>& q) const;
+  // Whether q is reachable from `start`'s domain_faces inside the closed diametral disk of [a, b] (float pruning with
+  // slack, so "reachable" errs toward yes) without crossing a constraint.
+  bool reachable_within(const Side& start, const Point& a, const Point& b, Vertex_handle q) const;
+
   // Single-edge Greedy-Refine (Theorem 2) of `side` against the vertices `q` only, without inserting anything:
   // the number of Steiner points it places, each rounded as the refinement rounds them.
   int greedy_count(const Side& side, std::vector<Vertex_handle> q) const;
 
  private:
+  // Depth-first walk from the faces `start` across unconstrained edges into the faces meeting the closed
+  // diametral disk of [a, b]; visit(face) returns true to stop.
+  template <class Visit>
+  void walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit) const;
   std::map<std::pair<int, int>, int> edge_index_;  // input boundary edge (min, max) -> index in edges
   std::vector<int> steiner_edge_;                   // Steiner point (index - n_input) -> index in edges
 };
@@ -131,12 +159,6 @@ bool pick_point_at_or_before(const Point& s, const Point& e, double t, Valid&& v
   return false;
 }
 
-// The greedy end from s toward e: min over encroachers q of |q - s|^2 / ((q - s) . d), d = e - s, the parameter
-// where q reaches the diametral circle of [s, s + t d] (paper-notes: (s - q).(x - q) >= 0 iff t (q - s).d <=
-// |q - s|^2). 1 when no q blocks. `blocker` receives the minimizing vertex.
-double greedy_parameter(const Point& s, const Point& e, const std::vector<Vertex_handle>& q,
-                        Vertex_handle* blocker = nullptr);
-
 // Exact: q strictly inside the open diametral disk of [s, e], on either side (not on the line). The encroacher
 // lists come from walk_diametral_disk, which only collects vertices on domain sides, so for a boundary edge this
 // is `encroaches`, and for an interface it treats both sides at once (t* = min over both sides' encroachers).
@@ -147,8 +169,6 @@ inline bool inside_diametral_disk(const Point& s, const Point& e, const Point& q
 // Keeps the vertices of q still encroaching [s, e] (disks of subsegments that share e shrink as s advances).
 void keep_encroaching(const Point& s, const Point& e, std::vector<Vertex_handle>& q);
 
-// True when no vertex of q encroaches [s, p] (exact).
-bool subsegment_is_empty(const Point& s, const Point& p, const std::vector<Vertex_handle>& q);
 
 // Splits `side` at the foot of q on it (rounded by pick_point): the new vertex, or nullptr when no double point
 // strictly inside the side exists there or State::split refuses it. Defined in projection_refine.cpp.
