@@ -99,9 +99,9 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
     }
   };
   run();
-  // Rescue: a side can be left violated when no double point near the strategy's choice keeps the neighbouring
-  // triangles valid (an apex nearly on the line, a few ulps away). Split such sides near their midpoint, far
-  // from both ends, and run the strategy again; at most 3 rounds.
+  // Rescue: a side can be left violated when no double point near the strategy's choice passes its exact checks
+  // (greedy: every candidate lands in a subsegment's disk; any strategy: the point coincides with a vertex).
+  // Split such sides near their midpoint and run the strategy again; at most 3 rounds.
   for (int round = 0; round < 3 && st.budget_left(); ++round) {
     std::vector<Side> stuck;
     for (const Side& side : st.boundary_sides())
@@ -110,7 +110,7 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
     st.fallback_used = true;
     for (const Side& side : stuck) {
       refine2d::Point p;
-      auto valid = [&](const refine2d::Point& c) { return st.keeps_triangles_valid(side, c); };
+      auto valid = [](const refine2d::Point&) { return true; };
       if (st.budget_left() && st.is_violated(side) &&
           refine2d::pick_point(side.s->point(), side.e->point(), 0.5, valid, p))
         st.split(side, p);

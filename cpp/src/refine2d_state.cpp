@@ -174,14 +174,28 @@ double State::greedy_parameter(const Side& start, const Point& s, const Point& e
   std::sort(order.begin(), order.end(),
             [](const auto& a, const auto& b) { return std::make_pair(a.first, a.second->info()) <
                                                       std::make_pair(b.first, b.second->info()); });
-  // The first q (by t) that the subsegment [s, s + t d] would actually see: reachable inside its disk without
-  // crossing a constraint. Vertices hidden behind a constraint (a reflex spike) do not block (paper 4.4).
-  for (const auto& [t, v] : order)
-    if (t < 1 && reachable_within(start, s, Point(s.x() + t * dx, s.y() + t * dy), v)) {
-      if (blocker) *blocker = v;
-      return t;
+  // q blocks at the first t >= t_q where [s, s + t d] sees it: reachable inside that subsegment's disk without
+  // crossing a constraint (paper 4.4: only visible vertices encroach). Disks grow with t, so reachability is
+  // monotone in t: bisect when q is hidden at t_q (behind a reflex spike, it may come into view later).
+  auto sees = [&](double t, Vertex_handle v) {
+    return reachable_within(start, s, Point(s.x() + t * dx, s.y() + t * dy), v);
+  };
+  double best = 1.0;
+  for (const auto& [tq, v] : order) {
+    if (tq >= best) break;
+    double t = tq;
+    if (!sees(tq, v)) {
+      if (!sees(best, v)) continue;
+      double lo = tq, hi = best;  // hidden at lo, seen at hi
+      for (int k = 0; k < 48 && lo < hi * (1 - 0x1p-40); ++k) (sees(0.5 * (lo + hi), v) ? hi : lo) = 0.5 * (lo + hi);
+      t = hi;
     }
-  return 1.0;
+    if (t < best) {
+      best = t;
+      if (blocker) *blocker = v;
+    }
+  }
+  return best;
 }
 
 std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
@@ -197,29 +211,36 @@ std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
         break;
       }
     }
-  // The doubles within 2 ulps (per coordinate) of the rounded point, and a grid reaching 8 ulps outward from it
-  // (steps along and across the line, in units of the larger coordinate ulp).
+  // Points snapped to the line: for each double x within 2 ulps of the rounded point, the doubles within 2 ulps
+  // of the line's y there (and symmetrically with x and y swapped): off the line by at most a few ulps of the
+  // finer coordinate, which matters when a neighbouring apex lies nearly on the line (a sliver outside).
   double x0 = s.x() + t * dx, y0 = s.y() + t * dy, inf = std::numeric_limits<double>::infinity();
   auto step = [&](double v, int k) {
     for (; k > 0; --k) v = std::nextafter(v, inf);
     for (; k < 0; ++k) v = std::nextafter(v, -inf);
     return v;
   };
-  for (int i = -2; i <= 2; ++i)
-    for (int j = -2; j <= 2; ++j) out.emplace_back(step(x0, i), step(y0, j));
+  for (int i = -2; i <= 2; ++i) {
+    double x = step(x0, i), y = step(y0, i);
+    double y_at = dx != 0 ? s.y() + (x - s.x()) * (dy / dx) : y0, x_at = dy != 0 ? s.x() + (y - s.y()) * (dx / dy) : x0;
+    for (int j = -2; j <= 2; ++j) {
+      out.emplace_back(x, step(y_at, j));
+      out.emplace_back(step(x_at, j), y);
+    }
+  }
+  // A grid reaching 8 ulps (of the larger coordinate) outward from the rounded point.
   double u = std::max(step(std::abs(x0), 1) - std::abs(x0), step(std::abs(y0), 1) - std::abs(y0));
   double len = std::hypot(dx, dy), tx = dx / len, ty = dy / len;  // right normal: (ty, -tx)
   for (int i = -2; i <= 2; ++i)
     for (int j = 1; j <= 8; ++j) out.emplace_back(x0 + u * (i * tx + j * ty), y0 + u * (i * ty - j * tx));
   out.erase(std::remove_if(out.begin(), out.end(),
-                           [&](const Point& q) {
-                             return q == s || q == e || CGAL::orientation(s, e, q) == CGAL::LEFT_TURN ||
-                                    CGAL::angle(s, q, e) != CGAL::OBTUSE;
-                           }),
+                           [&](const Point& q) { return q == s || q == e || CGAL::angle(s, q, e) != CGAL::OBTUSE; }),
             out.end());
+  // Collinear first, then outside (right of s -> e), then inside by ulps; each by decreasing progress.
   auto rank = [&](const Point& q) {
-    bool off = CGAL::orientation(s, e, q) != CGAL::COLLINEAR;
-    return std::make_pair(off, -((q.x() - s.x()) * dx + (q.y() - s.y()) * dy));
+    auto o = CGAL::orientation(s, e, q);
+    int group = o == CGAL::COLLINEAR ? 0 : o == CGAL::RIGHT_TURN ? 1 : 2;
+    return std::make_pair(group, -((q.x() - s.x()) * dx + (q.y() - s.y()) * dy));
   };
   std::stable_sort(out.begin(), out.end(), [&](const Point& a, const Point& b) { return rank(a) < rank(b); });
   out.erase(std::unique(out.begin(), out.end()), out.end());
@@ -243,34 +264,65 @@ bool State::keeps_triangles_valid(const Side& side, const Point& p) const {
 }
 
 Vertex_handle State::split(const Side& side, const Point& p) {
-  if (!keeps_triangles_valid(side, p)) return nullptr;
   Face_handle fl = left_face(side);
+  if (fl == nullptr) throw InternalError("refine2d: split of an edge that is not a constraint");
   int i = fl->index(apex(side));
-  Face_handle fr = fl->neighbor(i);
-  cdt::FaceInfo left = fl->info(), right = fr->info();
-  Vertex_handle v = cdt.insert(p, CDT::EDGE, fl, i);
+  const cdt::FaceInfo left = fl->info(), right = fl->neighbor(i)->info();
+  const int edge = edge_of(side);
+  Vertex_handle v;
+  if (keeps_triangles_valid(side, p)) {
+    v = cdt.insert(p, CDT::EDGE, fl, i);  // splits the constraint and both triangles, then flips
+  } else {
+    // p is off the line and a neighbouring apex lies nearly on it (a sliver): splitting in place would invert a
+    // triangle. Replace the constraint (s, e) by the polyline s-p-e instead; CGAL retriangulates exactly.
+    std::size_t before = cdt.number_of_vertices();
+    cdt.remove_constrained_edge(fl, i);
+    v = cdt.insert(p, side.s->face());
+    if (cdt.number_of_vertices() == before) {  // p coincides with a vertex: give up on this point
+      cdt.insert_constraint(side.s, side.e);
+      return nullptr;
+    }
+    try {
+      cdt.insert_constraint(side.s, v);
+      cdt.insert_constraint(v, side.e);
+    } catch (const CDT::Intersection_of_constraints_exception&) {
+      throw InternalError("refine2d: the refined boundary s-p-e crosses a constraint");
+    }
+  }
   v->info() = n_input + static_cast<int>(placed);
-  steiner_edge_.push_back(edge_of(side));
-  ++edges[steiner_edge_.back()].steiner_points;
+  steiner_edge_.push_back(edge);
+  ++edges[edge].steiner_points;
   ++placed;
-  // Counter-clockwise around v, from the face on the left of v -> e up to the constraint (v, s): the left side.
+  // Domain marks. Around v, counter-clockwise from the face on the left of v -> e up to the constraint (v, s): the
+  // left side's; the rest: the right side's. Faces changed away from v (only on the polyline path) are reached
+  // from there across unconstrained edges: marks spread while they differ. Sides of every face touched are
+  // queued: their triangles may have a new apex.
+  std::vector<std::pair<Face_handle, const cdt::FaceInfo*>> stack;
   auto fc = cdt.incident_faces(v), done = fc;
-  while (fc->vertex(CDT::ccw(fc->index(v))) != side.e) ++fc;
+  for (std::size_t k = 0; fc->vertex(CDT::ccw(fc->index(v))) != side.e; ++fc)
+    if (++k > cdt.number_of_faces()) throw InternalError("refine2d: the split vertex is not on (v, e)");
   done = fc;
   bool on_left = true;
   do {
-    fc->info() = on_left ? left : right;
+    stack.emplace_back(fc, on_left ? &left : &right);
     if (fc->vertex(CDT::cw(fc->index(v))) == side.s) on_left = false;
-    int j = fc->index(v);
-    Side opposite{fc->vertex(CDT::ccw(j)), fc->vertex(CDT::cw(j))};
-    if (fc->is_constrained(j)) {
-      queue.push_back(opposite);
-      queue.push_back({opposite.e, opposite.s});
-    }
   } while (++fc != done);
-  for (Side sub : {Side{side.s, v}, Side{v, side.e}}) {  // both orientations: an interface has two sides
-    queue.push_back(sub);
-    queue.push_back({sub.e, sub.s});
+  std::unordered_set<Face_handle> set;
+  while (!stack.empty()) {
+    auto [f, info] = stack.back();
+    stack.pop_back();
+    if (!set.insert(f).second) continue;
+    f->info() = *info;
+    for (int j = 0; j < 3; ++j) {
+      if (f->is_constrained(j)) {
+        queue.push_back({f->vertex(CDT::ccw(j)), f->vertex(CDT::cw(j))});
+        queue.push_back({f->vertex(CDT::cw(j)), f->vertex(CDT::ccw(j))});
+        continue;
+      }
+      Face_handle g = f->neighbor(j);
+      if (!set.count(g) && (g->info().in_domain != info->in_domain || g->info().component != info->component))
+        stack.emplace_back(g, info);
+    }
   }
   return v;
 }

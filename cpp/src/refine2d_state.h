@@ -68,14 +68,15 @@ class State {
   // Cost: the number of triangles meeting the disk.
   DiskWalk walk_diametral_disk(const Side& side) const;
 
-  // Inserts p (from candidates_near) into the constrained edge (s, e), which CGAL splits into (s, p), (p, e) before
-  // restoring the constrained Delaunay property by flips. Every face that changed is incident to p; their domain
-  // marks are copied from the side they lie on. Sides of the changed faces are pushed on the queue. Refuses
-  // (returns nullptr) when p would invert a triangle next to the edge (p off the line by more than its
-  // neighbours allow). Cost: O(degree of p) plus the flips.
+  // Inserts p (from candidates_near) into the constrained edge (s, e): CGAL splits it into (s, p), (p, e) and
+  // restores the constrained Delaunay property by flips. When p is off the line and a neighbouring apex lies nearly
+  // on it (so that splitting in place would invert a triangle), the constraint is replaced by the polyline s-p-e
+  // and CGAL retriangulates. Domain marks of the changed faces are copied from the side they lie on; the sides of
+  // changed faces are queued. Returns nullptr only when p coincides with an existing vertex.
+  // Cost: O(degree of p) plus the flips.
   Vertex_handle split(const Side& side, const Point& p);
-  // p would keep the two triangles next to the side counter-clockwise after the split (exact; p may be ulps
-  // off the line, and a neighbouring apex nearly on it).
+  // p would keep the two triangles next to the side counter-clockwise when inserted into the edge (exact; p may
+  // be ulps off the line, and a neighbouring apex nearly on it).
   bool keeps_triangles_valid(const Side& side, const Point& p) const;
 
   bool budget_left() const { return placed < budget; }
@@ -130,11 +131,11 @@ inline bool encroaches(const Point& s, const Point& e, const Point& q) {
 // Double points near s + t (e - s), t in (0, 1), that may stand for it on the subsegment, most preferred first:
 // points exactly on the line (the dyadic parameters k / 2^m just below and above t that give exactly
 // representable coordinates: with b-bit coordinates this succeeds once m + b <= 53, always for integer
-// coordinates below 2^20; and the doubles within 2 ulps of the rounded point), then points a few ulps off the
-// line to the right of s -> e (outside the domain), so the refined boundary s-p-e bends away from the domain and p
-// never encroaches on the subsegments of its own edge; each group by decreasing progress along s -> e. Every
-// candidate is strictly between s and e (exact: angle(s, p, e) obtuse). Rounding is a construction: the caller
-// picks the first candidate its exact predicates accept (see pick_point).
+// coordinates below 2^20), then points off the line to its right (outside the domain: the refined boundary
+// s-p-e bends away from the domain), then to its left, each group by decreasing progress along s -> e. Off-line
+// candidates are the doubles nearest the line near the rounded point (within 2 ulps of the finer coordinate)
+// and a grid up to 8 ulps outward. Every candidate is strictly between s and e (exact: angle(s, p, e) obtuse).
+// Rounding is a construction: the caller picks the first candidate its exact predicates accept (pick_point).
 std::vector<Point> candidates_near(const Point& s, const Point& e, double t);
 
 // The first of candidates_near(s, e, t) accepted by `valid`; false when none is.
