@@ -200,6 +200,16 @@ def test_acute_junction_of_ten_degrees_terminates_with_the_junction_diagnosed():
     assert junction["min_angle_degrees"] == pytest.approx(10.0)
     angle = res.stats["diagnosis"]["angles"][0]
     assert angle["vertex"] == v and angle["degrees"] == pytest.approx(10.0)
+    # Concentric shells: from v the greedy end on the 0 degree arm is at |q|^2 / (q . d) = 1.01 / 1 for q = (1, 0.1)
+    # (the nearest blocker), on the 10 degree arm at 1.01 / (cos 10 + 0.1 sin 10) = 1.0078; the shell rule rounds
+    # both down to 2^0 = 1 (then rounded to a double point on the line, within ulps). The Steiner point nearest v
+    # on each arm is therefore at distance 1 from v, where the plain greedy would put 1.01 and 1.0078.
+    steiner = res.mesh.points[len(pts):]
+    r = np.hypot(*steiner.T)
+    on_x_axis = steiner[:, 1] == 0
+    assert on_x_axis.any() and (~on_x_axis).any()
+    assert np.min(r[on_x_axis]) == pytest.approx(1.0, rel=1e-15)
+    assert np.min(r[~on_x_axis]) == pytest.approx(1.0, rel=1e-15)
 
 
 def test_budget_exhausted_is_a_status_on_an_interface():
