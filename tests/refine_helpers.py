@@ -40,3 +40,30 @@ def obtuse_boundary_sides(mesh) -> int:
             (ax, ay), (bx, by), (cx, cy) = p[a], p[b], p[c[0]]
             bad += (ax - cx) * (bx - cx) + (ay - cy) * (by - cy) < 0
     return bad
+
+
+def non_delaunay_edges(mesh) -> int:
+    """Unconstrained interior edges that are not locally Delaunay (the opposite vertex strictly inside the other
+    triangle's circumcircle), decided exactly in rationals. 0 for a constrained Delaunay triangulation."""
+    p = [(Fraction(x), Fraction(y)) for x, y in np.asarray(mesh.points)]
+    constrained = {tuple(sorted(map(int, s))) for s in mesh.segments}
+    opposite: dict[tuple[int, int], list[tuple[int, tuple[int, int, int]]]] = {}
+    for t in np.asarray(mesh.triangles).tolist():
+        for i in range(3):
+            opposite.setdefault(tuple(sorted((t[(i + 1) % 3], t[(i + 2) % 3]))), []).append((t[i], tuple(t)))
+
+    def incircle(a, b, c, d):  # > 0: d strictly inside the circle through a, b, c (counter-clockwise)
+        rows = [(x - d[0], y - d[1]) for x, y in (a, b, c)]
+        m = [(dx, dy, dx * dx + dy * dy) for dx, dy in rows]
+        return (
+            m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+        )
+
+    bad = 0
+    for edge, sides in opposite.items():
+        if len(sides) == 2 and edge not in constrained:
+            (_, t), (d, _) = sides
+            bad += incircle(p[t[0]], p[t[1]], p[t[2]], p[d]) > 0
+    return bad

@@ -10,7 +10,7 @@ from hypothesis import strategies as st
 
 import nonobtuse
 from nonobtuse import Domain, InvalidInputError
-from refine_helpers import obtuse_boundary_sides
+from refine_helpers import non_delaunay_edges, obtuse_boundary_sides
 
 STRATEGIES = ["greedy", "project-flip", "projection"]
 
@@ -50,7 +50,9 @@ def check_result(res: nonobtuse.RefineResult, domain: Domain) -> None:
     assert s["steiner_points"] == len(res.mesh.points) - len(domain.points)
     assert s["steiner_points"] == sum(e["steiner_points"] for e in s["edges"])
     assert s["lower_bound"] == sum(e["lower_bound"] for e in s["edges"])
-    assert s["steiner_points"] >= s["lower_bound"]  # the bound holds for every strategy
+    # The bound holds per input edge, for every strategy (docstring of refine: no refinement uses fewer).
+    assert all(e["steiner_points"] >= e["lower_bound"] for e in s["edges"])
+    assert non_delaunay_edges(res.mesh) == 0  # the output is a constrained Delaunay triangulation (exact)
     np.testing.assert_array_equal(res.mesh.points[: len(domain.points)], domain.points)
 
 
@@ -103,3 +105,16 @@ def test_deterministic():
 def test_bad_options_are_invalid_input(kwargs):
     with pytest.raises(InvalidInputError):
         nonobtuse.refine(convex_point_set(1, 5, 5), **kwargs)
+
+
+def test_exact_checkers_detect_violations():
+    # Rhombus a(0,0) b(2,-1) c(4,0) d(2,1) split by the long diagonal a-c: the angles at b and d are obtuse
+    # (cos = (-2*2 + 1*1) / 5 = -0.6), so a-c is not locally Delaunay (127 + 127 > 180 degrees); with a-c as the
+    # boundary segment of triangle (a, b, c) alone, b sees it at an obtuse angle.
+    from nonobtuse import Mesh
+
+    pts = np.array([[0, 0], [2, -1], [4, 0], [2, 1]], dtype=float)
+    both = Mesh(pts, np.array([[0, 1, 2], [0, 2, 3]]), np.zeros((0, 2), np.int64), pts, np.zeros((0, 2), np.int64))
+    assert non_delaunay_edges(both) == 1
+    one = Mesh(pts, np.array([[0, 1, 2]]), np.array([[0, 2]]), pts, np.zeros((0, 2), np.int64))
+    assert obtuse_boundary_sides(one) == 1

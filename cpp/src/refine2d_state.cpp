@@ -293,19 +293,44 @@ Vertex_handle State::split(const Side& side, const Point& p) {
   steiner_edge_.push_back(edge);
   ++edges[edge].steiner_points;
   ++placed;
-  // Domain marks. Around v, counter-clockwise from the face on the left of v -> e up to the constraint (v, s): the
-  // left side's; the rest: the right side's. Faces changed away from v (only on the polyline path) are reached
+  // Subsegments between two input vertices on the new polyline (a constraint through a vertex) belong to edge.
+  for (Vertex_handle end : {side.s, side.e})
+    for (Vertex_handle a = v, b; a != end; a = b) {
+      b = next_on_constraint(a, end);
+      if (a->info() < n_input && b->info() < n_input)
+        edge_index_[{std::min(a->info(), b->info()), std::max(a->info(), b->info())}] = edge;
+    }
+  remark_around(v, next_on_constraint(v, side.e), next_on_constraint(v, side.s), left, right);
+  return v;
+}
+
+Vertex_handle State::next_on_constraint(Vertex_handle from, Vertex_handle end) const {
+  auto ec = cdt.incident_edges(from), stop = ec;
+  do {
+    Vertex_handle a = ec->first->vertex(CDT::ccw(ec->second)), b = ec->first->vertex(CDT::cw(ec->second));
+    Vertex_handle w = a == from ? b : a;
+    if (cdt.is_constrained(*ec) &&
+        (w == end || (CGAL::orientation(from->point(), end->point(), w->point()) == CGAL::COLLINEAR &&
+                      CGAL::collinear_are_ordered_along_line(from->point(), w->point(), end->point()))))
+      return w;
+  } while (++ec != stop);
+  throw InternalError("refine2d: a split vertex is not on its subsegment");
+}
+
+void State::remark_around(Vertex_handle v, Vertex_handle to_e, Vertex_handle to_s, const cdt::FaceInfo& left,
+                          const cdt::FaceInfo& right) {
+  // Around v, counter-clockwise from the face on the left of v -> to_e up to the constraint (v, to_s): the left
+  // side's marks; the rest: the right side's. Faces changed away from v (only on the polyline path) are reached
   // from there across unconstrained edges: marks spread while they differ. Sides of every face touched are
   // queued: their triangles may have a new apex.
   std::vector<std::pair<Face_handle, const cdt::FaceInfo*>> stack;
   auto fc = cdt.incident_faces(v), done = fc;
-  for (std::size_t k = 0; fc->vertex(CDT::ccw(fc->index(v))) != side.e; ++fc)
-    if (++k > cdt.number_of_faces()) throw InternalError("refine2d: the split vertex is not on (v, e)");
+  while (fc->vertex(CDT::ccw(fc->index(v))) != to_e) ++fc;  // terminates: (v, to_e) is an edge
   done = fc;
   bool on_left = true;
   do {
     stack.emplace_back(fc, on_left ? &left : &right);
-    if (fc->vertex(CDT::cw(fc->index(v))) == side.s) on_left = false;
+    if (fc->vertex(CDT::cw(fc->index(v))) == to_s) on_left = false;
   } while (++fc != done);
   std::unordered_set<Face_handle> set;
   while (!stack.empty()) {
@@ -324,7 +349,6 @@ Vertex_handle State::split(const Side& side, const Point& p) {
         stack.emplace_back(g, info);
     }
   }
-  return v;
 }
 
 int State::edge_of(const Side& side) const {

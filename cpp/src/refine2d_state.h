@@ -115,6 +115,11 @@ class State {
   int greedy_count(const Side& side, std::vector<Vertex_handle> q) const;
 
  private:
+  // The neighbour of `from` along the constraint toward `end` (`end`, or a vertex the constraint passes through).
+  Vertex_handle next_on_constraint(Vertex_handle from, Vertex_handle end) const;
+  // Domain marks of the faces changed by inserting v between to_s and to_e (see split); queues their sides.
+  void remark_around(Vertex_handle v, Vertex_handle to_e, Vertex_handle to_s, const cdt::FaceInfo& left,
+                     const cdt::FaceInfo& right);
   // Depth-first walk from the faces `start` across unconstrained edges into the faces meeting the closed
   // diametral disk of [a, b]; visit(face) returns true to stop.
   template <class Visit>
