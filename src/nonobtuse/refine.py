@@ -63,11 +63,12 @@ def refine(domain: Domain, strategy: str = "greedy", max_steiner: int | None = N
     max_steiner: Steiner budget; None: ``10 n + 1000`` for n input points. When it is spent the partial mesh is
                  returned with status ``"budget_exhausted"``.
 
-    Guarantees: Steiner points lie on boundary subsegments (exactly on the line when a double point there
-    exists, else a few ulps outside the domain); the returned mesh is checked exactly (``stats
-    ["obtuse_boundary_triangles"]`` is 0 whenever the status is ``"converged"``). ``lower_bound`` is the sum
-    over input boundary edges of the single-edge greedy count against the input vertices: no refinement placing
-    Steiner points on boundary edges uses fewer. ``optimal`` is True when the count equals the bound, or for the
+    Guarantees: Steiner points lie on constraint subsegments (exactly on the line when a double point there
+    exists, else a few ulps off it); the returned mesh is checked exactly on every side of every constraint
+    (``stats["obtuse_boundary_triangles"]`` counts the obtuse sides: 0 whenever the status is
+    ``"converged"``). ``lower_bound`` is the sum over input constraint edges of the single-edge greedy count
+    against the input vertices (of both sides for an interface): no refinement placing Steiner points on the
+    constraints uses fewer. ``optimal`` is True when the count equals the bound, or for the
     greedy strategy on a convex polygon without interior points (Theorem 3), None otherwise.
     Deterministic. Cost: O(n log n) to triangulate plus, per Steiner point, the triangles meeting the diametral
     disk being refined.

@@ -52,11 +52,12 @@ struct RefineResult2 {
 // input needs far fewer; the budget exists for PSLG-like interference cascades (paper, Figure 6).
 long long default_steiner_budget(std::size_t n_points);
 
-// Refines the boundary of `domain` (validated by the caller; boundary = the segments bordering the domain on
-// one side, or the convex hull when domain.convex_hull_boundary). Steiner points go only on boundary
-// subsegments; each is a rounded construction checked by exact predicates (see greedy_refine.cpp). The result's
-// certificate is the exact check of the returned mesh. Interfaces (constraints with the domain on both sides)
-// are left as they are (issue 4).
+// Refines every constraint of `domain` (validated by the caller): boundary segments (the domain on one side, or
+// the convex hull when domain.convex_hull_boundary) on their domain side, interfaces and dangling segments (the
+// domain on both sides) on both sides, each side nonobtuse on its own (issue 4). Steiner points go only on
+// constraint subsegments; each is a rounded construction checked by exact predicates (see greedy_refine.cpp).
+// The result's certificate is the exact check of the returned mesh (every side of every constraint);
+// `diagnosis` says which junctions and input angles drew the points and how far one violation propagated.
 //
 // optimal: 1 when steiner_points == lower_bound (the bound is then attained); otherwise, for the Greedy strategy
 // on a convex polygon (no holes, no interior points or constraints) that converged without a fallback step, 1 by
