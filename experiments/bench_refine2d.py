@@ -1,16 +1,17 @@
 """Benchmark of nonobtuse boundary refinement against Triangle -pD, side by side in one process on the same
-inputs: Steiner points and wall time per strategy, beside the lower bound.
+inputs: Steiner points and wall time per strategy, beside the lower bound and CGAL make_conforming_Gabriel_2.
 
-Inputs: the CG:SHOP 2025 categories ortho, point-set, simple-polygon, and the PSLG categories (interior
-constraints) simple-polygon-exterior and simple-polygon-exterior-20 (../shared/data/cgshop25), la.poly (a soil
-cross-section with interfaces; ../shared/data/2d), and generated
-domains of 1e3 .. 1e6 vertices: convex polygons with interior points, star-shaped (non-convex) polygons with
-interior points, and thin layers (a 1000 m x 1 m strip whose top and bottom are polylines, with interior points).
+Inputs: the CG:SHOP 2025 categories ortho, point-set, simple-polygon, the PSLG categories (interior
+constraints) simple-polygon-exterior and simple-polygon-exterior-20 (../shared/data/cgshop25) and la.poly (a
+soil cross-section with interfaces, ../shared/data/2d), and generated
+domains of 1e3 .. 1e6 vertices: convex polygons with interior points, star-shaped (non-convex) polygons
+with interior points, and thin layers (a 1000 m x 1 m strip whose top and bottom are polylines, with
+interior points).
 
     PYTHONPATH=src .venv/bin/python experiments/bench_refine2d.py [--quick] [--pslg]
 
 Writes experiments/results/bench_refine2d.csv and .png and prints a table. --quick: generated sizes up to 1e4.
---pslg: only the PSLG inputs, beside CGAL make_conforming_Gabriel_2 and the CG:SHOP best known counts; writes
+--pslg: only the PSLG inputs, with the CG:SHOP best known counts beside; writes
 experiments/results/bench_refine2d_pslg.csv.
 """
 
@@ -32,7 +33,7 @@ import triangle  # noqa: E402
 import nonobtuse  # noqa: E402
 from nonobtuse import Domain  # noqa: E402
 from nonobtuse.io import load_domain  # noqa: E402
-from peers2d import best_known, cgal_gabriel  # noqa: E402
+from cgshop_best_known import best_known  # noqa: E402
 from refine_helpers import SHARED, cgshop_domain  # noqa: E402
 
 STRATEGIES = ("greedy", "project-flip", "projection")
@@ -54,12 +55,11 @@ def convex(n: int, rng) -> Domain:
 
 def star(n: int, rng) -> Domain:
     h = max(8, int(np.sqrt(n)))
-    a = np.sort(rng.uniform(0, 2 * np.pi, h))
+    a = (np.arange(h) + rng.uniform(0.1, 0.9, h)) * (2 * np.pi / h)  # separated angles: a simple polygon
     outer = np.round(np.c_[np.cos(a), np.sin(a)] * rng.uniform(5e3, 1e4, h)[:, None])
     m = n - h
     r, b = rng.uniform(0, 4.5e3, m), rng.uniform(0, 2 * np.pi, m)
     inner = np.unique(np.round(np.c_[r * np.cos(b), r * np.sin(b)]), axis=0)
-    inner = inner[~(inner[:, None, :] == outer[None]).all(-1).any(1)] if len(inner) * h < 5e7 else inner
     return Domain(points=np.r_[outer, inner], segments=loop(h))
 
 
@@ -89,7 +89,18 @@ def triangle_pd(domain: Domain) -> tuple[int, float]:
     return len(out["vertices"]) - len(domain.points), time.perf_counter() - t0
 
 
-def run(name: str, category: str, domain: Domain, rows: list, peers: bool = False) -> None:
+def cgal_gabriel(domain: Domain) -> tuple[int, float]:
+    """CGAL make_conforming_Gabriel_2 on the domain's CDT (both sides of every constraint)."""
+    from nonobtuse import _core
+
+    t0 = time.perf_counter()
+    n = _core.conforming_gabriel_steiner_points(
+        domain.points, domain.segments, domain.holes, domain.regions, bool(domain.convex_hull)
+    )
+    return n, time.perf_counter() - t0
+
+
+def run(name: str, category: str, domain: Domain, rows: list, best: bool = False) -> None:
     row = {"input": name, "category": category, "vertices": len(domain.points)}
     for s in STRATEGIES:
         t0 = time.perf_counter()
@@ -98,14 +109,15 @@ def run(name: str, category: str, domain: Domain, rows: list, peers: bool = Fals
         row[f"{s}_status"] = r.status
         row["lower_bound"] = r.stats["lower_bound"]
     row["triangle_pD_steiner"], row["triangle_pD_seconds"] = triangle_pd(domain)
-    if peers:  # the PSLG inputs: CGAL's conforming Gabriel refinement and CG:SHOP's best known (issue 4)
-        row["cgal_gabriel_steiner"], row["cgal_gabriel_seconds"] = cgal_gabriel(domain)
+    row["cgal_gabriel_steiner"], row["cgal_gabriel_seconds"] = cgal_gabriel(domain)
+    if best:  # the PSLG categories: CG:SHOP's best known all-triangle counts (issue 4)
         row["best_known_steiner"] = best_known(name)
     rows.append(row)
     print(
         f"{name:40s} n={row['vertices']:8d} lb={row['lower_bound']:7d} "
         + " ".join(f"{s}={row[f'{s}_steiner']}({row[f'{s}_seconds']:.2f}s)" for s in STRATEGIES)
-        + f" triangle-pD={row['triangle_pD_steiner']}({row['triangle_pD_seconds']:.2f}s)",
+        + f" triangle-pD={row['triangle_pD_steiner']}({row['triangle_pD_seconds']:.2f}s)"
+        + f" cgal-gabriel={row['cgal_gabriel_steiner']}({row['cgal_gabriel_seconds']:.2f}s)",
         flush=True,
     )
 
@@ -123,10 +135,10 @@ def main() -> None:
             if cat in ("ortho", "point-set", "simple-polygon") and not args.pslg:
                 run(f.name.split(".")[0], cat, cgshop_domain(f), rows)
             elif cat in ("simple-polygon-exterior", "simple-polygon-exterior-20"):
-                run(f.name.split(".")[0], cat, cgshop_domain(f), rows, peers=True)
+                run(f.name.split(".")[0], cat, cgshop_domain(f), rows, best=True)
     la = SHARED / "2d" / "la.poly"
     if la.exists():
-        run("la", "la.poly", load_domain(la), rows, peers=True)
+        run("la", "la.poly", load_domain(la), rows, best=True)
     sizes = [] if args.pslg else [10**3, 10**4] if args.quick else [10**3, 10**4, 10**5, 10**6]
     for n in sizes:
         for gen in (convex, star, thin_layer):
@@ -143,8 +155,11 @@ def main() -> None:
         w.writerows(rows)
     print("\ncategory totals (Steiner points):")
     cats = sorted({r["category"] for r in rows}, key=lambda c: [r["category"] for r in rows].index(c))
-    keys = ["lower_bound"] + [f"{s}_steiner" for s in STRATEGIES] + ["triangle_pD_steiner"]
-    keys += ["cgal_gabriel_steiner", "best_known_steiner"]
+    keys = (
+        ["lower_bound"]
+        + [f"{s}_steiner" for s in STRATEGIES]
+        + ["triangle_pD_steiner", "cgal_gabriel_steiner", "best_known_steiner"]
+    )
     print(f"{'category':26s} " + " ".join(f"{k:>20s}" for k in keys))
     for c in cats:
         tot = [sum(r.get(k) or 0 for r in rows if r["category"] == c) for k in keys]

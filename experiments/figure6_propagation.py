@@ -33,8 +33,8 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(ROOT / "src"), str(ROOT / "experiments")]
 
 import nonobtuse  # noqa: E402
-from bench_refine2d import triangle_pd  # noqa: E402
-from nonobtuse import Domain, _core  # noqa: E402
+from bench_refine2d import cgal_gabriel, triangle_pd  # noqa: E402
+from nonobtuse import Domain  # noqa: E402
 from nonobtuse.check import check_mesh  # noqa: E402
 
 
@@ -71,8 +71,7 @@ def measure(n: int, apex: float) -> dict:
         "propagation_depth": g["propagation_depth"],
         "initial_violations": g["initial_violations"],
         "triangle_pD_steiner": triangle_pd(d)[0],
-        "cgal_gabriel_steiner": _core.conforming_gabriel_points(d.points, d.segments, d.holes, d.regions, False)
-        - len(d.points),
+        "cgal_gabriel_steiner": cgal_gabriel(d)[0],
     }
 
 

@@ -14,7 +14,8 @@ SHARED = Path(__file__).resolve().parents[1] / ".." / "shared" / "data"
 
 
 def cgshop_domain(path: Path) -> Domain:
-    """A CG:SHOP 2025 instance: the region_boundary polygon (closed), additional constraints, interior points."""
+    """A CG:SHOP 2025 instance: the region_boundary polygon (closed), additional constraints, interior
+    points."""
     d = json.loads(path.read_text())
     pts = np.c_[d["points_x"], d["points_y"]].astype(np.float64)
     rb = d["region_boundary"]
@@ -25,8 +26,8 @@ def cgshop_domain(path: Path) -> Domain:
 
 
 def obtuse_boundary_sides(mesh) -> int:
-    """Boundary segments (exactly one incident triangle) whose triangle is obtuse at the apex, decided in exact
-    rational arithmetic on the stored doubles, independently of the C++ certificate."""
+    """Boundary segments (exactly one incident triangle) whose triangle is obtuse at the apex, decided in
+    exact rational arithmetic on the stored doubles, independently of the C++ certificate."""
     apex: dict[tuple[int, int], list[int]] = {tuple(sorted(map(int, s))): [] for s in mesh.segments}
     for t in np.asarray(mesh.triangles):
         for i in range(3):
@@ -43,8 +44,9 @@ def obtuse_boundary_sides(mesh) -> int:
 
 
 def non_delaunay_edges(mesh) -> int:
-    """Unconstrained interior edges that are not locally Delaunay (the opposite vertex strictly inside the other
-    triangle's circumcircle), decided exactly in rationals. 0 for a constrained Delaunay triangulation."""
+    """Unconstrained interior edges that are not locally Delaunay (the opposite vertex strictly inside the
+    other triangle's circumcircle), decided exactly in rationals. 0 for a constrained Delaunay
+    triangulation."""
     p = [(Fraction(x), Fraction(y)) for x, y in np.asarray(mesh.points)]
     constrained = {tuple(sorted(map(int, s))) for s in mesh.segments}
     opposite: dict[tuple[int, int], list[tuple[int, tuple[int, int, int]]]] = {}

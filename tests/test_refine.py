@@ -26,9 +26,10 @@ def convex_point_set(seed: int, n_hull: int, n_inner: int) -> Domain:
 
 
 def star_with_hole(seed: int, n_outer: int, n_inner: int) -> Domain:
-    """A star-shaped (generally non-convex) polygon with vertex radii in [500, 1000] at sorted angles, a square
-    hole [-100, 100]^2, and n_inner points at radius in (150, 450): inside the polygon (which contains the disk of
-    radius 500 cos(pi / 8) > 460 as n_outer >= 8) and outside the hole (whose corners are at radius 141.5)."""
+    """A star-shaped (generally non-convex) polygon with vertex radii in [500, 1000] at sorted angles, a
+    square hole [-100, 100]^2, and n_inner points at radius in (150, 450): inside the polygon (which contains
+    the disk of radius 500 cos(pi / 8) > 460 as n_outer >= 8) and outside the hole (whose corners are at
+    radius 141.5)."""
     rng = np.random.default_rng(seed)
     a = np.sort(rng.uniform(0, 2 * np.pi, n_outer))
     rad = rng.uniform(500, 1000, n_outer)
@@ -108,13 +109,14 @@ def test_bad_options_are_invalid_input(kwargs):
 
 
 def test_exact_checkers_detect_violations():
-    # Rhombus a(0,0) b(2,-1) c(4,0) d(2,1) split by the long diagonal a-c: the angles at b and d are obtuse
-    # (cos = (-2*2 + 1*1) / 5 = -0.6), so a-c is not locally Delaunay (127 + 127 > 180 degrees); with a-c as the
-    # boundary segment of triangle (a, b, c) alone, b sees it at an obtuse angle.
+    # Rhombus a(0,0) b(2,-1) c(4,0) d(2,1) split by the long diagonal a-c: the angles at b and d are
+    # obtuse (cos = (-2*2 + 1*1) / 5 = -0.6), so a-c is not locally Delaunay (127 + 127 > 180 degrees);
+    # with a-c as the boundary segment of triangle (a, b, c) alone, b sees it at an obtuse angle.
     from nonobtuse import Mesh
 
     pts = np.array([[0, 0], [2, -1], [4, 0], [2, 1]], dtype=float)
-    both = Mesh(pts, np.array([[0, 1, 2], [0, 2, 3]]), np.zeros((0, 2), np.int64), pts, np.zeros((0, 2), np.int64))
+    no_segments = np.zeros((0, 2), np.int64)
+    both = Mesh(pts, np.array([[0, 1, 2], [0, 2, 3]]), no_segments, pts, no_segments)
     assert non_delaunay_edges(both) == 1
-    one = Mesh(pts, np.array([[0, 1, 2]]), np.array([[0, 2]]), pts, np.zeros((0, 2), np.int64))
+    one = Mesh(pts, np.array([[0, 1, 2]]), np.array([[0, 2]]), pts, no_segments)
     assert obtuse_boundary_sides(one) == 1

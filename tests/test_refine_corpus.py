@@ -1,6 +1,6 @@
-"""The CG:SHOP 2025 corpus (categories ortho, point-set, simple-polygon) refines, verifies exactly, and keeps the
-Steiner counts pinned in tests/data/refine_corpus.json (a regression pin: a change in count is a change in the
-algorithm to be explained)."""
+"""The CG:SHOP 2025 corpus (categories ortho, point-set, simple-polygon) refines, verifies exactly, and
+keeps the Steiner counts pinned in tests/data/refine_corpus.json (a regression pin: a change in count is a
+change in the algorithm to be explained)."""
 
 from __future__ import annotations
 

@@ -71,6 +71,16 @@ void bind_refine2d(py::module_& m) {
       "budget 10 n + 1000. Returns a dict: mesh (as triangulate), status ('converged' | 'budget_exhausted'),\n"
       "steiner_points, lower_bound, optimal (True | None), obtuse_boundary_triangles (exact certificate),\n"
       "edges (k, 4) int64 rows a, b, steiner_points, lower_bound per input boundary edge, seconds.");
+  m.def(
+      "conforming_gabriel_steiner_points",
+      [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,
+         bool convex_hull_boundary) {
+        Domain2 d = domain_from_arrays(points, segments, holes, regions, convex_hull_boundary);
+        py::gil_scoped_release release;
+        return conforming_gabriel_steiner_points(d);
+      },
+      py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("regions"), py::arg("convex_hull_boundary"),
+      "Benchmark peer: Steiner points added by CGAL::make_conforming_Gabriel_2 to the domain's CDT.");
   m.def("default_steiner_budget", &default_steiner_budget, py::arg("n_points"),
         "The default Steiner budget for n input points: 10 n + 1000.");
 }

@@ -10,7 +10,6 @@ void bind_mesh2d(py::module_& m);
 void bind_check2d(py::module_& m);
 void bind_validate2d(py::module_& m);
 void bind_refine2d(py::module_& m);
-void bind_peers(py::module_& m);
 }
 
 PYBIND11_MODULE(_core, m) {
@@ -30,5 +29,4 @@ PYBIND11_MODULE(_core, m) {
   nonobtuse::bindings::bind_check2d(m);
   nonobtuse::bindings::bind_validate2d(m);
   nonobtuse::bindings::bind_refine2d(m);
-  nonobtuse::bindings::bind_peers(m);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace nonobtuse::refine2d {
 namespace {
@@ -222,7 +223,8 @@ std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
   };
   for (int i = -2; i <= 2; ++i) {
     double x = step(x0, i), y = step(y0, i);
-    double y_at = dx != 0 ? s.y() + (x - s.x()) * (dy / dx) : y0, x_at = dy != 0 ? s.x() + (y - s.y()) * (dx / dy) : x0;
+    double y_at = dx != 0 ? s.y() + (x - s.x()) * (dy / dx) : y0;
+    double x_at = dy != 0 ? s.x() + (y - s.y()) * (dx / dy) : x0;
     for (int j = -2; j <= 2; ++j) {
       out.emplace_back(x, step(y_at, j));
       out.emplace_back(step(x_at, j), y);
@@ -236,11 +238,14 @@ std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
   out.erase(std::remove_if(out.begin(), out.end(),
                            [&](const Point& q) { return q == s || q == e || CGAL::angle(s, q, e) != CGAL::OBTUSE; }),
             out.end());
-  // Collinear first, then outside (right of s -> e), then inside by ulps; each by decreasing progress.
+  // Collinear first, then outside (right of s -> e), then inside by ulps; each by distance from the target along
+  // the line (nearest first; ties: the one nearer s).
+  const double target = t * (dx * dx + dy * dy);
   auto rank = [&](const Point& q) {
     auto o = CGAL::orientation(s, e, q);
     int group = o == CGAL::COLLINEAR ? 0 : o == CGAL::RIGHT_TURN ? 1 : 2;
-    return std::make_pair(group, -((q.x() - s.x()) * dx + (q.y() - s.y()) * dy));
+    double along = (q.x() - s.x()) * dx + (q.y() - s.y()) * dy;
+    return std::make_tuple(group, std::abs(along - target), along);
   };
   std::stable_sort(out.begin(), out.end(), [&](const Point& a, const Point& b) { return rank(a) < rank(b); });
   out.erase(std::unique(out.begin(), out.end()), out.end());
@@ -257,7 +262,8 @@ bool State::keeps_triangles_valid(const Side& side, const Point& p) const {
     Vertex_handle c = f->vertex(f == fl ? i : fr->index(fl));
     if (cdt.is_infinite(c)) continue;
     auto o = CGAL::orientation(side.s->point(), side.e->point(), c->point());
-    if (CGAL::orientation(side.s->point(), p, c->point()) != o || CGAL::orientation(p, side.e->point(), c->point()) != o)
+    if (CGAL::orientation(side.s->point(), p, c->point()) != o ||
+        CGAL::orientation(p, side.e->point(), c->point()) != o)
       return false;
   }
   return true;

@@ -137,7 +137,7 @@ inline bool encroaches(const Point& s, const Point& e, const Point& q) {
 // points exactly on the line (the dyadic parameters k / 2^m just below and above t that give exactly
 // representable coordinates: with b-bit coordinates this succeeds once m + b <= 53, always for integer
 // coordinates below 2^20), then points off the line to its right (outside the domain: the refined boundary
-// s-p-e bends away from the domain), then to its left, each group by decreasing progress along s -> e. Off-line
+// s-p-e bends away from the domain), then to its left, each group nearest to the target first. Off-line
 // candidates are the doubles nearest the line near the rounded point (within 2 ulps of the finer coordinate)
 // and a grid up to 8 ulps outward. Every candidate is strictly between s and e (exact: angle(s, p, e) obtuse).
 // Rounding is a construction: the caller picks the first candidate its exact predicates accept (pick_point).

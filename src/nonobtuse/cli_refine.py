@@ -13,9 +13,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "refine",
         help="add the fewest Steiner points on boundary edges so that every boundary triangle is nonobtuse",
-        description="Refine the boundary of a 2D domain (.poly, .node, CG:SHOP or domain .json) and write the "
-        "constrained Delaunay mesh (.json mesh schema, .node/.ele/.poly, .vtu, .msh). Exit code 3 when the "
-        "Steiner budget ran out (the partial mesh is still written).",
+        description="Refine the boundary of a 2D domain (.poly, .node, CG:SHOP or domain .json) and write "
+        "the constrained Delaunay mesh (.json mesh schema, .node/.ele/.poly, .vtu, .msh). Exit code 3 when "
+        "refinement did not converge (budget spent, or stalled): the partial mesh is still written.",
     )
     p.add_argument("input", help="domain file")
     p.add_argument("-o", "--output", required=True, help="mesh file; the format follows the suffix")

@@ -67,6 +67,10 @@ long long default_steiner_budget(std::size_t n_points);
 // disk of the refined subsegment.
 RefineResult2 refine(const Domain2& domain, const RefineOptions& options = {});
 
+// Benchmark peer: the Steiner points CGAL::make_conforming_Gabriel_2 adds to the domain's constrained Delaunay
+// triangulation (every constrained edge Gabriel on both sides, outside the domain included).
+long long conforming_gabriel_steiner_points(const Domain2& domain);
+
 std::string to_string(RefineStrategy s);
 std::string to_string(RefineStatus s);
 
