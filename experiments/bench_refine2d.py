@@ -31,9 +31,9 @@ sys.path[:0] = [str(ROOT / "src"), str(ROOT / "tests"), str(ROOT / "experiments"
 import triangle  # noqa: E402
 
 import nonobtuse  # noqa: E402
+from cgshop_best_known import best_known  # noqa: E402
 from nonobtuse import Domain  # noqa: E402
 from nonobtuse.io import load_domain  # noqa: E402
-from cgshop_best_known import best_known  # noqa: E402
 from refine_helpers import SHARED, cgshop_domain  # noqa: E402
 
 STRATEGIES = ("greedy", "project-flip", "projection")

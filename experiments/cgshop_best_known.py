@@ -1,5 +1,5 @@
-"""Reference counts for the 2D benchmarks: the CG:SHOP 2025 best known Steiner counts (every triangle nonobtuse,
-a stronger requirement than ours)."""
+"""Reference counts for the 2D benchmarks: the CG:SHOP 2025 best known Steiner counts (every triangle
+nonobtuse, a stronger requirement than ours)."""
 
 from __future__ import annotations
 

@@ -1,6 +1,6 @@
-"""PSLGs with interior interfaces (issue 4): both sides of every interior constraint refined, junctions, dangling
-segments, region conductivities; hand-worked cases, seeded random multi-region PSLGs, and the real corpus with
-pinned counts (tests/data/pslg_corpus.json)."""
+"""PSLGs with interior interfaces (issue 4): both sides of every interior constraint refined, junctions,
+dangling segments, region conductivities; hand-worked cases, seeded random multi-region PSLGs, and the real
+corpus with pinned counts (tests/data/pslg_corpus.json)."""
 
 from __future__ import annotations
 
@@ -27,9 +27,9 @@ PINS = json.loads((Path(__file__).parent / "data" / "pslg_corpus.json").read_tex
 
 
 def obtuse_constraint_sides(mesh) -> int:
-    """Sides of constrained segments (one per incident triangle: two for an interface or dangling segment) whose
-    angle opposite the segment is obtuse, decided in exact rationals on the stored doubles, independently of the
-    C++ certificate."""
+    """Sides of constrained segments (one per incident triangle: two for an interface or dangling segment)
+    whose angle opposite the segment is obtuse, decided in exact rationals on the stored doubles,
+    independently of the C++ certificate."""
     apex: dict[tuple[int, int], list[int]] = {tuple(sorted(map(int, s))): [] for s in mesh.segments}
     for t in np.asarray(mesh.triangles):
         for i in range(3):
@@ -46,8 +46,9 @@ def obtuse_constraint_sides(mesh) -> int:
 
 
 def steiner_points_on_input_segments(domain: Domain, mesh) -> bool:
-    """Every Steiner point lies on an input segment (or a convex hull edge when the hull is the boundary), up to
-    a few ulps of its coordinates (Steiner points are rounded onto the line, or a few ulps off it, by design)."""
+    """Every Steiner point lies on an input segment (or a convex hull edge when the hull is the boundary), up
+    to a few ulps of its coordinates (Steiner points are rounded onto the line, or a few ulps off it, by
+    design)."""
     pts, segs = np.asarray(domain.points), np.asarray(domain.segments).reshape(-1, 2)
     if domain.convex_hull:
         from scipy.spatial import ConvexHull
@@ -55,7 +56,7 @@ def steiner_points_on_input_segments(domain: Domain, mesh) -> bool:
         segs = np.r_[segs, ConvexHull(pts).simplices]
     a, b = pts[segs[:, 0]], pts[segs[:, 1]]
     scale = np.abs(pts).max() + 1.0
-    for q in np.asarray(mesh.points)[len(pts):]:
+    for q in np.asarray(mesh.points)[len(pts) :]:
         d = b - a
         t = np.clip(np.einsum("ij,ij->i", q - a, d) / np.einsum("ij,ij->i", d, d), 0, 1)
         if np.min(np.hypot(*(a + t[:, None] * d - q).T)) > 64 * np.finfo(float).eps * scale:
@@ -73,9 +74,9 @@ def assert_refined(domain: Domain, res) -> None:
 
 
 def polygon(n: int, radius: float, center=(0.0, 0.0)) -> np.ndarray:
-    """A regular n-gon (counter-clockwise). Its edges' diametral disks lie near the rim: for n = 16 and radius 10
-    each disk has radius 10 sin(11.25 deg) = 1.95 around a point at 10 cos(11.25 deg) = 9.81 from the center,
-    so points within 7.8 of the center encroach no boundary edge."""
+    """A regular n-gon (counter-clockwise). Its edges' diametral disks lie near the rim: for n = 16 and radius
+    10 each disk has radius 10 sin(11.25 deg) = 1.95 around a point at 10 cos(11.25 deg) = 9.81 from the
+    center, so points within 7.8 of the center encroach no boundary edge."""
     a = 2 * np.pi * np.arange(n) / n
     return np.c_[center[0] + radius * np.cos(a), center[1] + radius * np.sin(a)]
 
@@ -88,13 +89,14 @@ def loop(k: int, start: int = 0) -> list[tuple[int, int]]:
 
 
 def test_interface_through_a_rectangle_gets_both_sides_refined():
-    # Rectangle [0, 8] x [0, 8] cut by the interface y = 4 (points 4, 5 on the sides); q1 = (2, 4.5) above it and
-    # q2 = (6, 3.5) below, both strictly inside its diametral disk (center (4, 4), radius 4; distances 2.06) and
-    # inside no boundary disk (the nearest, the top's (4, 8) r 4 and the upper left side's (0, 6) r 2, are at
-    # 4.03 and 2.5). One point y on the interface would need q1 outside [0, y] and [y, 8]: y <= 2.125
-    # (2 + 0.25 / 2) and y >= 8 - 36.25 / 6 = 1.958; and q2: y >= 5.875 and y <= 6.04: no such y, so 2 points
-    # are needed, and the two-sided greedy from either end places 2 (from x = 0: 17/64 * 8 = 2.125 for q1, then
-    # for q2 at (3.875, -0.5) from there 2.125 + 15.265625 / 3.875 = 6.0645). Regions 1 (below) and 2 (above).
+    # Rectangle [0, 8] x [0, 8] cut by the interface y = 4 (points 4, 5 on the sides); q1 = (2, 4.5) above it
+    # and q2 = (6, 3.5) below, both strictly inside its diametral disk (center (4, 4), radius 4; distances
+    # 2.06) and inside no boundary disk (the nearest, the top's (4, 8) r 4 and the upper left side's (0, 6) r
+    # 2, are at 4.03 and 2.5). One point y on the interface would need q1 outside [0, y] and [y, 8]: y <=
+    # 2.125 (2 + 0.25 / 2) and y >= 8 - 36.25 / 6 = 1.958; and q2: y >= 5.875 and y <= 6.04: no such y, so 2
+    # points are needed, and the two-sided greedy from either end places 2 (from x = 0: 17/64 * 8 = 2.125 for
+    # q1, then for q2 at (3.875, -0.5) from there 2.125 + 15.265625 / 3.875 = 6.0645). Regions 1 (below) and 2
+    # (above).
     pts = [(0, 0), (8, 0), (8, 4), (8, 8), (0, 8), (0, 4), (2, 4.5), (6, 3.5)]
     segs = loop(6) + [(5, 2)]
     d = Domain(points=pts, segments=segs, regions=[(1, 1, 1.0), (1, 7, 2.0)])
@@ -103,11 +105,12 @@ def test_interface_through_a_rectangle_gets_both_sides_refined():
     assert res.stats["steiner_points"] == 2 and res.stats["lower_bound"] == 2
     interface = [e for e in res.stats["edges"] if sorted(e["edge"]) == [2, 5]]
     assert len(interface) == 1 and interface[0]["steiner_points"] == 2
-    steiner = res.mesh.points[len(pts):]
+    steiner = res.mesh.points[len(pts) :]
     assert np.allclose(steiner[:, 1], 4.0, atol=1e-12)
     xs = np.sort(steiner[:, 0])
     # From (0, 4): 2.125, 6.0645; from (8, 4), by symmetry: 8 - 2.125 = 5.875, then 5.875 - 3.8952 = 1.9355.
-    assert np.allclose(xs, [2.125, 2.125 + 15.265625 / 3.875]) or np.allclose(xs, [5.875 - 15.265625 / 3.875, 5.875])
+    step = 15.265625 / 3.875
+    assert np.allclose(xs, [2.125, 2.125 + step]) or np.allclose(xs, [5.875 - step, 5.875])
     # Before refining, the interface is obtuse on both sides; the outer boundary is fine.
     assert obtuse_constraint_sides(nonobtuse.triangulate(d)) == 2
     cv = control_volumes(res.mesh, conductivity={1.0: 1.0, 2.0: 1000.0})
@@ -115,9 +118,9 @@ def test_interface_through_a_rectangle_gets_both_sides_refined():
 
 
 def test_t_junction():
-    # Square [0, 4]^2, interface y = 2 across it, and a stem x = 2 from the junction (2, 2) up to the top
-    # (2, 4): three regions. q = (3, 1.8) lies in the horizontal interface's right half's disk (center (3, 2),
-    # r 1, distance 0.2) and in no other (bottom (3, 0) r 1: 1.8; right side (4, 1) r 1: 1.28; left half (1, 2):
+    # Square [0, 4]^2, interface y = 2 across it, and a stem x = 2 from the junction (2, 2) up to the top (2,
+    # 4): three regions. q = (3, 1.8) lies in the horizontal interface's right half's disk (center (3, 2), r
+    # 1, distance 0.2) and in no other (bottom (3, 0) r 1: 1.8; right side (4, 1) r 1: 1.28; left half (1, 2):
     # 2.01). From (2, 2): t = 1.04 / 2 -> x = 3.04; from (4, 2): x = 4 - 1.04 = 2.96; either point leaves q
     # outside both halves (its foot x = 3 is inside [2.96, 3.04] and q is below), so 1 point, the lower bound.
     pts = [(0, 0), (4, 0), (4, 2), (4, 4), (2, 4), (0, 4), (0, 2), (2, 2), (3, 1.8)]
@@ -133,8 +136,8 @@ def test_t_junction():
 
 def test_cross_without_violation_needs_nothing():
     # Square [0, 4]^2 cut by x = 2 and y = 2 into four 2 x 2 cells, each split into two right isosceles
-    # triangles: the angles opposite the constraints are 45 degrees (the right angle is opposite the diagonal),
-    # so nothing is obtuse and nothing is added (lower bound 0).
+    # triangles: the angles opposite the constraints are 45 degrees (the right angle is opposite the
+    # diagonal), so nothing is obtuse and nothing is added (lower bound 0).
     pts = [(0, 0), (2, 0), (4, 0), (4, 2), (4, 4), (2, 4), (0, 4), (0, 2), (2, 2)]
     segs = loop(8) + [(8, 1), (8, 3), (8, 5), (8, 7)]
     d = Domain(points=pts, segments=segs)
@@ -144,16 +147,16 @@ def test_cross_without_violation_needs_nothing():
 
 
 def test_cross_with_encroached_arms():
-    # The cross above with q = (3, 1.8) and q' = (1.8, 3): q encroaches the right arm (2, 2)-(4, 2) from below,
-    # q' the upper arm (2, 2)-(2, 4) from the left (the same computation as the T-junction by symmetry: one
-    # point each, at 2.96 .. 3.04 along its arm). They meet at a right angle (not acute: no shells).
+    # The cross above with q = (3, 1.8) and q' = (1.8, 3): q encroaches the right arm (2, 2)-(4, 2) from
+    # below, q' the upper arm (2, 2)-(2, 4) from the left (the same computation as the T-junction by symmetry:
+    # one point each, at 2.96 .. 3.04 along its arm). They meet at a right angle (not acute: no shells).
     pts = [(0, 0), (2, 0), (4, 0), (4, 2), (4, 4), (2, 4), (0, 4), (0, 2), (2, 2), (3, 1.8), (1.8, 3)]
     segs = loop(8) + [(8, 1), (8, 3), (8, 5), (8, 7)]
     d = Domain(points=pts, segments=segs)
     res = nonobtuse.refine(d)
     assert_refined(d, res)
     assert res.stats["steiner_points"] == 2 and res.stats["lower_bound"] == 2
-    s = res.mesh.points[len(pts):]
+    s = res.mesh.points[len(pts) :]
     on_right = s[np.isclose(s[:, 1], 2.0)]
     on_up = s[np.isclose(s[:, 0], 2.0)]
     assert len(on_right) == 1 and 2.96 <= on_right[0, 0] <= 3.04
@@ -161,12 +164,12 @@ def test_cross_with_encroached_arms():
 
 
 def test_dangling_well_segment_both_sides():
-    # A well (2, 1)-(2, 3), both ends free, inside a 16-gon of radius 10 around (2, 2) (no boundary disk reaches
-    # the points below). q1 = (1.8, 2.5) left of it and q2 = (2.3, 1.6) right of it are inside its disk (center
-    # (2, 2), r 1; distances 0.54, 0.5). One point y would need y in [2.42, 2.5267] for q1 (from each end:
-    # 3 - 0.29 * 2 and 1 + 2.29 / 3 * 2) and in [1.536, 1.75] for q2: disjoint, so 2 points (lower bound 2);
-    # the two-sided greedy from (2, 1) places 1.75 (t = 0.45 / 1.2 = 3/8) then 1.75 + 0.6025 / 0.9375 * 1.25 =
-    # 2.5533; from (2, 3): 2.42 then 1.490.
+    # A well (2, 1)-(2, 3), both ends free, inside a 16-gon of radius 10 around (2, 2) (no boundary disk
+    # reaches the points below). q1 = (1.8, 2.5) left of it and q2 = (2.3, 1.6) right of it are inside its
+    # disk (center (2, 2), r 1; distances 0.54, 0.5). One point y would need y in [2.42, 2.5267] for q1 (from
+    # each end: 3 - 0.29 * 2 and 1 + 2.29 / 3 * 2) and in [1.536, 1.75] for q2: disjoint, so 2 points (lower
+    # bound 2); the two-sided greedy from (2, 1) places 1.75 (t = 0.45 / 1.2 = 3/8) then 1.75 + 0.6025 /
+    # 0.9375 * 1.25 = 2.5533; from (2, 3): 2.42 then 1.490.
     ring = polygon(16, 10.0, center=(2.0, 2.0))
     pts = np.r_[ring, [(2, 1), (2, 3), (1.8, 2.5), (2.3, 1.6)]]
     segs = loop(16) + [(16, 17)]
@@ -174,7 +177,7 @@ def test_dangling_well_segment_both_sides():
     res = nonobtuse.refine(d)
     assert_refined(d, res)
     assert res.stats["steiner_points"] == 2 and res.stats["lower_bound"] == 2
-    s = res.mesh.points[len(pts):]
+    s = res.mesh.points[len(pts) :]
     assert np.allclose(s[:, 0], 2.0, atol=1e-12)
     ys = np.sort(s[:, 1])
     assert 1.49 <= ys[0] <= 1.75 and 2.42 <= ys[1] <= 2.5534
@@ -200,11 +203,12 @@ def test_acute_junction_of_ten_degrees_terminates_with_the_junction_diagnosed():
     assert junction["min_angle_degrees"] == pytest.approx(10.0)
     angle = res.stats["diagnosis"]["angles"][0]
     assert angle["vertex"] == v and angle["degrees"] == pytest.approx(10.0)
-    # Concentric shells: from v the greedy end on the 0 degree arm is at |q|^2 / (q . d) = 1.01 / 1 for q = (1, 0.1)
-    # (the nearest blocker), on the 10 degree arm at 1.01 / (cos 10 + 0.1 sin 10) = 1.0078; the shell rule rounds
-    # both down to 2^0 = 1 (then rounded to a double point on the line, within ulps). The Steiner point nearest v
-    # on each arm is therefore at distance 1 from v, where the plain greedy would put 1.01 and 1.0078.
-    steiner = res.mesh.points[len(pts):]
+    # Concentric shells: from v the greedy end on the 0 degree arm is at |q|^2 / (q . d) = 1.01 / 1 for q =
+    # (1, 0.1) (the nearest blocker), on the 10 degree arm at 1.01 / (cos 10 + 0.1 sin 10) = 1.0078; the shell
+    # rule rounds both down to 2^0 = 1 (then rounded to a double point on the line, within ulps). The Steiner
+    # point nearest v on each arm is therefore at distance 1 from v, where the plain greedy would put 1.01 and
+    # 1.0078.
+    steiner = res.mesh.points[len(pts) :]
     r = np.hypot(*steiner.T)
     on_x_axis = steiner[:, 1] == 0
     assert on_x_axis.any() and (~on_x_axis).any()
@@ -222,10 +226,10 @@ def test_budget_exhausted_is_a_status_on_an_interface():
 
 
 def test_propagation_is_diagnosed_along_a_chain():
-    # The Figure 6 family (experiments/figure6_propagation.py) with 12 highlighted edges: one initial violation
-    # (the 120 degree triangle at p), whose repair puts Steiner points on several input edges (at least e_0
-    # and the interface e_1 it encroaches: a point on e_0 = (v0, v1) at its foot, half way, is within
-    # cos(30) of v1, inside e_1's disk).
+    # The Figure 6 family (experiments/figure6_propagation.py) with 12 highlighted edges: one initial
+    # violation (the 120 degree triangle at p), whose repair puts Steiner points on several input edges (at
+    # least e_0 and the interface e_1 it encroaches: a point on e_0 = (v0, v1) at its foot, half way, is
+    # within cos(30) of v1, inside e_1's disk).
     import sys
 
     sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "experiments"))
@@ -248,9 +252,8 @@ def layered_pslgs(draw):
     at random x with y within +-6 of it, integers), isolated integer points, a region seed per layer with
     attribute k, and optionally a dangling segment inside the bottom layer."""
     layers = draw(st.integers(2, 4))
-    top = 20 * layers
-    # Counter-clockwise: along the bottom, up the right side (a vertex per interface), back along the top, down
-    # the left side.
+    # Counter-clockwise: along the bottom, up the right side (a vertex per interface), back along the top,
+    # down the left side.
     pts = [(0, 0)] + [(100, 20 * k) for k in range(layers + 1)] + [(0, 20 * k) for k in range(layers, 0, -1)]
     n_boundary = len(pts)
     segs = loop(n_boundary)
@@ -292,16 +295,19 @@ def test_random_layered_pslgs_refine_and_verify(domain):
 
 @st.composite
 def fans(draw):
-    """k = 2..6 interfaces of length 3..7 from the center of a 16-gon of radius 10 at random whole-degree angles
-    (acute junctions down to 1 degree), with up to 11 isolated points on a 0.1 grid within 6 of the center."""
+    """k = 2..6 interfaces of length 3..7 from the center of a 16-gon of radius 10 at random whole-degree
+    angles (acute junctions down to 1 degree), with up to 11 isolated points on a 0.1 grid within 6 of the
+    center."""
     k = draw(st.integers(2, 6))
-    # Angles on a 1 degree grid, distinct: junction angles of 1 degree and up (near-coincident arms, 1e-6 degree
-    # apart, make the two arms mirror each other's points at ulp scale; that is a stress test, not a property).
+    # Angles on a 1 degree grid, distinct: junction angles of 1 degree and up (near-coincident arms, 1e-6
+    # degree apart, make the two arms mirror each other's points at ulp scale; that is a stress test, not a
+    # property).
     degrees = sorted(draw(st.sets(st.integers(0, 359), min_size=k, max_size=k)))
     angles = [math.radians(a) for a in degrees]
     lengths = draw(st.lists(st.integers(30, 70).map(lambda i: i / 10), min_size=k, max_size=k))
     # On a 0.1 grid: the refinement works in doubles, so features far below the coordinates' size (a point
-    # 1e-200 from a vertex, which hypothesis finds) end as status "stalled", as documented, not as a test case.
+    # 1e-200 from a vertex, which hypothesis finds) end as status "stalled", as documented, not as a test
+    # case.
     grid = st.integers(-42, 42).map(lambda i: i / 10)
     inner = draw(st.lists(st.tuples(grid, grid), max_size=11))
     arms = [(r * math.cos(a), r * math.sin(a)) for a, r in zip(angles, lengths)]
@@ -360,7 +366,8 @@ def test_every_input_of_the_2d_corpus_is_pinned():
 
 def test_cgshop_exterior_totals_beat_best_known():
     # Issue 4's target on simple-polygon-exterior(-20): below the best known all-triangle counts of
-    # best_known.csv (every triangle nonobtuse there, a stronger requirement than ours, so ours should be lower).
+    # best_known.csv (every triangle nonobtuse there, a stronger requirement than ours, so ours should be
+    # lower).
     import csv
 
     best_file = SHARED / "cgshop25" / "best_known.csv"

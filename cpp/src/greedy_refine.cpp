@@ -145,7 +145,8 @@ void greedy_refine(State& st) {
     const std::size_t before = st.queue.size();
     st.propagation.begin(side.s->info(), side.e->info(), st.placed);
     sweep(st, shell_anchor(st, side), deferred);
-    for (std::size_t i = before; i < st.queue.size(); ++i) st.propagation.queued(st.queue[i].s->info(), st.queue[i].e->info());
+    for (std::size_t i = before; i < st.queue.size(); ++i)
+      st.propagation.queued(st.queue[i].s->info(), st.queue[i].e->info());
     st.propagation.end(st.placed);
   }
 }

@@ -35,8 +35,10 @@ double degrees(const Point2& v, const Point2& a, const Point2& b) {
 
 template <class T>
 void keep_top(std::vector<T>& rows) {
-  rows.erase(std::remove_if(rows.begin(), rows.end(), [](const T& r) { return r.steiner_points == 0; }), rows.end());
-  std::stable_sort(rows.begin(), rows.end(), [](const T& a, const T& b) { return a.steiner_points > b.steiner_points; });
+  rows.erase(std::remove_if(rows.begin(), rows.end(), [](const T& r) { return r.steiner_points == 0; }),
+             rows.end());
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const T& a, const T& b) { return a.steiner_points > b.steiner_points; });
   if (rows.size() > kTop) rows.resize(kTop);
 }
 
@@ -61,7 +63,8 @@ RefineDiagnosis2 diagnose(const State& st) {
   std::vector<JunctionStats> junctions(n);
   for (int v = 0; v < n; ++v) {
     junctions[v] = {v, static_cast<int>(around[v].size()), 360.0, 0};
-    for (int a : around[v]) junctions[v].min_angle_degrees = std::min(junctions[v].min_angle_degrees, neighbour(v, a).first);
+    for (int a : around[v])
+      junctions[v].min_angle_degrees = std::min(junctions[v].min_angle_degrees, neighbour(v, a).first);
   }
   std::map<std::pair<int, int>, InputAngleStats> angles;  // (vertex, a) -> stats
   std::map<int, std::set<int>> edges_of_cause;

@@ -19,7 +19,9 @@ class Propagation {
   void end(long long placed);
   int causes() const { return causes_; }
   // Cause of Steiner point k (0-based among Steiner points); -1 for points placed outside a sweep.
-  int steiner_cause(long long k) const { return k < static_cast<long long>(cause_of_point_.size()) ? cause_of_point_[k] : -1; }
+  int steiner_cause(long long k) const {
+    return k < static_cast<long long>(cause_of_point_.size()) ? cause_of_point_[k] : -1;
+  }
 
  private:
   static std::pair<int, int> key(int s, int e) { return {std::min(s, e), std::max(s, e)}; }
