@@ -378,3 +378,18 @@ def test_cgshop_exterior_totals_beat_best_known():
     ours = {n: p["greedy"] for n, p in PINS.items() if "simple-polygon-exterior" in n}
     assert len(ours) == 52
     assert sum(ours.values()) < sum(best[Path(n).name.split(".")[0]] for n in ours)
+
+
+def test_cgshop_exterior_total_is_at_most_a_quarter_of_triangle_pd():
+    # Issue 4's other target on the same 52 instances: at most a quarter of Triangle -pD's Steiner points
+    # (Triangle splits every encroached subsegment at its midpoint, on both sides, exterior included).
+    triangle = pytest.importorskip("triangle")
+    names = [n for n in PINS if "simple-polygon-exterior" in n]
+    if not (SHARED / names[0]).exists():
+        pytest.skip("../shared/data not present")
+    total = 0
+    for n in names:
+        d = corpus_domain(n)
+        out = triangle.triangulate({"vertices": d.points, "segments": d.segments}, "pDQ")
+        total += len(out["vertices"]) - len(d.points)
+    assert 4 * sum(PINS[n]["greedy"] for n in names) <= total
