@@ -75,12 +75,16 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   long long budget = options.max_steiner < 0 ? default_steiner_budget(domain.points.size()) : options.max_steiner;
   State st(domain, budget);
 
-  // Lower bound. For each input boundary edge E, any valid refinement's subsegments of E have empty open
-  // half-disks with respect to every vertex, in particular the input vertices; Greedy-Refine of E against the
-  // input vertices alone is optimal for that weaker single-edge problem (Theorem 2), and more vertices only add
-  // constraints, so no refinement placing Steiner points on E uses fewer. Edges are disjoint, so the bounds add.
-  // (Encroachers are the input vertices reachable inside E's half-disk without crossing a constraint; for a
-  // convex domain these are exactly the visible ones.)
+  // Lower bound. For each input boundary edge E, every subsegment of E in any valid refinement has an open
+  // half-disk free of the vertices it sees, in particular of the input vertices. Greedy-Refine of E against the
+  // input vertices alone is optimal for that weaker single-edge problem (Theorem 2: the greedy end is as far as
+  // any solution's first point can be, by the exchange argument), and more vertices only add constraints, so no
+  // refinement placing Steiner points on E uses fewer. Edges are disjoint, so the bounds add.
+  // Visibility: a vertex counts for a subsegment when it is reachable from E inside the subsegment's disk
+  // without crossing a constraint. With closed boundary loops only (polygons, holes, point sets), reachable
+  // inside the disk implies that some vertex there is visible, hence that the subsegment is encroached, so the
+  // count is exact. Dangling interior constraints (issue 4) could hide a reachable vertex (a pinwheel of
+  // segments); the bound could then overcount.
   // An interface edge is one single-edge problem with the encroachers of both sides (the walk collects both).
   std::vector<bool> bounded(st.edges.size(), false);
   for (const Side& side : st.boundary_sides()) {

@@ -307,7 +307,22 @@ Vertex_handle State::split(const Side& side, const Point& p) {
         edge_index_[{std::min(a->info(), b->info()), std::max(a->info(), b->info())}] = edge;
     }
   remark_around(v, next_on_constraint(v, side.e), next_on_constraint(v, side.s), left, right);
+#ifdef NONOBTUSE_CHECK_INVARIANTS
+  check_invariants();
+#endif
   return v;
+}
+
+void State::check_invariants() {
+  if (!cdt.is_valid()) throw InternalError("refine2d: the triangulation is invalid after a split");
+  std::vector<std::pair<bool, double>> kept;
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+    kept.emplace_back(f->info().in_domain, f->info().region);
+  cdt::mark_domain(cdt, domain);  // the marks from scratch; equal to the maintained ones when remark_around is right
+  std::size_t k = 0;
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f, ++k)
+    if (kept[k] != std::make_pair(f->info().in_domain, f->info().region))
+      throw InternalError("refine2d: domain marks maintained by split differ from mark_domain");
 }
 
 Vertex_handle State::next_on_constraint(Vertex_handle from, Vertex_handle end) const {

@@ -80,6 +80,9 @@ class State {
   bool keeps_triangles_valid(const Side& side, const Point& p) const;
 
   bool budget_left() const { return placed < budget; }
+  // Debug builds (NONOBTUSE_CHECK_INVARIANTS), after every split: CGAL's is_valid, and the maintained domain marks
+  // equal a recomputation (which then replaces them). O(n): debug only.
+  void check_invariants();
   // Every boundary side pushed on the queue.
   void enqueue_all();
   // The index in `edges` of the input boundary edge a subsegment lies on (either orientation).

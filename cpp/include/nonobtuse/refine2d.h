@@ -47,9 +47,10 @@ struct RefineResult2 {
   double seconds = 0.0;
 };
 
-// Default Steiner budget for n input points: 10 n + 1000. Greedy places at most one point per input vertex
-// encroaching each edge in the convex case, and Project-Flip O(n) points (paper, section 3.3), so a well-posed
-// input needs far fewer; the budget exists for PSLG-like interference cascades (paper, Figure 6).
+// Default Steiner budget for n input points: 10 n + 1000. On one edge greedy needs at most one point per
+// encroaching vertex (projecting every encroacher is a solution and greedy is optimal, Theorem 2), and
+// Project-Flip O(n) points on polygons (paper, section 3.3), so well-posed inputs need far fewer; the budget is
+// for interference cascades (paper, Figure 6), where no polynomial bound is known.
 long long default_steiner_budget(std::size_t n_points);
 
 // Refines every constraint of `domain` (validated by the caller): boundary segments (the domain on one side, or
@@ -61,7 +62,7 @@ long long default_steiner_budget(std::size_t n_points);
 //
 // optimal: 1 when steiner_points == lower_bound (the bound is then attained); otherwise, for the Greedy strategy
 // on a convex polygon (no holes, no interior points or constraints) that converged without a fallback step, 1 by
-// Theorem 3 of the paper; -1 (unknown) in every other case.
+// Theorem 3 of the paper; -1 (unknown) in every other case (0 is never claimed: the optimum is not computed).
 // Throws InvalidInput when the domain cannot be triangulated (crossing constraints, no triangle).
 // Cost: O(n log n) to triangulate, plus per Steiner point the walk over the triangles meeting the diametral
 // disk of the refined subsegment.
