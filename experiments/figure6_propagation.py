@@ -13,8 +13,10 @@ mechanism), so a method that repairs each edge with one point near the foot of i
 splitting: Triangle -pD, CGAL) walks the whole strip. The sensitive greedy need not: on e_{k+1} it puts its
 first point at the start of e_{k+2}'s forbidden interval and its next ones out of it where it can, and the
 cascade stops after a few edges (measured: the same handful of points for every n, 8 with propagation depth
-6 in results/figure6_propagation.csv, against n + 3 for Triangle -pD and CGAL). So this family shows the Omega(n) of midpoint refinement, not a lower bound for every
-method; we did not find a quality family that forces one point per edge on every refinement.
+6 in results/figure6_propagation.csv, against n + 3 for Triangle -pD and CGAL). So this family shows the
+Omega(n) of midpoint refinement, not a lower bound for every method; we did not find a quality family that
+forces one point per edge on every refinement (a random search over zigzag strips with nonobtuse triangles
+found none where greedy's count grows with n).
 
 We measure, for n from 10 to 10,000, the Steiner points of nonobtuse.refine (greedy), Triangle -pD and CGAL
 make_conforming_Gabriel_2, and fit the slope of each against n.
