@@ -7,7 +7,6 @@
 namespace nonobtuse {
 namespace {
 
-using refine2d::Face_handle;
 using refine2d::Side;
 using refine2d::State;
 
@@ -32,20 +31,6 @@ long long count_obtuse_boundary(const Mesh2& mesh) {
     for (int c : a) bad += CGAL::angle(pt(s[0]), pt(c), pt(s[1])) == CGAL::OBTUSE;
   }
   return bad;
-}
-
-// The domain is a convex polygon without holes, interior points or interior constraints: every boundary side
-// has the infinite face across it, and every vertex is on a constraint.
-bool is_convex_polygon(const State& st) {
-  for (const Side& side : st.boundary_sides()) {
-    Face_handle f = st.left_face(side);
-    if (!st.cdt.is_infinite(f->neighbor(f->index(st.apex(side))))) return false;
-  }
-  for (auto e = st.cdt.constrained_edges_begin(); e != st.cdt.constrained_edges_end(); ++e)
-    if (e->first->info().in_domain && e->first->neighbor(e->second)->info().in_domain) return false;
-  for (auto v = st.cdt.finite_vertices_begin(); v != st.cdt.finite_vertices_end(); ++v)
-    if (!st.cdt.are_there_incident_constraints(v)) return false;
-  return true;
 }
 
 }  // namespace
@@ -93,7 +78,6 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
     bounded[k] = true;
     st.edges[k].lower_bound = st.greedy_count(side, st.walk_diametral_disk(side).encroachers);
   }
-  const bool convex = is_convex_polygon(st);
 
   auto run = [&] {
     switch (options.strategy) {
@@ -123,7 +107,7 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   }
 
   RefineResult2 r;
-  r.mesh = cdt::to_mesh(st.cdt);
+  r.mesh = st.finish();
   r.obtuse_boundary_triangles = count_obtuse_boundary(r.mesh);
   r.steiner_points = st.placed;
   for (const auto& e : st.edges) r.lower_bound += e.lower_bound;
@@ -134,7 +118,7 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
                                                 : RefineStatus::BudgetExhausted;
   if (r.status == RefineStatus::Converged && r.steiner_points == r.lower_bound)
     r.optimal = 1;
-  else if (r.status == RefineStatus::Converged && options.strategy == RefineStrategy::Greedy && convex &&
+  else if (r.status == RefineStatus::Converged && options.strategy == RefineStrategy::Greedy && st.convex_polygon &&
            !st.fallback_used)
     r.optimal = 1;  // Theorem 3
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <initializer_list>
 #include <tuple>
 
 namespace nonobtuse::refine2d {
@@ -24,11 +25,49 @@ double distance2_to_segment(double cx, double cy, const Point& u, const Point& w
 
 State::State(const Domain2& d, long long b) : domain(d), n_input(static_cast<int>(d.points.size())), budget(b) {
   cdt::build(cdt, domain);
+  if (std::none_of(cdt.finite_faces_begin(), cdt.finite_faces_end(), [](const auto& f) { return f.info().in_domain; }))
+    throw InvalidInput("the domain contains no triangle (are all points collinear, or is everything a hole?)");
   for (const Side& side : boundary_sides()) {
     int a = side.s->info(), c = side.e->info();
     if (edge_index_.emplace(std::make_pair(std::min(a, c), std::max(a, c)), static_cast<int>(edges.size())).second)
       edges.push_back({{a, c}, 0, 0});  // an interface appears once, as (min, max)
   }
+  convex_polygon = is_convex_polygon();
+  insert_frame();
+}
+
+bool State::is_convex_polygon() const {
+  for (const Side& side : boundary_sides()) {
+    Face_handle f = left_face(side);
+    if (!cdt.is_infinite(f->neighbor(f->index(apex(side))))) return false;
+  }
+  for (auto e = cdt.constrained_edges_begin(); e != cdt.constrained_edges_end(); ++e)
+    if (e->first->info().in_domain && e->first->neighbor(e->second)->info().in_domain) return false;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if (!cdt.are_there_incident_constraints(v)) return false;
+  return true;
+}
+
+void State::insert_frame() {
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  for (const auto& p : domain.points) {
+    x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+  }
+  if (!(x0 <= x1)) return;
+  double pad = 4 * std::max({x1 - x0, y1 - y0, 1.0});
+  for (Point corner : {Point(x0 - pad, y0 - pad), Point(x1 + pad, y0 - pad), Point(x1 + pad, y1 + pad),
+                       Point(x0 - pad, y1 + pad)}) {
+    Vertex_handle v = cdt.insert(corner);
+    v->info() = -1;
+    frame_.push_back(v);
+  }
+  cdt::mark_domain(cdt, domain);
+}
+
+Mesh2 State::finish() {
+  for (Vertex_handle v : frame_) cdt.remove(v);  // outside faces only: the domain's triangles do not change
+  frame_.clear();
+  return cdt::to_mesh(cdt);
 }
 
 Face_handle State::left_face(const Side& side) const {

@@ -34,7 +34,12 @@ struct DiskWalk {
 
 class State {
  public:
+  // Triangulates the domain (cdt::build), then adds a frame of 4 vertices far outside: boundary subsegments are
+  // then never edges of CGAL's convex hull, which must stay convex, so Steiner points may bend them by ulps either
+  // way. The frame is removed by finish().
   State(const Domain2& domain, long long budget);
+  // Removes the frame and returns the mesh (cdt::to_mesh).
+  Mesh2 finish();
 
   CDT cdt;
   const Domain2& domain;
@@ -42,6 +47,7 @@ class State {
   const long long budget;
   long long placed = 0;
   bool fallback_used = false;     // a greedy step had to break another subsegment's empty disk
+  bool convex_polygon = false;    // the input domain is a convex polygon without holes, inner points or constraints
   std::deque<Side> queue;         // sides to (re)examine
   std::vector<BoundaryEdgeStats> edges;
 
@@ -118,6 +124,9 @@ class State {
   int greedy_count(const Side& side, std::vector<Vertex_handle> q) const;
 
  private:
+  bool is_convex_polygon() const;  // every boundary side on the hull, no interface, every vertex on a constraint
+  void insert_frame();
+  std::vector<Vertex_handle> frame_;
   // The neighbour of `from` along the constraint toward `end` (`end`, or a vertex the constraint passes through).
   Vertex_handle next_on_constraint(Vertex_handle from, Vertex_handle end) const;
   // Domain marks of the faces changed by inserting v between to_s and to_e (see split); queues their sides.
