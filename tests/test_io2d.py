@@ -425,3 +425,27 @@ def test_shared_inputs_load_or_raise_a_clear_error(path):
     assert len(d.points) > 0
     if path.suffix == ".json":
         assert not d.convex_hull  # CG:SHOP instances have a closed region boundary
+
+
+@pytest.mark.parametrize(
+    "body, message",
+    [
+        # vertex 2 (line 3) has a NaN coordinate
+        (
+            "1 0 0\n2 nan 0\n3 0 1\n4 1 1\n0\n0\n",
+            r"point 1 \(id 2 in the file\) at \(nan, 0\.0\) \(line 3\) has a",
+        ),
+        # vertices 1 (line 2) and 4 (line 5) coincide; -0.0 equals 0.0
+        ("1 0 0\n2 1 0\n3 0 1\n4 -0.0 0\n0\n0\n", r"point 0 .*\(line 2\) and point 3 .*\(line 5\) are equal"),
+        # the diagonals 1-4 (line 7) and 2-3 (line 8) cross at (0.5, 0.5)
+        (
+            "1 0 0\n2 1 0\n3 0 1\n4 1 1\n2 0\n1 1 4\n2 2 3\n0\n",
+            r"segment 0 .*\(line 7\) and segment 1 .*\(line 8\)",
+        ),
+    ],
+)
+def test_validation_messages_carry_file_lines(tmp_path, body, message):
+    p = write(tmp_path, "v.poly", "4 2 0 0\n" + body)
+    with pytest.raises(InvalidInputError, match=message) as e:
+        load_domain(p, convex_hull=True)
+    assert str(e.value).startswith(f"{p}: ")

@@ -3,18 +3,22 @@
 // A boundary side (s, e) is violated when its triangle's apex is strictly inside the diametral disk; in a CDT
 // that happens iff some vertex visible from the open subsegment lies in the open half-disk on the domain side.
 // A sweep walks from s toward e: each step places the Steiner point x at the end of the longest subsegment
-// [s, x] whose half-disk is empty (closed form t* = min |q - s|^2 / ((q - s) . d), Theorem 2), unless x lies in
-// a forbidden interval: inside the open half-disk of another boundary subsegment f met by the walk, where the
-// point would break f (Figure 5). Then x moves back to the interval's start (Theorem 3's rule).
+// [s, x] whose half-disk holds no vertex it sees (closed form t* = min |q - s|^2 / ((q - s) . d) over the
+// vertices q reachable inside the disk, Theorem 2 and section 4.4), unless x lies in a forbidden interval: inside
+// the open half-disk of another boundary subsegment f whose triangle would get x as apex (found exactly in x's
+// conflict zone), where x would break f (Figure 5). Then x moves back to the interval's start (Theorem 3's
+// rule); where the start is s itself, see choose_point.
 //
 // PSLGs (issue 4): an interface or dangling subsegment is swept once for both of its sides (encroachers of both,
 // t* = min over both); a sweep starting at an acute junction puts its first point on a power-of-two shell
 // (concentric_shells.cpp, with the termination argument of that rule).
 //
 // Termination: every step inserts one Steiner point strictly inside the subsegment being refined, and the
-// budget caps the points; a side is deferred at most once (the deferred set), so the queue drains. Within the
-// budget, for convex polygons Theorem 3 bounds the points by the optimum; in general (holes, reflex vertices,
+// budget caps the points; a side is deferred at most once (the deferred set), so the queue drains: a side leaves
+// the queue when it is not violated, and re-enters only when a split changes its triangle. Within the budget,
+// for convex polygons Theorem 3 bounds the points by the optimum; in general (holes, reflex vertices,
 // interfaces) no polynomial bound is known (paper, Figure 6), hence the budget and the status.
+#include <algorithm>
 #include <optional>
 #include <set>
 
@@ -115,14 +119,16 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
 }
 
 // Refines the violated side from s toward e until the remaining subsegment is fine, a step is deferred, or the
-// budget is spent. The walk runs once: points placed on this edge never encroach its other subsegments (they
-// are on its line or just outside), so the first walk's encroachers stay a superset.
+// budget is spent. The walk runs once: points placed on this edge lie on its line or within ulps of it, where
+// they do not encroach its other subsegments, so the first walk's encroachers stay a superset; should that ever
+// fail (the apex is not among them), the walk is redone.
 void sweep(State& st, Side cur, std::set<Key>& deferred) {
   DiskWalk w = st.walk_diametral_disk(cur);
   // Interfaces: both sides at once (the walk collected both sides' encroachers).
   while (st.budget_left() && (st.is_violated(cur) || st.is_violated({cur.e, cur.s}))) {
     keep_encroaching(cur.s->point(), cur.e->point(), w.encroachers);
-    if (w.encroachers.empty()) throw InternalError("greedy_refine: a violated subsegment without encroacher");
+    if (std::find(w.encroachers.begin(), w.encroachers.end(), st.apex(cur)) == w.encroachers.end())
+      w = st.walk_diametral_disk(cur);
     Point p;
     Step step = choose_point(st, cur, w, deferred, p);
     if (step == Step::Defer) st.queue.push_back(cur);

@@ -1,7 +1,7 @@
 // nonobtuse::refine: strategy dispatch, the lower bound, the optimality flag and the exact certificate.
 #include <chrono>
-#include <unordered_map>
 
+#include "nonobtuse/check2d.h"
 #include "refine2d_state.h"
 
 namespace nonobtuse {
@@ -10,25 +10,15 @@ namespace {
 using refine2d::Side;
 using refine2d::State;
 
-// Exact certificate of a mesh as returned: the number of constrained subsegment sides (one per incident domain
-// triangle: one for a boundary segment, two for an interface or dangling segment) whose triangle is obtuse at the
-// apex opposite the subsegment (CGAL::angle on the stored doubles).
+// Exact certificate of a mesh as returned (check2d's classifier): the sides of boundary edges (a triangle on one
+// side) and of interfaces (a constrained segment or a region jump with triangles on both sides, each side
+// checked on its own: issue 4) whose triangle is obtuse at the apex opposite the edge.
 long long count_obtuse_boundary(const Mesh2& mesh) {
-  std::unordered_map<std::uint64_t, std::vector<int>> apexes;  // segment key -> apex of each incident triangle
-  auto key = [](int a, int b) {
-    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b));
-  };
-  for (const auto& s : mesh.segments) apexes[key(s[0], s[1])];
-  for (const auto& t : mesh.triangles)
-    for (int i = 0; i < 3; ++i) {
-      auto it = apexes.find(key(t[(i + 1) % 3], t[(i + 2) % 3]));
-      if (it != apexes.end()) it->second.push_back(t[i]);
-    }
-  auto pt = [&](int i) { return cdt::to_cgal(mesh.points[i]); };
   long long bad = 0;
-  for (const auto& s : mesh.segments) {
-    const auto& a = apexes[key(s[0], s[1])];
-    for (int c : a) bad += CGAL::angle(pt(s[0]), pt(c), pt(s[1])) == CGAL::OBTUSE;
+  for (const EdgeReport& r : classify_edges(mesh)) {
+    if (r.kind == EdgeKind::Interior) continue;
+    for (const EdgeSide* side : {&r.left, &r.right})
+      if (side->triangle >= 0 && side->angle == AngleClass::Obtuse) ++bad;
   }
   return bad;
 }

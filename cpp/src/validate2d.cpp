@@ -116,8 +116,17 @@ SeedPlace place_of(const cdt::CDT& t, const Point2& at, Inside inside) {
 DomainCoverage inspect_domain(const Domain2& domain) {
   check_indices(domain.points.size(), domain.segments);
   cdt::CDT t;
-  const std::vector<cdt::Vertex_handle> vh = cdt::build(t, domain);
+  Domain2 without_holes = domain;  // cdt::mark_domain cannot place hole seeds in a 1D triangulation
+  without_holes.holes.clear();
+  const std::vector<cdt::Vertex_handle> vh = cdt::build(t, without_holes);
   DomainCoverage cov;
+  if (t.dimension() < 2) {  // all points collinear: no triangle, nothing inside
+    for (std::size_t s = 0; s < domain.segments.size(); ++s) cov.segments_outside.push_back(int(s));
+    cov.holes.assign(domain.holes.size(), SeedPlace::Outside);
+    cov.regions.assign(domain.regions.size(), SeedPlace::Outside);
+    return cov;
+  }
+  cdt::mark_domain(t, domain);
   // cdt::mark_domain: component -2 = reached from the unbounded face (exterior), -3 = hole, >= 0 = domain.
   for (auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f) {
     cov.encloses_area = cov.encloses_area || f->info().component != -2;

@@ -105,6 +105,20 @@ TEST(Validate2dCoverage, DanglingSegmentsAloneEncloseNothing) {
   EXPECT_EQ(c.segments_outside, (std::vector<int>{0}));
 }
 
+TEST(Validate2dCoverage, CollinearPointsCoverNothing) {
+  Domain2 d;
+  d.points = {{0, 0}, {1, 0}, {3, 0}};
+  d.segments = {{0, 1}};
+  d.holes = {{2, 0}};
+  d.regions = {{{2, 0}, 1.0}};
+  DomainCoverage c = inspect_domain(d);
+  EXPECT_FALSE(c.encloses_area);
+  EXPECT_EQ(c.domain_triangles, 0);
+  EXPECT_EQ(c.segments_outside, (std::vector<int>{0}));
+  EXPECT_EQ(c.regions, (std::vector<SeedPlace>{SeedPlace::Outside}));
+  EXPECT_EQ(c.holes, (std::vector<SeedPlace>{SeedPlace::Outside}));
+}
+
 TEST(Validate2dCoverage, SegmentThroughAPointIsInvalidInput) {
   Domain2 d = square();
   d.points.push_back({2, 0});  // inside segment 0

@@ -40,7 +40,7 @@ from nonobtuse import _core
 from nonobtuse.domain import Domain, SourceMap
 from nonobtuse.errors import InvalidInputError
 
-__all__ = ["check_coverage", "segments_enclose_area", "validate_domain", "validate_graph"]
+__all__ = ["check_coverage", "validate_domain", "validate_graph"]
 
 _SHOWN = 5  # how many offending items a message lists before "and N more"
 
@@ -93,10 +93,22 @@ def validate_graph(domain: Domain, *, split_points_on_segments: bool = True) -> 
     return d
 
 
-def check_coverage(domain: Domain, *, require_closed: bool = True) -> Domain:
-    """Check 6 of the module docstring on a domain that passed :func:`validate_graph`; returns ``domain``."""
+def check_coverage(
+    domain: Domain, *, require_closed: bool = True, decide_convex_hull: bool = False
+) -> Domain:
+    """Check 6 of the module docstring on a domain that passed :func:`validate_graph`; returns ``domain``.
+
+    decide_convex_hull: set ``domain.convex_hull`` first: True when the segments enclose no area at all (a
+    point set, or only dangling segments), else False. Cost: one constrained Delaunay triangulation (two when
+    segments are present but enclose nothing).
+    """
     d = domain
+    if decide_convex_hull:
+        d.convex_hull = len(d.segments) == 0
     cov = _core.inspect_domain(d.points, d.segments, d.holes, d.regions, d.convex_hull)
+    if decide_convex_hull and not d.convex_hull and not cov["encloses_area"]:
+        d.convex_hull = True
+        cov = _core.inspect_domain(d.points, d.segments, d.holes, d.regions, True)
     for kind, places, inside in (
         (
             "hole",
@@ -118,15 +130,6 @@ def check_coverage(domain: Domain, *, require_closed: bool = True) -> Domain:
     if cov["domain_triangles"] == 0:
         raise _invalid(d, "the domain contains no triangle (are all points collinear?)")
     return d
-
-
-def segments_enclose_area(domain: Domain) -> bool:
-    """True when some triangle is enclosed by segments (holes ignored): False for a point set, or when every
-    segment dangles. Input: a domain that passed :func:`validate_graph`. Cost: one triangulation."""
-    d = domain
-    return bool(
-        _core.inspect_domain(d.points, d.segments, d.holes[:0], d.regions[:0], False)["encloses_area"]
-    )
 
 
 def _open_boundary_message(d: Domain, outside: np.ndarray) -> str:

@@ -45,7 +45,7 @@ from nonobtuse.io import json_formats, triangle
 from nonobtuse.io.meshio_formats import FORMATS as _MESHIO_FORMATS
 from nonobtuse.io.meshio_formats import read_meshio, write_meshio
 from nonobtuse.mesh import Mesh
-from nonobtuse.validate import check_coverage, segments_enclose_area, validate_graph
+from nonobtuse.validate import check_coverage, validate_graph
 
 __all__ = ["is_mesh_file", "load_domain", "read_mesh", "write_mesh"]
 
@@ -71,9 +71,7 @@ def load_domain(
         convex_hull = file_hull
     domain.convex_hull = bool(convex_hull)
     d = validate_graph(domain, split_points_on_segments=split_points_on_segments)
-    if convex_hull is None:
-        d.convex_hull = len(d.segments) == 0 or not segments_enclose_area(d)
-    return check_coverage(d, require_closed=True)
+    return check_coverage(d, require_closed=True, decide_convex_hull=convex_hull is None)
 
 
 def _read_domain(path: Path) -> tuple[Domain, bool | None]:

@@ -1,0 +1,121 @@
+// 3D: the exact Gabriel certificate of a tetrahedral mesh's boundary (check_gabriel) and the Ruppert-like repair of
+// a piecewise linear complex until every subfacet and subsegment has an empty diametral sphere (refine_gabriel).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "nonobtuse/types.h"
+
+namespace nonobtuse {
+
+struct Point3 {
+  double x = 0.0;
+  double y = 0.0;
+  double z = 0.0;
+};
+
+using Tetrahedron = std::array<int, 4>;  // indices, positively oriented
+
+// A boundary simplex (face or segment) whose open diametral sphere holds a mesh vertex.
+struct Encroachment {
+  int index = -1;      // row in the faces (or segments) that were checked
+  int vertex = -1;     // the deepest encroaching vertex
+  double depth = 0.0;  // 1 - |vertex - center| / radius, in (0, 1]; floating point, for display only
+};
+
+struct GabrielReport {
+  std::vector<Encroachment> faces;
+  std::vector<Encroachment> segments;
+  std::size_t candidates = 0;  // (simplex, vertex) pairs the float search passed to the exact predicate
+};
+
+// For every face (a, b, c): is some point strictly inside its diametral sphere (the smallest sphere through a, b, c,
+// CGAL side_of_bounded_sphere)? For every segment (a, b): is some point strictly inside the sphere with diameter ab?
+// Points on a sphere do not encroach (right angles are fine). Decisions are exact on the coordinates as stored; a
+// kd-tree with a provably conservative floating-point search radius only proposes candidates.
+// Throws InvalidInput for a face with collinear corners or a segment with coincident ends (no diametral sphere).
+// Cost: O((n + f + k) log n) for well-shaped input (each sphere holds O(1) points).
+GabrielReport check_gabriel(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+                            const std::vector<Segment>& segments);
+
+// A piecewise linear complex: triangulated facets (triangles sharing a facet id form one planar facet) and segments.
+struct PLC3 {
+  std::vector<Point3> points;
+  std::vector<Triangle> triangles;
+  std::vector<int> facet_ids;  // one per triangle
+  std::vector<Segment> segments;
+  std::vector<Point3> holes;                   // volume-hole seeds
+  std::vector<std::array<double, 4>> regions;  // x, y, z, attribute
+};
+
+enum class SplitRule : std::int8_t { Midpoint = 0, Shells = 1 };
+enum class Refine3Status : std::int8_t { Converged = 0, BudgetExhausted = 1, MinLengthReached = 2, Stalled = 3 };
+
+struct Refine3Progress {
+  long steiner_points = 0;
+  long encroached_segments = 0;  // found by the last scan
+  long encroached_facets = 0;
+  double seconds = 0.0;
+};
+
+struct Refine3Options {
+  long max_steiner = 10000;
+  double min_length = 0.0;   // no split may create a subsegment (or an edge to a facet Steiner point) shorter
+  double time_limit = 60.0;  // seconds
+  SplitRule split = SplitRule::Shells;
+  long progress_every = 1000;  // insertions between progress calls
+  std::function<void(const Refine3Progress&)> progress;
+};
+
+// One small angle of the input, in degrees (floating point: a diagnosis, not a decision).
+struct InputAngle {
+  std::string kind;           // "segment-segment", "segment-facet" or "dihedral"
+  double degrees = 0.0;
+  std::vector<int> vertices;  // segment-segment: apex, end, end; segment-facet: apex, segment end; dihedral: a, b
+  std::vector<int> facets;    // facet ids involved
+};
+
+struct SteinerCount {
+  std::vector<int> where;  // an input vertex, or the two ends of an input segment
+  long count = 0;
+};
+
+struct Refine3Diagnosis {
+  std::vector<InputAngle> smallest_angles;   // the few smallest of each kind, ascending
+  std::vector<SteinerCount> per_vertex;      // Steiner points by nearest input vertex, top few
+  std::vector<SteinerCount> per_segment;     // Steiner points on each input segment, top few
+  std::string stop_reason;
+};
+
+struct Refine3Result {
+  std::vector<Point3> points;  // PLC points first, in input order, then Steiner points
+  std::vector<Tetrahedron> tets;
+  std::vector<Triangle> boundary_faces;  // oriented away from the tet behind them
+  std::vector<int> face_markers;         // input facet id of each boundary face
+  std::vector<Segment> segments;         // subsegments of the PLC segments and of the facets' boundary edges
+  std::vector<double> tet_regions;
+  Refine3Status status = Refine3Status::Stalled;
+  long steiner_on_segments = 0;
+  long steiner_on_facets = 0;
+  double seconds = 0.0;
+  double smallest_subsegment = 0.0;
+  GabrielReport certificate;  // check_gabriel on (points, boundary_faces, segments) as returned
+  Refine3Diagnosis diagnosis;
+};
+
+// Ruppert-like repair: splits encroached subsegments (midpoint, or concentric shells around input vertices) and
+// encroached subfacets (at their circumcenter, or the subsegment that point encroaches or lies beyond) until every
+// subsegment and subfacet has an empty open diametral sphere, then returns the Delaunay tetrahedralization of all
+// vertices restricted to the PLC's interior (flood fill from outside across boundary faces; hole seeds removed).
+// Steiner points lie on segments and facets (up to rounding of their coordinates). Stops at max_steiner, min_length,
+// time_limit, or when no progress is possible (stalled). status == Converged iff the exact check of the returned
+// mesh passes. Throws InvalidInput on malformed input (index out of range, duplicate points, degenerate or
+// non-planar facets, crossing facet edges).
+Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options);
+
+const char* to_string(Refine3Status status);
+
+}  // namespace nonobtuse

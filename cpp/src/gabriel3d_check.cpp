@@ -1,0 +1,225 @@
+// The exact Gabriel certificate of a 3D boundary: empty open diametral spheres of faces and segments.
+#include <CGAL/Interval_nt.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <string>
+
+#include "gabriel3d_index.h"
+
+namespace nonobtuse::gabriel3d {
+namespace {
+
+using I = CGAL::Interval_nt<false>;  // needs the rounding mode set upward: callers hold a Protect_FPU_rounding
+
+struct IVec {
+  I x, y, z;
+};
+IVec operator-(const IVec& a, const IVec& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+IVec operator*(const I& s, const IVec& a) { return {s * a.x, s * a.y, s * a.z}; }
+I dot(const IVec& a, const IVec& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+IVec cross(const IVec& a, const IVec& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+IVec ivec(const P3& p) { return {I(p.x()), I(p.y()), I(p.z())}; }
+
+// The smallest ball around a double center that contains every ball with center in `center` and radius in
+// `radius` (all intervals).
+SearchBall enclose(const IVec& center, const I& radius) {
+  SearchBall ball;
+  const I* c[3] = {&center.x, &center.y, &center.z};
+  I spread2(0);
+  for (int k = 0; k < 3; ++k) {
+    double mid = 0.5 * (c[k]->inf() + c[k]->sup());
+    if (!std::isfinite(mid)) {
+      ball.everything = true;
+      return ball;
+    }
+    ball.center[k] = mid;
+    double d = std::max((I(c[k]->sup()) - I(mid)).sup(), (I(mid) - I(c[k]->inf())).sup());
+    spread2 += I(d) * I(d);
+  }
+  ball.radius = (radius + CGAL::sqrt(spread2)).sup();
+  ball.everything = !std::isfinite(ball.radius);
+  return ball;
+}
+
+}  // namespace
+
+SearchBall search_ball(const P3& a, const P3& b) {
+  CGAL::Protect_FPU_rounding<true> upward;
+  IVec ia = ivec(a), ib = ivec(b);
+  IVec center = I(0.5) * IVec{ia.x + ib.x, ia.y + ib.y, ia.z + ib.z};
+  IVec d = ib - ia;
+  return enclose(center, I(0.5) * CGAL::sqrt(dot(d, d)));
+}
+
+SearchBall search_ball(const P3& a, const P3& b, const P3& c) {
+  CGAL::Protect_FPU_rounding<true> upward;
+  IVec ia = ivec(a), u = ivec(b) - ia, v = ivec(c) - ia;
+  IVec w = cross(u, v);
+  I denominator = I(2) * dot(w, w);
+  if (denominator.inf() <= 0.0) {  // (nearly) collinear: no finite bound
+    SearchBall ball;
+    ball.everything = true;
+    return ball;
+  }
+  // Circumcenter relative to a: ((|u|^2 v - |v|^2 u) x (u x v)) / (2 |u x v|^2).
+  IVec t = cross(dot(u, u) * v - dot(v, v) * u, w);
+  IVec offset{t.x / denominator, t.y / denominator, t.z / denominator};
+  IVec center{ia.x + offset.x, ia.y + offset.y, ia.z + offset.z};
+  return enclose(center, CGAL::sqrt(dot(offset, offset)));
+}
+
+PointIndex::PointIndex(const std::vector<P3>& points) : points_(points) {
+  order_.resize(points.size());
+  std::iota(order_.begin(), order_.end(), 0);
+  rebuild();
+}
+
+void PointIndex::add(int i) {
+  pending_.push_back(i);
+  if (pending_.size() > 256 && pending_.size() * 8 > order_.size()) {
+    order_.insert(order_.end(), pending_.begin(), pending_.end());
+    pending_.clear();
+    rebuild();
+  }
+}
+
+void PointIndex::rebuild() {
+  nodes_.clear();
+  if (!order_.empty()) build(0, static_cast<int>(order_.size()));
+}
+
+int PointIndex::build(int begin, int end) {
+  Node node;
+  node.begin = begin;
+  node.end = end;
+  node.lo = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
+  node.hi = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (int k = begin; k < end; ++k) {
+    const P3& p = points_[order_[k]];
+    for (int d = 0; d < 3; ++d) {
+      node.lo[d] = std::min(node.lo[d], p[d]);
+      node.hi[d] = std::max(node.hi[d], p[d]);
+    }
+  }
+  int id = static_cast<int>(nodes_.size());
+  nodes_.push_back(node);
+  if (end - begin <= 8) return id;
+  int axis = 0;
+  for (int d = 1; d < 3; ++d)
+    if (node.hi[d] - node.lo[d] > node.hi[axis] - node.lo[axis]) axis = d;
+  int mid = (begin + end) / 2;
+  std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                   [&](int i, int j) { return points_[i][axis] < points_[j][axis]; });
+  int left = build(begin, mid);
+  int right = build(mid, end);
+  nodes_[id].left = left;
+  nodes_[id].right = right;
+  return id;
+}
+
+double PointIndex::box_distance2(const Node& node, const std::array<double, 3>& q) const {
+  double s = 0.0;
+  for (int d = 0; d < 3; ++d) {
+    double e = std::max({node.lo[d] - q[d], 0.0, q[d] - node.hi[d]});
+    s += e * e;
+  }
+  return s;
+}
+
+int PointIndex::nearest(const P3& q) const {
+  int best = -1;
+  double best2 = HUGE_VAL;
+  auto consider = [&](int i) {
+    double d2 = CGAL::to_double(CGAL::squared_distance(points_[i], q));
+    if (d2 < best2) best2 = d2, best = i;
+  };
+  for (int i : pending_) consider(i);
+  if (nodes_.empty()) return best;
+  std::array<double, 3> c{q.x(), q.y(), q.z()};
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (box_distance2(node, c) > best2) continue;
+    if (node.left < 0) {
+      for (int k = node.begin; k < node.end; ++k) consider(order_[k]);
+    } else {  // visit the nearer child first (pushed last)
+      bool left_first = box_distance2(nodes_[node.left], c) <= box_distance2(nodes_[node.right], c);
+      stack[top++] = left_first ? node.right : node.left;
+      stack[top++] = left_first ? node.left : node.right;
+    }
+  }
+  return best;
+}
+
+Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex& index, int a, int b, int c,
+                                std::size_t* candidates) {
+  const P3 &pa = points[a], &pb = points[b];
+  SearchBall ball = c < 0 ? search_ball(pa, pb) : search_ball(pa, pb, points[c]);
+  P3 center(ball.center[0], ball.center[1], ball.center[2]);
+  if (ball.everything) center = c < 0 ? CGAL::midpoint(pa, pb) : CGAL::circumcenter(pa, pb, points[c]);
+  double radius = std::sqrt(CGAL::to_double(CGAL::squared_distance(center, pa)));
+  Encroachment best;
+  index.for_each_in(ball, [&](int t) {
+    if (t == a || t == b || t == c) return;
+    if (candidates) ++*candidates;
+    const P3& pt = points[t];
+    bool inside = c < 0 ? CGAL::side_of_bounded_sphere(pa, pb, pt) == CGAL::ON_BOUNDED_SIDE
+                        : CGAL::side_of_bounded_sphere(pa, pb, points[c], pt) == CGAL::ON_BOUNDED_SIDE;
+    if (!inside) return;
+    double depth = 1.0 - std::sqrt(CGAL::to_double(CGAL::squared_distance(center, pt))) / radius;
+    if (best.vertex < 0 || depth > best.depth || (depth == best.depth && t < best.vertex)) {
+      best.vertex = t;
+      best.depth = depth;
+    }
+  });
+  return best;
+}
+
+}  // namespace nonobtuse::gabriel3d
+
+namespace nonobtuse {
+
+GabrielReport check_gabriel(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+                            const std::vector<Segment>& segments) {
+  using namespace gabriel3d;
+  std::vector<P3> pts;
+  pts.reserve(points.size());
+  for (const auto& p : points) pts.push_back(to_cgal(p));
+  auto check_index = [&](int v, const char* what, std::size_t row) {
+    if (v < 0 || static_cast<std::size_t>(v) >= pts.size())
+      throw InvalidInput(std::string(what) + " " + std::to_string(row) + " refers to point " + std::to_string(v) +
+                         ", but there are " + std::to_string(pts.size()) + " points");
+  };
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    for (int v : faces[f]) check_index(v, "face", f);
+    auto [a, b, c] = faces[f];
+    if (CGAL::collinear(pts[a], pts[b], pts[c]))
+      throw InvalidInput("face " + std::to_string(f) + " (" + std::to_string(a) + ", " + std::to_string(b) + ", " +
+                         std::to_string(c) + ") has collinear corners: no diametral sphere");
+  }
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    for (int v : segments[s]) check_index(v, "segment", s);
+    if (pts[segments[s][0]] == pts[segments[s][1]])
+      throw InvalidInput("segment " + std::to_string(s) + " has coincident ends");
+  }
+  PointIndex index(pts);
+  GabrielReport report;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    Encroachment e = deepest_encroacher(pts, index, faces[f][0], faces[f][1], faces[f][2], &report.candidates);
+    if (e.vertex >= 0) report.faces.push_back({static_cast<int>(f), e.vertex, e.depth});
+  }
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    Encroachment e = deepest_encroacher(pts, index, segments[s][0], segments[s][1], -1, &report.candidates);
+    if (e.vertex >= 0) report.segments.push_back({static_cast<int>(s), e.vertex, e.depth});
+  }
+  return report;
+}
+
+}  // namespace nonobtuse

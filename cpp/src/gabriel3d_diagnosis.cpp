@@ -1,0 +1,150 @@
+// Diagnosis of a Gabriel refinement: the small input angles that drive it and where its Steiner points went.
+// Angles are floating point: they explain a run, they decide nothing.
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "gabriel3d_plc.h"
+
+namespace nonobtuse::gabriel3d {
+namespace {
+
+constexpr std::size_t kFew = 5;
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+
+using Vec = std::array<double, 3>;
+Vec sub(const P3& a, const P3& b) { return {a.x() - b.x(), a.y() - b.y(), a.z() - b.z()}; }
+double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec cross(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double angle(const Vec& a, const Vec& b) {  // in [0, 180]
+  return std::atan2(std::sqrt(dot(cross(a, b), cross(a, b))), dot(a, b)) * kDegrees;
+}
+Vec normal(const Facet& f) { return cross(f.u, f.v); }
+
+void keep_smallest(std::vector<InputAngle>& all, std::vector<InputAngle>&& kind) {
+  std::stable_sort(kind.begin(), kind.end(), [](const auto& x, const auto& y) { return x.degrees < y.degrees; });
+  if (kind.size() > kFew) kind.resize(kFew);
+  all.insert(all.end(), kind.begin(), kind.end());
+}
+
+// Angles between input segments (PLC segments and facet edges) at their shared input vertices.
+std::vector<InputAngle> segment_segment(const PlcState& s, const std::vector<std::vector<int>>& at) {
+  std::vector<InputAngle> out;
+  for (int v = 0; v < s.n_input; ++v)
+    for (std::size_t i = 0; i < at[v].size(); ++i)
+      for (std::size_t j = i + 1; j < at[v].size(); ++j) {
+        const auto &si = s.segments[at[v][i]], &sj = s.segments[at[v][j]];
+        int a = si.a == v ? si.b : si.a, b = sj.a == v ? sj.b : sj.a;
+        double deg = angle(sub(s.points[a], s.points[v]), sub(s.points[b], s.points[v]));
+        out.push_back({"segment-segment", deg, {v, a, b}, {}});
+      }
+  return out;
+}
+
+// Does the direction d from facet vertex v, projected onto the facet's plane, point into the facet (into one of
+// its domain triangles at v)? Floating point: a diagnosis.
+bool points_into(const Facet& f, int v, const Vec& d) {
+  auto vh = f.vertex.at(v);
+  const Q2& o = vh->point();
+  double ox = CGAL::to_double(o.x()), oy = CGAL::to_double(o.y());
+  double dx = dot(d, f.u), dy = dot(d, f.v);
+  auto turn = [&](const Q2& p) {  // cross(p - o, d): positive when d is counter-clockwise from p - o
+    return (CGAL::to_double(p.x()) - ox) * dy - (CGAL::to_double(p.y()) - oy) * dx;
+  };
+  auto fc = f.cdt.incident_faces(vh), done = fc;
+  do {
+    if (f.cdt.is_infinite(fc) || !fc->info().in_domain) continue;
+    int i = fc->index(vh);
+    const Q2 &p = fc->vertex(FacetCDT::ccw(i))->point(), &q = fc->vertex(FacetCDT::cw(i))->point();
+    if (turn(p) > 0 && turn(q) < 0) return true;  // d strictly inside the angle from p - o to q - o (ccw)
+  } while (++fc != done);
+  return false;
+}
+
+// Angles between an input segment and a facet through one of its ends, where the segment leans over the facet
+// (its projection points into the facet); other directions are covered by the segment-segment angles.
+std::vector<InputAngle> segment_facet(const PlcState& s, const std::vector<std::vector<int>>& at) {
+  std::vector<InputAngle> out;
+  for (int v = 0; v < s.n_input; ++v)
+    for (int g : at[v]) {
+      const auto& seg = s.segments[g];
+      int end = seg.a == v ? seg.b : seg.a;
+      Vec d = sub(s.points[end], s.points[v]);
+      for (int f : s.point_facets[v]) {
+        const Facet& facet = *s.facets[f];
+        if (facet.vertex.count(end) || !points_into(facet, v, d)) continue;
+        double deg = std::abs(90.0 - angle(d, normal(facet)));
+        out.push_back({"segment-facet", deg, {v, end}, {facet.id}});
+      }
+    }
+  return out;
+}
+
+// The facet's corner opposite edge ab in one of its input triangles: a vertex of the facet's triangulation
+// adjacent to both a and b on the domain side.
+int apex(const Facet& f, int a, int b) {
+  FacetCDT::Face_handle fh;
+  int i = 0;
+  if (!f.cdt.is_edge(f.vertex.at(a), f.vertex.at(b), fh, i)) return -1;
+  for (auto g : {fh, fh->neighbor(i)})
+    if (!f.cdt.is_infinite(g) && g->info().in_domain) return g->vertex(g == fh ? i : g->index(fh))->info();
+  return -1;
+}
+
+// Dihedral angles between facets sharing an input segment (angle between the two half-planes).
+std::vector<InputAngle> dihedral(const PlcState& s) {
+  std::vector<InputAngle> out;
+  for (const auto& seg : s.segments) {
+    Vec e = sub(s.points[seg.b], s.points[seg.a]);
+    for (std::size_t i = 0; i < seg.facets.size(); ++i)
+      for (std::size_t j = i + 1; j < seg.facets.size(); ++j) {
+        int p = apex(*s.facets[seg.facets[i]], seg.a, seg.b), q = apex(*s.facets[seg.facets[j]], seg.a, seg.b);
+        if (p < 0 || q < 0) continue;
+        Vec wp = cross(e, cross(sub(s.points[p], s.points[seg.a]), e));  // components orthogonal to e
+        Vec wq = cross(e, cross(sub(s.points[q], s.points[seg.a]), e));
+        out.push_back({"dihedral", angle(wp, wq), {seg.a, seg.b},
+                       {s.facets[seg.facets[i]]->id, s.facets[seg.facets[j]]->id}});
+      }
+  }
+  return out;
+}
+
+std::vector<SteinerCount> top(std::vector<SteinerCount> counts) {
+  counts.erase(std::remove_if(counts.begin(), counts.end(), [](const auto& c) { return c.count == 0; }),
+               counts.end());
+  std::stable_sort(counts.begin(), counts.end(), [](const auto& x, const auto& y) { return x.count > y.count; });
+  if (counts.size() > kFew) counts.resize(kFew);
+  return counts;
+}
+
+}  // namespace
+
+std::vector<InputAngle> smallest_input_angles(const PlcState& s) {
+  std::vector<std::vector<int>> at(s.n_input);  // input segments at each input vertex
+  for (std::size_t g = 0; g < s.segments.size(); ++g) {
+    at[s.segments[g].a].push_back(static_cast<int>(g));
+    at[s.segments[g].b].push_back(static_cast<int>(g));
+  }
+  std::vector<InputAngle> out;
+  keep_smallest(out, segment_segment(s, at));
+  keep_smallest(out, segment_facet(s, at));
+  keep_smallest(out, dihedral(s));
+  std::stable_sort(out.begin(), out.end(), [](const auto& x, const auto& y) { return x.degrees < y.degrees; });
+  return out;
+}
+
+void count_steiner(const PlcState& s, Refine3Diagnosis& d) {
+  std::vector<P3> input(s.points.begin(), s.points.begin() + s.n_input);
+  PointIndex index(input);
+  std::vector<SteinerCount> per_vertex(s.n_input);
+  for (int v = 0; v < s.n_input; ++v) per_vertex[v].where = {v};
+  for (std::size_t p = s.n_input; p < s.points.size(); ++p) ++per_vertex[index.nearest(s.points[p])].count;
+  d.per_vertex = top(std::move(per_vertex));
+  std::vector<SteinerCount> per_segment;
+  for (const auto& seg : s.segments) per_segment.push_back({{seg.a, seg.b}, seg.steiner});
+  d.per_segment = top(std::move(per_segment));
+}
+
+}  // namespace nonobtuse::gabriel3d

@@ -1,0 +1,98 @@
+// Internal: candidate search for diametral-sphere tests. A kd-tree proposes the points near a sphere with a
+// floating-point query that provably misses none of the points strictly inside; the exact predicate decides.
+#pragma once
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <array>
+#include <vector>
+
+#include "nonobtuse/gabriel3d.h"
+
+namespace nonobtuse::gabriel3d {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using P3 = K::Point_3;
+
+inline P3 to_cgal(const Point3& p) { return P3(p.x, p.y, p.z); }
+inline Point3 from_cgal(const P3& p) { return {p.x(), p.y(), p.z()}; }
+
+// A ball that contains a diametral sphere: everything == true when no finite bound could be computed.
+struct SearchBall {
+  std::array<double, 3> center{};
+  double radius = 0.0;
+  bool everything = false;
+};
+
+// Balls containing the diametral sphere of segment ab / of triangle abc. The center and radius are evaluated in
+// interval arithmetic, so the returned ball contains the exact sphere whatever the rounding: no relative margin is
+// guessed from the triangle's shape (a sliver's circumcenter can be off by far more than a few ulps).
+SearchBall search_ball(const P3& a, const P3& b);
+SearchBall search_ball(const P3& a, const P3& b, const P3& c);
+
+// A kd-tree over a growing point list. Points added after the last rebuild sit in a pending list that every query
+// scans; the tree is rebuilt when that list gets long, so insertion is amortized O(log n).
+class PointIndex {
+ public:
+  explicit PointIndex(const std::vector<P3>& points);  // indexes points[0, size) now; keeps a reference
+  void add(int i);                                      // points[i] was appended
+  // Calls visit(i) for every indexed point within ball (and some just outside it): the squared-distance tests are
+  // done in floating point, so the radius is enlarged by a relative 1e-12, far above their rounding error
+  // (at most a few units of 2^-53 relative: differences, squares and sums of positive terms).
+  template <class Visit>
+  void for_each_in(const SearchBall& ball, Visit&& visit) const;
+  int nearest(const P3& q) const;  // closest indexed point (floating-point distances), -1 when empty
+
+ private:
+  struct Node {
+    std::array<double, 3> lo, hi;  // bounding box of the node's points
+    int begin, end;                // range in order_
+    int left = -1, right = -1;
+  };
+  void rebuild();
+  int build(int begin, int end);
+  double box_distance2(const Node& node, const std::array<double, 3>& q) const;
+  const std::vector<P3>& points_;
+  std::vector<int> order_;
+  std::vector<Node> nodes_;
+  std::vector<int> pending_;
+};
+
+template <class Visit>
+void PointIndex::for_each_in(const SearchBall& ball, Visit&& visit) const {
+  if (ball.everything) {
+    for (int i : order_) visit(i);
+    for (int i : pending_) visit(i);
+    return;
+  }
+  const auto& c = ball.center;
+  const double r2 = ball.radius * ball.radius * (1.0 + 1e-12);
+  auto d2 = [&](int i) {
+    const P3& p = points_[i];
+    double dx = p.x() - c[0], dy = p.y() - c[1], dz = p.z() - c[2];
+    return dx * dx + dy * dy + dz * dz;
+  };
+  for (int i : pending_)
+    if (d2(i) <= r2) visit(i);
+  if (nodes_.empty()) return;
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (box_distance2(node, c) > r2) continue;
+    if (node.left < 0) {
+      for (int k = node.begin; k < node.end; ++k)
+        if (d2(order_[k]) <= r2) visit(order_[k]);
+    } else {
+      stack[top++] = node.left;
+      stack[top++] = node.right;
+    }
+  }
+}
+
+// The deepest point strictly inside the diametral sphere of segment ab (c == -1) or triangle abc, other than the
+// simplex's own vertices; index == -1 when the sphere is empty. Exact decisions; depth in floating point.
+Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex& index, int a, int b, int c,
+                                std::size_t* candidates = nullptr);
+
+}  // namespace nonobtuse::gabriel3d

@@ -1,0 +1,100 @@
+// Internal: the state of a PLC under Gabriel refinement. Each facet keeps its subfacets as a 2D constrained
+// Delaunay triangulation in an (approximately) orthonormal frame of its plane; its constraints are the facet's
+// boundary edges and the PLC segments inside it. The 2D triangulation uses exact constructions so that a point
+// splitting a subsegment lies exactly on it in 2D (a + t (b - a) with t the double split parameter); the 3D point
+// is the same interpolation rounded to doubles, and every 3D decision is made on the rounded coordinates.
+#pragma once
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <map>
+#include <memory>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "gabriel3d_index.h"
+
+namespace nonobtuse::gabriel3d {
+
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+using Q2 = EK::Point_2;
+
+struct FacetFaceInfo {
+  bool in_domain = false;
+  int nesting = -1;  // number of constraints crossed from the outside (domain: odd)
+};
+using Vb2 = CGAL::Triangulation_vertex_base_with_info_2<int, EK>;  // info: global point index
+using Fbb2 = CGAL::Triangulation_face_base_with_info_2<FacetFaceInfo, EK>;
+using Fb2 = CGAL::Constrained_triangulation_face_base_2<EK, Fbb2>;
+using Tds2 = CGAL::Triangulation_data_structure_2<Vb2, Fb2>;
+// Facet edges crossing each other are refused (an exception); one through a vertex is caught by build_plc_state.
+// (No_constraint_intersection_tag would also refuse inserting a point on a constraint, which splits use.)
+using FacetCDT = CGAL::Constrained_Delaunay_triangulation_2<EK, Tds2,
+                                                            CGAL::No_constraint_intersection_requiring_constructions_tag>;
+
+struct Facet {
+  int id = 0;  // the input facet id
+  std::array<double, 3> origin{}, u{}, v{};
+  FacetCDT cdt;
+  std::unordered_map<int, FacetCDT::Vertex_handle> vertex;  // global point index -> vertex
+  Q2 project(const P3& p) const;
+};
+
+// An input segment: a PLC segment or a facet boundary edge. Subsegments remember it as their parent.
+struct InputSegment {
+  int a = 0, b = 0;
+  std::vector<int> facets;  // indices into PlcState::facets whose triangulation has it as a constraint
+  long steiner = 0;
+};
+
+using Key = std::pair<int, int>;  // (min, max) point indices
+inline Key key(int a, int b) { return a < b ? Key{a, b} : Key{b, a}; }
+
+struct PlcState {
+  int n_input = 0;
+  std::vector<P3> points;
+  std::vector<std::unique_ptr<Facet>> facets;
+  std::vector<InputSegment> segments;
+  std::map<Key, int> subsegments;              // subsegment -> parent input segment
+  std::vector<std::vector<int>> point_facets;  // facets each point lies on
+  std::map<std::array<double, 3>, int> at;     // coordinates -> point index (no duplicates allowed)
+};
+
+// Validates the PLC and builds the facets' triangulations and the input segments. Throws InvalidInput.
+PlcState build_plc_state(const PLC3& plc);
+
+// Marks in_domain by nesting parity, flooding from the infinite faces across edges (constraints add one).
+void mark_facet_domain(FacetCDT& cdt);
+
+// Splits subsegment ab of `parent` at a + t (b - a): a new point (index returned), the facets' triangulations and
+// the subsegment map are updated.
+int split_subsegment(PlcState& s, int a, int b, double t, const P3& rounded);
+
+// Inserts a point strictly inside facet f's domain (located at (lt, loc, li) in its triangulation).
+int insert_in_facet(PlcState& s, int f, const P3& point, FacetCDT::Locate_type lt, FacetCDT::Face_handle loc,
+                    int li);
+
+// Is the triangle (a, b, c) of points on facet f inside the facet's domain (its 2D centroid in domain faces)?
+bool triangle_on_facet(const PlcState& s, int f, int a, int b, int c);
+
+void check_invariants(const PlcState& s);  // throws InternalError
+
+// Output of the restriction of the Delaunay tetrahedralization of all points to the PLC's interior.
+struct Restricted {
+  std::vector<Tetrahedron> tets;
+  std::vector<Triangle> boundary_faces;
+  std::vector<int> face_markers;
+  std::vector<int> face_facets;  // index into PlcState::facets of each boundary face
+  std::vector<double> tet_regions;
+};
+Restricted restrict_delaunay(const PlcState& s, const PLC3& plc);
+
+// The few smallest input angles of each kind; call before refinement (it reads the unsplit input segments).
+std::vector<InputAngle> smallest_input_angles(const PlcState& s);
+// Steiner points per input segment and per nearest input vertex, top few.
+void count_steiner(const PlcState& s, Refine3Diagnosis& d);
+
+}  // namespace nonobtuse::gabriel3d

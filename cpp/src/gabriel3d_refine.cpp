@@ -1,0 +1,344 @@
+// Ruppert-like Gabriel refinement of a PLC: subsegments first, then subfacets, until every diametral sphere is empty.
+#include <algorithm>
+#include <chrono>
+#include <tuple>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "gabriel3d_plc.h"
+
+namespace nonobtuse::gabriel3d {
+namespace {
+
+// Why the refinement stopped early, if it did.
+struct Stop {
+  Refine3Status status;
+  std::string reason;
+};
+
+struct SubfacetRef {
+  int facet, a, b, c;  // a < b < c (canonical) so that the rounded circumcenter does not depend on the order
+  bool operator<(const SubfacetRef& o) const {
+    return std::tie(facet, a, b, c) < std::tie(o.facet, o.a, o.b, o.c);
+  }
+};
+
+SubfacetRef canonical(SubfacetRef r) {
+  int v[3] = {r.a, r.b, r.c};
+  std::sort(v, v + 3);
+  return {r.facet, v[0], v[1], v[2]};
+}
+
+class Refiner {
+ public:
+  Refiner(PlcState& s, const Refine3Options& o)
+      : s_(s), o_(o), index_(s.points), start_(std::chrono::steady_clock::now()) {}
+
+  // Runs to convergence of the subfacets and subsegments, or to a stop.
+  std::optional<Stop> run();
+  // Splits the encroached faces and subsegments of the restricted Delaunay mesh (which can differ from the
+  // subfacets where points are cospherical). Sets *progress when a point was inserted.
+  std::optional<Stop> repair(const Restricted& mesh, const std::vector<Key>& segments, const GabrielReport& report,
+                             bool* progress);
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  long steiner_on_segments = 0, steiner_on_facets = 0;
+
+ private:
+  std::optional<Stop> budget_left() const;
+  std::vector<Key> encroached_subsegments() const;
+  std::vector<SubfacetRef> encroached_subfacets() const;
+  bool encroached(int a, int b, int c) const {
+    return deepest_encroacher(s_.points, index_, a, b, c).vertex >= 0;
+  }
+  // Splits `sub` if it still exists and (unless `always`) is still encroached by a vertex.
+  std::optional<Stop> split(const Key& sub, bool always, bool* inserted);
+  // Splits subfacet f (a face of facet f.facet's triangulation, or only a triangle on it when !require_face).
+  std::optional<Stop> split_subfacet(const SubfacetRef& f, bool require_face, bool* inserted, bool* split_segment);
+  std::optional<Stop> too_short(const P3& p, const P3& q) const;
+  std::optional<Stop> too_close(const P3& p) const;
+  void inserted(int m);
+
+  PlcState& s_;
+  const Refine3Options& o_;
+  PointIndex index_;
+  std::chrono::steady_clock::time_point start_;
+  long last_encroached_segments_ = 0, last_encroached_facets_ = 0;
+};
+
+std::optional<Stop> Refiner::budget_left() const {
+  if (steiner_on_segments + steiner_on_facets >= o_.max_steiner)
+    return Stop{Refine3Status::BudgetExhausted, "max_steiner (" + std::to_string(o_.max_steiner) + ") reached"};
+  if (seconds() > o_.time_limit)
+    return Stop{Refine3Status::BudgetExhausted, "time_limit (" + std::to_string(o_.time_limit) + " s) reached"};
+  return std::nullopt;
+}
+
+std::vector<Key> Refiner::encroached_subsegments() const {
+  std::vector<Key> out;
+  for (const auto& [sub, parent] : s_.subsegments)
+    if (encroached(sub.first, sub.second, -1)) out.push_back(sub);
+  return out;
+}
+
+std::vector<SubfacetRef> Refiner::encroached_subfacets() const {
+  std::vector<SubfacetRef> out;
+  for (std::size_t f = 0; f < s_.facets.size(); ++f) {
+    const FacetCDT& cdt = s_.facets[f]->cdt;
+    for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
+      if (!fh->info().in_domain) continue;
+      int a = fh->vertex(0)->info(), b = fh->vertex(1)->info(), c = fh->vertex(2)->info();
+      if (CGAL::collinear(s_.points[a], s_.points[b], s_.points[c])) continue;  // rounding; left to the final check
+      if (encroached(a, b, c)) out.push_back(canonical({static_cast<int>(f), a, b, c}));
+    }
+  }
+  // The face order of a triangulation depends on where the walks of point location went (randomized): sort.
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::optional<Stop> Refiner::too_short(const P3& p, const P3& q) const {
+  if (o_.min_length > 0 && CGAL::compare_squared_distance(p, q, o_.min_length * o_.min_length) == CGAL::SMALLER)
+    return Stop{Refine3Status::MinLengthReached,
+                "a split would create an edge shorter than min_length (" + std::to_string(o_.min_length) + ")"};
+  return std::nullopt;
+}
+
+std::optional<Stop> Refiner::too_close(const P3& p) const {
+  if (o_.min_length <= 0) return std::nullopt;
+  SearchBall ball{{p.x(), p.y(), p.z()}, o_.min_length, false};
+  std::optional<Stop> stop;
+  index_.for_each_in(ball, [&](int i) {
+    if (!stop) stop = too_short(p, s_.points[i]);
+  });
+  return stop;
+}
+
+void Refiner::inserted(int m) {
+  index_.add(m);
+#ifdef NONOBTUSE_CHECK_INVARIANTS
+  check_invariants(s_);
+#endif
+  long n = steiner_on_segments + steiner_on_facets;
+  if (o_.progress && o_.progress_every > 0 && n % o_.progress_every == 0)
+    o_.progress({n, last_encroached_segments_, last_encroached_facets_, seconds()});
+}
+
+std::optional<Stop> Refiner::split(const Key& sub, bool always, bool* inserted_point) {
+  auto [a, b] = sub;
+  if (!s_.subsegments.count(sub) || (!always && !encroached(a, b, -1))) return std::nullopt;
+  if (auto stop = budget_left()) return stop;
+  const P3 &pa = s_.points[a], &pb = s_.points[b];
+  // Split rule. Midpoint, unless split == Shells and exactly one end e is an input vertex: then the split point is
+  // at distance 2^k from e, the power of two that cuts the subsegment most evenly (pieces within a 1:2 ratio), as
+  // in Ruppert's and Shewchuk's concentric shells. Termination argument: every vertex placed near e on any segment
+  // through e then lies on a sphere of radius 2^k around e, and two such vertices on segments meeting at e at the
+  // same radius r never encroach each other's subsegment that ends at e (r·d2 is strictly inside the sphere with
+  // diameter [e, e + r·d1] iff |r·d2 - r·d1/2| < r/2 iff cos(angle(d1, d2)) > 1: never). So the ping-pong of
+  // midpoint splitting down two segments meeting at a small angle stops once the subsegments at e reach a common
+  // shell. Small segment-facet and dihedral angles have no known terminating rule: the budgets end those runs.
+  bool a_input = a < s_.n_input, b_input = b < s_.n_input;
+  double t = 0.5;
+  if (o_.split == SplitRule::Shells && a_input != b_input) {
+    double length = std::sqrt(CGAL::to_double(CGAL::squared_distance(pa, pb)));
+    double shell = 1.0;
+    while (length > 3.0 * shell) shell *= 2.0;
+    while (length < 1.5 * shell) shell *= 0.5;
+    t = a_input ? shell / length : 1.0 - shell / length;
+  }
+  P3 m(pa.x() + t * (pb.x() - pa.x()), pa.y() + t * (pb.y() - pa.y()), pa.z() + t * (pb.z() - pa.z()));
+  if (auto stop = too_short(pa, m)) return stop;
+  if (auto stop = too_short(m, pb)) return stop;
+  if (s_.at.count({m.x(), m.y(), m.z()}))  // rounding hit an existing vertex: no progress possible here
+    return Stop{Refine3Status::Stalled, "the split point of subsegment (" + std::to_string(a) + ", " +
+                                            std::to_string(b) + ") rounds onto an existing vertex"};
+  int id = split_subsegment(s_, a, b, t, m);
+  ++steiner_on_segments;
+  *inserted_point = true;
+  inserted(id);
+  return std::nullopt;
+}
+
+// The subsegment of facet f crossed first by the walk from the subfacet's centroid g to q, if any.
+std::optional<Key> first_crossed_subsegment(const Facet& facet, const Q2& g, const Q2& q) {
+  std::optional<Key> best;
+  std::optional<EK::FT> best_d2;
+  EK::Segment_2 walk(g, q);
+  for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e) {
+    if (!facet.cdt.is_constrained(*e)) continue;
+    auto u = e->first->vertex(FacetCDT::cw(e->second)), w = e->first->vertex(FacetCDT::ccw(e->second));
+    EK::Segment_2 sub(u->point(), w->point());
+    if (!CGAL::do_intersect(walk, sub)) continue;
+    auto x = CGAL::intersection(walk, sub);
+    const Q2* p = boost::get<Q2>(&*x);
+    EK::FT d2 = p ? CGAL::squared_distance(g, *p) : EK::FT(0);
+    Key k = key(u->info(), w->info());
+    if (!best_d2 || d2 < *best_d2 || (d2 == *best_d2 && k < *best)) best_d2 = d2, best = k;
+  }
+  return best;
+}
+
+// Splits subfacet f at its circumcenter, or splits the subsegments that point encroaches or lies beyond.
+std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_face, bool* inserted_point,
+                                            bool* split_segment) {
+  Facet& facet = *s_.facets[r.facet];
+  FacetCDT::Face_handle fh;
+  auto va = facet.vertex.at(r.a), vb = facet.vertex.at(r.b), vc = facet.vertex.at(r.c);
+  if ((!facet.cdt.is_face(va, vb, vc, fh) && require_face) || !encroached(r.a, r.b, r.c)) return std::nullopt;
+  if (!require_face) fh = va->face();
+  const P3 center = CGAL::circumcenter(s_.points[r.a], s_.points[r.b], s_.points[r.c]);
+  // A circumcenter that encroaches a subsegment of this facet is not inserted: the subsegments are split instead.
+  std::vector<Key> hit;
+  for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e) {
+    if (!facet.cdt.is_constrained(*e)) continue;
+    int u = e->first->vertex(FacetCDT::cw(e->second))->info(), w = e->first->vertex(FacetCDT::ccw(e->second))->info();
+    if (CGAL::side_of_bounded_sphere(s_.points[u], s_.points[w], center) == CGAL::ON_BOUNDED_SIDE)
+      hit.push_back(key(u, w));
+  }
+  Q2 q = facet.project(center);
+  FacetCDT::Locate_type lt;
+  int li = 0;
+  auto loc = facet.cdt.locate(q, lt, li, fh);
+  bool inside = (lt == FacetCDT::FACE && loc->info().in_domain) ||
+                (lt == FacetCDT::EDGE && !facet.cdt.is_constrained({loc, li}) && loc->info().in_domain &&
+                 loc->neighbor(li)->info().in_domain);
+  if (hit.empty() && !inside) {
+    // Outside the facet (or on its boundary): split the subsegment the circumcenter lies beyond.
+    Q2 g = CGAL::centroid(va->point(), vb->point(), vc->point());
+    if (auto sub = first_crossed_subsegment(facet, g, q)) hit.push_back(*sub);
+  }
+  if (!hit.empty()) {
+    std::sort(hit.begin(), hit.end());
+    *split_segment = true;
+    for (const Key& sub : hit)
+      if (auto stop = split(sub, true, inserted_point)) return stop;
+    return std::nullopt;
+  }
+  if (!inside || s_.at.count({center.x(), center.y(), center.z()})) return std::nullopt;  // refused; see run()
+  if (auto stop = budget_left()) return stop;
+  if (auto stop = too_close(center)) return stop;
+  int id = insert_in_facet(s_, r.facet, center, lt, loc, li);
+  ++steiner_on_facets;
+  *inserted_point = true;
+  inserted(id);
+  return std::nullopt;
+}
+
+std::optional<Stop> Refiner::run() {
+  for (;;) {
+    bool progress = false;
+    // Level 1: subsegments, until none is encroached.
+    for (auto subs = encroached_subsegments(); !subs.empty(); subs = encroached_subsegments()) {
+      last_encroached_segments_ = static_cast<long>(subs.size());
+      bool round_progress = false;
+      for (const Key& sub : subs)
+        if (auto stop = split(sub, false, &round_progress)) return stop;
+      if (!round_progress)
+        return Stop{Refine3Status::Stalled, "encroached subsegments remain but none could be split"};
+      progress = true;
+    }
+    last_encroached_segments_ = 0;
+    // Level 2: the subfacets found encroached by one scan, each re-checked when its turn comes. Subsegments split
+    // on the way (encroached by a circumcenter) get priority again at the next level-1 scan; a rescan after every
+    // such split would cost a full pass over the subfacets per Steiner point.
+    auto subfacets = encroached_subfacets();
+    last_encroached_facets_ = static_cast<long>(subfacets.size());
+    if (subfacets.empty()) return std::nullopt;
+    for (const auto& r : subfacets) {
+      bool split_segment = false;
+      if (auto stop = split_subfacet(r, true, &progress, &split_segment)) return stop;
+    }
+    if (!progress)  // every encroached subfacet's circumcenter was refused: the same state would repeat forever
+      return Stop{Refine3Status::Stalled, "encroached subfacets remain whose circumcenters cannot be inserted"};
+  }
+}
+
+std::optional<Stop> Refiner::repair(const Restricted& mesh, const std::vector<Key>& segments,
+                                    const GabrielReport& report, bool* progress) {
+  for (const auto& e : report.segments)
+    if (auto stop = split(segments[e.index], false, progress)) return stop;
+  for (const auto& e : report.faces) {
+    auto [a, b, c] = mesh.boundary_faces[e.index];
+    bool split_segment = false;
+    if (auto stop = split_subfacet(canonical({mesh.face_facets[e.index], a, b, c}), false, progress, &split_segment))
+      return stop;
+  }
+  return std::nullopt;
+}
+
+double smallest_subsegment(const PlcState& s) {
+  double best = HUGE_VAL;
+  for (const auto& [sub, parent] : s.subsegments)
+    best = std::min(best, CGAL::to_double(CGAL::squared_distance(s.points[sub.first], s.points[sub.second])));
+  return s.subsegments.empty() ? 0.0 : std::sqrt(best);
+}
+
+}  // namespace
+}  // namespace nonobtuse::gabriel3d
+
+namespace nonobtuse {
+
+const char* to_string(Refine3Status status) {
+  switch (status) {
+    case Refine3Status::Converged: return "converged";
+    case Refine3Status::BudgetExhausted: return "budget_exhausted";
+    case Refine3Status::MinLengthReached: return "min_length_reached";
+    case Refine3Status::Stalled: return "stalled";
+  }
+  return "stalled";
+}
+
+Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options) {
+  using namespace gabriel3d;
+  PlcState s = build_plc_state(plc);
+  Refine3Result out;
+  out.diagnosis.smallest_angles = smallest_input_angles(s);
+  Refiner refiner(s, options);
+  // Refine the subfacets, restrict the Delaunay tetrahedralization, check it exactly; where its boundary faces
+  // differ from the subfacets (cospherical points) and are encroached, split those too and start over.
+  std::optional<Stop> stop;
+  Restricted mesh;
+  std::vector<Key> segments;
+  bool clean = false;
+  for (;;) {
+    stop = refiner.run();
+    mesh = restrict_delaunay(s, plc);
+    out.points.clear();
+    for (const auto& p : s.points) out.points.push_back(from_cgal(p));
+    segments.clear();
+    out.segments.clear();
+    for (const auto& [sub, parent] : s.subsegments) {
+      segments.push_back(sub);
+      out.segments.push_back({sub.first, sub.second});
+    }
+    out.certificate = check_gabriel(out.points, mesh.boundary_faces, out.segments);
+    clean = out.certificate.faces.empty() && out.certificate.segments.empty();
+    if (stop || clean) break;
+    bool progress = false;
+    stop = refiner.repair(mesh, segments, out.certificate, &progress);
+    if (!stop && !progress)
+      stop = Stop{Refine3Status::Stalled, "encroached faces of the Delaunay mesh remain but none could be split"};
+    if (stop) break;
+  }
+  out.tets = std::move(mesh.tets);
+  out.boundary_faces = std::move(mesh.boundary_faces);
+  out.face_markers = std::move(mesh.face_markers);
+  out.tet_regions = std::move(mesh.tet_regions);
+  out.steiner_on_segments = refiner.steiner_on_segments;
+  out.steiner_on_facets = refiner.steiner_on_facets;
+  out.smallest_subsegment = smallest_subsegment(s);
+  count_steiner(s, out.diagnosis);
+  if (clean) {
+    out.status = Refine3Status::Converged;
+    out.diagnosis.stop_reason = "every boundary face and subsegment has an empty diametral sphere";
+  } else {
+    out.status = stop->status;
+    out.diagnosis.stop_reason = stop->reason;
+  }
+  out.seconds = refiner.seconds();
+  return out;
+}
+
+}  // namespace nonobtuse

@@ -1,0 +1,262 @@
+"""check_gabriel / refine_gabriel: exact 3D Gabriel certificate and the Ruppert-like repair of PLCs."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from nonobtuse.errors import InvalidInputError
+from nonobtuse.mesh3d import check_gabriel, refine_gabriel
+from nonobtuse.mesh3d.plc import PLC, TetMesh
+
+DATA = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "3d"
+STATUSES = {"converged", "budget_exhausted", "min_length_reached", "stalled"}
+
+
+def quad(a: int, b: int, c: int, d: int) -> list[list[int]]:
+    return [[a, b, c], [a, c, d]]
+
+
+def plc_of(points, facets: list[list[list[int]]]) -> PLC:
+    tris = [t for f in facets for t in f]
+    ids = [i for i, f in enumerate(facets) for _ in f]
+    return PLC(points=np.asarray(points, dtype=float), triangles=np.array(tris), facet_ids=np.array(ids))
+
+
+def cube() -> PLC:
+    pts = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]]
+    return plc_of(
+        pts,
+        [
+            quad(0, 3, 2, 1),
+            quad(4, 5, 6, 7),
+            quad(0, 1, 5, 4),
+            quad(1, 2, 6, 5),
+            quad(2, 3, 7, 6),
+            quad(3, 0, 4, 7),
+        ],
+    )
+
+
+def wedge(theta: float) -> PLC:
+    """Two unit-square facets meeting at segment (0, 1) at dihedral angle theta (degrees), closed by three
+    facets."""
+    h = np.tan(np.radians(theta))
+    pts = [[0, 0, 0], [0, 1, 0], [1, 0, 0], [1, 1, 0], [1, 0, h], [1, 1, h]]
+    return plc_of(pts, [quad(0, 1, 3, 2), quad(0, 4, 5, 1), [[0, 2, 4]], [[1, 5, 3]], quad(2, 3, 5, 4)])
+
+
+def spike(theta: float, n: int = 10) -> PLC:
+    """A cone of height 1 over a regular n-gon, apex (index n) half-angle theta (degrees)."""
+    r = np.tan(np.radians(theta))
+    ang = 2 * np.pi * np.arange(n) / n
+    pts = np.vstack([np.c_[r * np.cos(ang), r * np.sin(ang), np.zeros(n)], [[0, 0, 1]]])
+    sides = [[[i, (i + 1) % n, n]] for i in range(n)]
+    base = [[[0, i + 1, i] for i in range(1, n - 1)]]
+    return plc_of(pts, sides + base)
+
+
+def volume(mesh: TetMesh) -> float:
+    p = mesh.points[mesh.tets]
+    return float(np.sum(np.linalg.det(p[:, 1:] - p[:, :1])) / 6.0)
+
+
+def assert_result_consistent(res, plc: PLC) -> None:
+    mesh = res.mesh
+    assert res.status in STATUSES
+    np.testing.assert_array_equal(mesh.points[: len(plc.points)], plc.points)  # input points first, unchanged
+    assert res.stats["steiner_points"] == len(mesh.points) - len(plc.points)
+    again = check_gabriel(mesh)  # the certificate is recomputed independently of the refinement
+    assert (res.status == "converged") == again.ok
+    assert res.stats["encroached_facets"] == len(again.faces)
+    assert res.stats["encroached_segments"] == len(again.segments)
+
+
+# ---- check_gabriel
+# ----------------------------------------------------------------------------------------------
+
+
+def test_check_flat_sliver_face_is_encroached():
+    # Base: equilateral triangle with circumcenter (0,0,0), radius 1; apex 0.1 above: depth 1 - 0.1 = 0.9.
+    s = np.sqrt(3) / 2
+    pts = np.array([[1, 0, 0], [-0.5, s, 0], [-0.5, -s, 0], [0, 0, 0.1]])
+    mesh = TetMesh(
+        points=pts,
+        tets=np.zeros((0, 4), np.int64),
+        boundary_faces=np.array([[0, 2, 1], [0, 1, 3]]),
+        face_markers=np.zeros(2, np.int64),
+    )
+    rep = check_gabriel(mesh)
+    # Only face 0 is asserted: the apex lies on face (0, 1, 3) itself and cannot encroach it.
+    assert 0 in rep.faces.tolist()
+    i = rep.faces.tolist().index(0)
+    assert rep.face_vertices[i] == 3
+    assert rep.face_depths[i] == pytest.approx(0.9)
+
+
+def test_check_right_angle_is_not_encroached():
+    # (0, 1, 0) sees the segment (-1,0,0)-(1,0,0) at exactly 90 degrees (Thales): on the sphere, not inside.
+    pts = np.array([[-1, 0, 0], [1, 0, 0], [0, 1, 0]], dtype=float)
+    mesh = TetMesh(
+        points=pts,
+        tets=np.zeros((0, 4), np.int64),
+        boundary_faces=np.zeros((0, 3), np.int64),
+        face_markers=np.zeros(0, np.int64),
+        segments=np.array([[0, 1]]),
+    )
+    assert check_gabriel(mesh).ok
+    mesh.points = np.vstack([pts, [[0, 0.99, 0]]])
+    rep = check_gabriel(mesh)
+    assert rep.segments.tolist() == [0] and rep.segment_vertices.tolist() == [3]
+
+
+def test_check_rejects_bad_faces():
+    pts = np.array([[0, 0, 0], [1, 0, 0], [2, 0, 0]], dtype=float)
+    mesh = TetMesh(
+        points=pts,
+        tets=np.zeros((0, 4), np.int64),
+        boundary_faces=np.array([[0, 1, 2]]),
+        face_markers=np.zeros(1, np.int64),
+    )
+    with pytest.raises(InvalidInputError, match="collinear"):
+        check_gabriel(mesh)
+    mesh.boundary_faces = np.array([[0, 1, 7]])
+    with pytest.raises(InvalidInputError, match="point 7"):
+        check_gabriel(mesh)
+
+
+@settings(derandomize=True, deadline=None, max_examples=30)
+@given(st.lists(st.tuples(*[st.integers(-8, 8)] * 3), min_size=4, max_size=12, unique=True))
+def test_check_agrees_with_brute_force_on_integer_points(coords):
+    # Integer coordinates: squared distances are exact in float64, so a brute-force test is exact too.
+    pts = np.array(coords, dtype=float)
+    n = len(pts)
+    faces = [
+        (a, b, c)
+        for a in range(n)
+        for b in range(a + 1, n)
+        for c in range(b + 1, n)
+        if np.linalg.norm(np.cross(pts[b] - pts[a], pts[c] - pts[a])) > 0
+    ][:40]
+    segs = [(a, b) for a in range(n) for b in range(a + 1, n)]
+    mesh = TetMesh(
+        points=pts,
+        tets=np.zeros((0, 4), np.int64),
+        boundary_faces=np.array(faces).reshape(-1, 3),
+        face_markers=np.zeros(len(faces), np.int64),
+        segments=np.array(segs),
+    )
+    rep = check_gabriel(mesh)
+    # Segment (a, b): p is strictly inside its diametral sphere iff (a - p).(b - p) < 0 (exact on integers).
+    expect = [
+        k
+        for k, (a, b) in enumerate(segs)
+        if any(np.dot(pts[a] - pts[p], pts[b] - pts[p]) < 0 for p in range(n) if p not in (a, b))
+    ]
+    assert rep.segments.tolist() == expect
+
+
+# ---- refine_gabriel
+# ---------------------------------------------------------------------------------------------
+
+
+def test_cube_converges_without_steiner_points():
+    # Square faces: the fourth corner lies on each triangle's diametral sphere (not inside), the other corners
+    # outside; an edge is seen from every other corner at an angle of at most 90 degrees. Nothing to do.
+    plc = cube()
+    res = refine_gabriel(plc, max_steiner=50)
+    assert res.status == "converged", res.stats["diagnosis"]["stop_reason"]
+    assert res.stats["steiner_points"] == 0
+    assert volume(res.mesh) == pytest.approx(1.0, abs=1e-12)
+    assert sorted(set(res.mesh.face_markers.tolist())) == [0, 1, 2, 3, 4, 5]
+    assert_result_consistent(res, plc)
+
+
+@pytest.mark.parametrize("theta", range(1, 11))
+def test_wedge_ends_with_status_and_names_the_dihedral(theta):
+    plc = wedge(theta)
+    res = refine_gabriel(plc, max_steiner=200, time_limit=5)
+    assert_result_consistent(res, plc)
+    angles = res.stats["diagnosis"]["smallest_angles"]
+    # The dihedral angle between the bottom (z = 0) and the top (z = x tan theta) facets along segment (0, 1).
+    dihedral = [a for a in angles if a["kind"] == "dihedral" and sorted(a["vertices"]) == [0, 1]]
+    assert dihedral and dihedral[0]["degrees"] == pytest.approx(theta, abs=1e-9)
+    assert angles[0]["degrees"] == pytest.approx(theta, abs=1e-9)  # nothing smaller in this PLC
+    # The wedge's vertices sit at the corners of unit squares: every diametral sphere of the input is empty.
+    assert res.status == "converged"
+
+
+@pytest.mark.parametrize("theta", range(1, 11))
+def test_spike_ends_within_budget_and_names_the_apex(theta):
+    plc = spike(theta)
+    res = refine_gabriel(plc, max_steiner=150, time_limit=5)
+    assert_result_consistent(res, plc)
+    assert res.stats["steiner_points"] <= 150
+    smallest = res.stats["diagnosis"]["smallest_angles"][0]
+    # At the apex (index 10) neighbouring generators make 2 asin(sin(theta) sin(18 deg)) < theta degrees.
+    generators = 2 * np.degrees(np.arcsin(np.sin(np.radians(theta)) * np.sin(np.radians(18))))
+    assert 10 in smallest["vertices"]
+    assert smallest["degrees"] <= generators + 1e-9
+
+
+def test_budget_and_min_length_are_statuses():
+    plc = spike(1)
+    res = refine_gabriel(plc, max_steiner=3)
+    assert res.status == "budget_exhausted" and res.stats["steiner_points"] == 3
+    # Base edges: 2 tan(1 deg) sin(18 deg) = 0.0108 long; no split may make an edge shorter than 0.01.
+    res = refine_gabriel(plc, max_steiner=1000, min_length=0.01)
+    assert res.status == "min_length_reached"
+    assert "min_length" in res.stats["diagnosis"]["stop_reason"]
+
+
+def test_split_rules_are_deterministic():
+    plc = spike(3)
+    for split in ("shells", "midpoint"):
+        a = refine_gabriel(plc, max_steiner=60, split=split)
+        b = refine_gabriel(plc, max_steiner=60, split=split)
+        np.testing.assert_array_equal(a.mesh.points, b.mesh.points)
+        np.testing.assert_array_equal(a.mesh.tets, b.mesh.tets)
+
+
+def test_progress_callback_is_called():
+    calls = []
+    refine_gabriel(spike(1), max_steiner=40, progress=lambda *a: calls.append(a), progress_every=10)
+    assert [c[0] for c in calls] == [10, 20, 30, 40]
+
+
+def test_invalid_plc_is_reported():
+    plc = cube()
+    plc.points[7] = plc.points[0]
+    with pytest.raises(InvalidInputError, match="duplicate points"):
+        refine_gabriel(plc)
+    plc = cube()
+    plc.triangles[0] = [0, 1, 99]
+    with pytest.raises(InvalidInputError, match="point 99"):
+        refine_gabriel(plc)
+
+
+def schonhardt() -> PLC:
+    """The Schönhardt prism: top triangle twisted by 30 degrees; side quads split along their reflex
+    diagonals."""
+    path = DATA / "schonhardt.off"
+    if not path.exists():
+        pytest.skip("../shared/data not present")
+    lines = [ln for ln in path.read_text().split("\n")[1:] if ln.strip()]
+    n, m = map(int, lines[0].split()[:2])
+    pts = np.array([[float(v) for v in ln.split()] for ln in lines[1 : 1 + n]])
+    tris = np.array([[int(v) for v in ln.split()[1:4]] for ln in lines[1 + n : 1 + n + m]])
+    return PLC(points=pts, triangles=tris, facet_ids=np.arange(len(tris)))
+
+
+def test_schonhardt_prism():
+    plc = schonhardt()
+    # SOURCES.md: 4 of its 8 triangles are not Gabriel, so Steiner points are needed.
+    res = refine_gabriel(plc, max_steiner=500, time_limit=10)
+    assert_result_consistent(res, plc)
+    assert res.stats["steiner_points"] > 0
+    if res.status == "converged":
+        assert volume(res.mesh) > 0
