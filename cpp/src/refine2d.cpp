@@ -97,7 +97,7 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   }
 
   RefineResult2 r;
-  r.mesh = st.finish();
+  r.mesh = cdt::to_mesh(st.cdt);
   r.obtuse_boundary_triangles = count_obtuse_boundary(r.mesh);
   r.steiner_points = st.placed;
   for (const auto& e : st.edges) r.lower_bound += e.lower_bound;

@@ -33,7 +33,6 @@ State::State(const Domain2& d, long long b) : domain(d), n_input(static_cast<int
       edges.push_back({{a, c}, 0, 0});  // an interface appears once, as (min, max)
   }
   convex_polygon = is_convex_polygon();
-  insert_frame();
 }
 
 bool State::is_convex_polygon() const {
@@ -48,26 +47,17 @@ bool State::is_convex_polygon() const {
   return true;
 }
 
-void State::insert_frame() {
-  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
-  for (const auto& p : domain.points) {
-    x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
-  }
-  if (!(x0 <= x1)) return;
-  double pad = 4 * std::max({x1 - x0, y1 - y0, 1.0});
-  for (Point corner : {Point(x0 - pad, y0 - pad), Point(x1 + pad, y0 - pad), Point(x1 + pad, y1 + pad),
-                       Point(x0 - pad, y1 + pad)}) {
-    Vertex_handle v = cdt.insert(corner);
-    v->info() = -1;
-    frame_.push_back(v);
-  }
-  cdt::mark_domain(cdt, domain);
-}
-
-Mesh2 State::finish() {
-  for (Vertex_handle v : frame_) cdt.remove(v);  // outside faces only: the domain's triangles do not change
-  frame_.clear();
-  return cdt::to_mesh(cdt);
+bool State::keeps_hull_convex(const Side& side, const Point& p) const {
+  Face_handle fl = left_face(side);
+  Face_handle fr = fl->neighbor(fl->index(apex(side)));
+  if (!cdt.is_infinite(fr)) return true;
+  // An edge of CGAL's convex hull, which must stay convex: r, s, p, e, n (the hull counter-clockwise, r before s
+  // and n after e) must never turn right.
+  Face_handle before = fr->neighbor(fr->index(side.e)), after = fr->neighbor(fr->index(side.s));
+  const Point &r = before->vertex(before->index(fr))->point(), &n = after->vertex(after->index(fr))->point();
+  const Point &s = side.s->point(), &e = side.e->point();
+  return CGAL::orientation(r, s, p) != CGAL::RIGHT_TURN && CGAL::orientation(s, p, e) != CGAL::RIGHT_TURN &&
+         CGAL::orientation(p, e, n) != CGAL::RIGHT_TURN;
 }
 
 Face_handle State::left_face(const Side& side) const {
@@ -315,11 +305,12 @@ Vertex_handle State::split(const Side& side, const Point& p) {
   const cdt::FaceInfo left = fl->info(), right = fl->neighbor(i)->info();
   const int edge = edge_of(side);
   Vertex_handle v;
-  if (keeps_triangles_valid(side, p)) {
+  if (keeps_triangles_valid(side, p) && keeps_hull_convex(side, p)) {
     v = cdt.insert(p, CDT::EDGE, fl, i);  // splits the constraint and both triangles, then flips
   } else {
-    // p is off the line and a neighbouring apex lies nearly on it (a sliver): splitting in place would invert a
-    // triangle. Replace the constraint (s, e) by the polyline s-p-e instead; CGAL retriangulates exactly.
+    // p is off the line and a neighbouring apex lies nearly on it (a sliver), or p bends a convex hull edge
+    // inward: splitting in place would invert a triangle or the hull. Replace the constraint (s, e) by the
+    // polyline s-p-e instead; CGAL inserts p (inside or outside the hull) and retriangulates exactly.
     std::size_t before = cdt.number_of_vertices();
     cdt.remove_constrained_edge(fl, i);
     v = cdt.insert(p, side.s->face());

@@ -34,12 +34,8 @@ struct DiskWalk {
 
 class State {
  public:
-  // Triangulates the domain (cdt::build), then adds a frame of 4 vertices far outside: boundary subsegments are
-  // then never edges of CGAL's convex hull, which must stay convex, so Steiner points may bend them by ulps either
-  // way. The frame is removed by finish().
+  // Triangulates the domain (cdt::build).
   State(const Domain2& domain, long long budget);
-  // Removes the frame and returns the mesh (cdt::to_mesh).
-  Mesh2 finish();
 
   CDT cdt;
   const Domain2& domain;
@@ -76,11 +72,14 @@ class State {
 
   // Inserts p (from candidates_near) into the constrained edge (s, e): CGAL splits it into (s, p), (p, e) and
   // restores the constrained Delaunay property by flips. When p is off the line and a neighbouring apex lies nearly
-  // on it (so that splitting in place would invert a triangle), the constraint is replaced by the polyline s-p-e
-  // and CGAL retriangulates. Domain marks of the changed faces are copied from the side they lie on; the sides of
+  // on it, or p bends a convex hull edge inward (so that splitting in place would invert a triangle or the hull),
+  // the constraint is replaced by the polyline s-p-e and CGAL retriangulates. Domain marks of the changed faces are copied from the side they lie on; the sides of
   // changed faces are queued. Returns nullptr only when p coincides with an existing vertex.
   // Cost: O(degree of p) plus the flips.
   Vertex_handle split(const Side& side, const Point& p);
+  // Inserting p into the edge keeps CGAL's convex hull convex (always, unless the side is a hull edge and p bends
+  // it inward; exact).
+  bool keeps_hull_convex(const Side& side, const Point& p) const;
   // p would keep the two triangles next to the side counter-clockwise when inserted into the edge (exact; p may
   // be ulps off the line, and a neighbouring apex nearly on it).
   bool keeps_triangles_valid(const Side& side, const Point& p) const;
@@ -125,8 +124,6 @@ class State {
 
  private:
   bool is_convex_polygon() const;  // every boundary side on the hull, no interface, every vertex on a constraint
-  void insert_frame();
-  std::vector<Vertex_handle> frame_;
   // The neighbour of `from` along the constraint toward `end` (`end`, or a vertex the constraint passes through).
   Vertex_handle next_on_constraint(Vertex_handle from, Vertex_handle end) const;
   // Domain marks of the faces changed by inserting v between to_s and to_e (see split); queues their sides.
