@@ -203,28 +203,47 @@ def test_spike_ends_within_budget_and_names_the_apex(theta):
     assert smallest["degrees"] <= generators + 1e-9
 
 
+def flat_tetrahedron() -> PLC:
+    """Apex 0.1 above the center of an equilateral base of circumradius 1: the apex encroaches the base facet
+    (depth 0.9), and its edges make 5.7 degrees with the base: refinement runs until a budget stops it."""
+    s = np.sqrt(3) / 2
+    pts = [[1, 0, 0], [-0.5, s, 0], [-0.5, -s, 0], [0, 0, 0.1]]
+    return plc_of(pts, [[[0, 2, 1]], [[0, 1, 3]], [[1, 2, 3]], [[2, 0, 3]]])
+
+
 def test_budget_and_min_length_are_statuses():
-    plc = spike(1)
+    plc = flat_tetrahedron()
     res = refine_gabriel(plc, max_steiner=3)
     assert res.status == "budget_exhausted" and res.stats["steiner_points"] == 3
-    # Base edges: 2 tan(1 deg) sin(18 deg) = 0.0108 long; no split may make an edge shorter than 0.01.
-    res = refine_gabriel(plc, max_steiner=1000, min_length=0.01)
-    assert res.status == "min_length_reached"
+    assert_result_consistent(res, plc)
+    # The apex is 0.51 from the midpoint of base edge (0, 1), inside its diametral sphere (radius 0.866): the
+    # first split halves it into pieces of 0.866 < 0.9.
+    res = refine_gabriel(plc, max_steiner=1000, min_length=0.9)
+    assert res.status == "min_length_reached" and res.stats["steiner_points"] == 0
     assert "min_length" in res.stats["diagnosis"]["stop_reason"]
+    # No time at all: stops before the first insertion; the input is not Gabriel.
+    res = refine_gabriel(plc, max_steiner=10**6, time_limit=0.0)
+    assert res.status == "budget_exhausted" and res.stats["steiner_points"] == 0
+    assert "time_limit" in res.stats["diagnosis"]["stop_reason"]
+    smallest = res.stats["diagnosis"]["smallest_angles"][0]
+    # Edge (apex, base vertex) against the base plane: atan(0.1 / 1) = 5.71 degrees.
+    assert smallest["kind"] == "segment-facet"
+    assert smallest["degrees"] == pytest.approx(np.degrees(np.arctan(0.1)))
 
 
 def test_split_rules_are_deterministic():
-    plc = spike(3)
+    plc = flat_tetrahedron()
     for split in ("shells", "midpoint"):
         a = refine_gabriel(plc, max_steiner=60, split=split)
         b = refine_gabriel(plc, max_steiner=60, split=split)
+        assert a.stats["steiner_points"] == 60
         np.testing.assert_array_equal(a.mesh.points, b.mesh.points)
         np.testing.assert_array_equal(a.mesh.tets, b.mesh.tets)
 
 
 def test_progress_callback_is_called():
     calls = []
-    refine_gabriel(spike(1), max_steiner=40, progress=lambda *a: calls.append(a), progress_every=10)
+    refine_gabriel(flat_tetrahedron(), max_steiner=40, progress=lambda *a: calls.append(a), progress_every=10)
     assert [c[0] for c in calls] == [10, 20, 30, 40]
 
 

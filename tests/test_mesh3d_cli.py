@@ -10,8 +10,6 @@ import pytest
 from mesh3d_shapes import CUBE_POINTS, CUBE_TRIANGLES, TET_TRIANGLES, write_off
 from nonobtuse.cli import EXIT_INVALID, EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS, main
 
-pytest.importorskip("nonobtuse.mesh3d.gabriel", reason="check_gabriel/refine_gabriel not merged yet")
-
 # A low tet: the apex (1, 1, 2) is at distance sqrt(1 + 1 + 4) < 2 sqrt(2) from the circumcenter (2, 2, 0)
 # of the base (0,0,0), (4,0,0), (0,4,0), i.e. strictly inside the base's diametral sphere.
 LOW_TET = np.array([[0, 0, 0], [4, 0, 0], [0, 4, 0], [1, 1, 2]])
@@ -33,12 +31,15 @@ def test_check3d_gabriel_cube_exits_0(cube, capsys):
     # likewise.
     assert main(["check3d", str(cube), "--json"]) == EXIT_OK
     out = json.loads(capsys.readouterr().out)
-    assert out["encroached_facets"] == 0 and out["encroached_segments"] == 0 and out["worst_depth"] is None
+    assert out["encroached_facets"] == 0 and out["encroached_segments"] == 0 and out["gabriel"]["ok"]
 
 
 def test_check3d_encroached_exits_1(low_tet, capsys):
     assert main(["check3d", str(low_tet), "--backend", "tetgen"]) == EXIT_VIOLATIONS
     assert "encroached_facets: 1" in capsys.readouterr().out  # the base
+    assert main(["check3d", str(low_tet), "--json"]) == EXIT_VIOLATIONS
+    deepest = json.loads(capsys.readouterr().out)["gabriel"]["deepest_faces"][0]
+    assert deepest["vertex"] == 3  # the apex encroaches the base
 
 
 def test_check3d_invalid_input_exits_2(tmp_path, capsys):

@@ -4,8 +4,11 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 
 from mesh3d_shapes import CUBE_POINTS
+from nonobtuse import _core
 from nonobtuse.mesh3d import TetMesh, control_volumes3d
 from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes, tet_circumcenters, triangle_circumcenters
 
@@ -82,3 +85,17 @@ def test_volumes_sum_to_the_mesh_volume_on_a_delaunay_mesh():
     cv = control_volumes3d(mesh)
     assert cv.volumes.sum() == pytest.approx(6.0, rel=1e-12)
     assert len(mesh.tets) > 100  # volume 6 in tets of at most 0.05
+
+
+@settings(derandomize=True, deadline=None, max_examples=30)
+@given(st.lists(st.tuples(*[st.integers(-50, 50)] * 3), min_size=5, max_size=40, unique=True))
+def test_cell_volumes_sum_to_the_hull_volume(coords):
+    # On the Delaunay tetrahedralization of any point set (integer coordinates, so volumes are exact in
+    # floating point up to rounding of the circumcenters), the pyramids over the dual pieces tile each tet:
+    # the cell volumes sum to the volume of the convex hull, whatever the signs of the pieces.
+    points = np.array(coords, dtype=float)
+    tets = _core.delaunay_tetrahedra(points)
+    assume(len(tets) > 0)
+    cv = control_volumes3d(tetmesh(points, tets))
+    total = signed_tet_volumes(points, tets).sum()
+    assert cv.volumes.sum() == pytest.approx(total, rel=1e-9)

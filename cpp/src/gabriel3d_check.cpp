@@ -1,4 +1,5 @@
 // The exact Gabriel certificate of a 3D boundary: empty open diametral spheres of faces and segments.
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Interval_nt.h>
 
 #include <algorithm>
@@ -57,20 +58,36 @@ SearchBall search_ball(const P3& a, const P3& b) {
 }
 
 SearchBall search_ball(const P3& a, const P3& b, const P3& c) {
-  CGAL::Protect_FPU_rounding<true> upward;
-  IVec ia = ivec(a), u = ivec(b) - ia, v = ivec(c) - ia;
-  IVec w = cross(u, v);
-  I denominator = I(2) * dot(w, w);
-  if (denominator.inf() <= 0.0) {  // (nearly) collinear: no finite bound
+  {
+    CGAL::Protect_FPU_rounding<true> upward;
+    IVec ia = ivec(a), u = ivec(b) - ia, v = ivec(c) - ia;
+    IVec w = cross(u, v);
+    I denominator = I(2) * dot(w, w);
+    if (denominator.inf() > 0.0) {
+      // Circumcenter relative to a: ((|u|^2 v - |v|^2 u) x (u x v)) / (2 |u x v|^2).
+      IVec t = cross(dot(u, u) * v - dot(v, v) * u, w);
+      IVec offset{t.x / denominator, t.y / denominator, t.z / denominator};
+      IVec center{ia.x + offset.x, ia.y + offset.y, ia.z + offset.z};
+      SearchBall ball = enclose(center, CGAL::sqrt(dot(offset, offset)));
+      // Accept when the interval evaluation was tight; a nearly collinear (needle) triangle makes it loose, and
+      // a loose ball would make the search visit far too many points.
+      if (!ball.everything && ball.radius <= 1.001 * CGAL::sqrt(dot(offset, offset)).inf()) return ball;
+    }
+  }
+  // Needle triangles: the exact circumcenter (lazy exact kernel), enclosed in the tightest double intervals.
+  if (CGAL::collinear(a, b, c)) {  // no diametral sphere: callers reject or skip such faces
     SearchBall ball;
     ball.everything = true;
     return ball;
   }
-  // Circumcenter relative to a: ((|u|^2 v - |v|^2 u) x (u x v)) / (2 |u x v|^2).
-  IVec t = cross(dot(u, u) * v - dot(v, v) * u, w);
-  IVec offset{t.x / denominator, t.y / denominator, t.z / denominator};
-  IVec center{ia.x + offset.x, ia.y + offset.y, ia.z + offset.z};
-  return enclose(center, CGAL::sqrt(dot(offset, offset)));
+  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+  auto center = CGAL::circumcenter(EK::Point_3(a.x(), a.y(), a.z()), EK::Point_3(b.x(), b.y(), b.z()),
+                                   EK::Point_3(c.x(), c.y(), c.z()));
+  CGAL::exact(center);
+  IVec ic{I(CGAL::to_interval(center.x())), I(CGAL::to_interval(center.y())), I(CGAL::to_interval(center.z()))};
+  CGAL::Protect_FPU_rounding<true> upward;
+  IVec r = ic - ivec(a);
+  return enclose(ic, CGAL::sqrt(dot(r, r)));
 }
 
 PointIndex::PointIndex(const std::vector<P3>& points) : points_(points) {
@@ -159,27 +176,29 @@ int PointIndex::nearest(const P3& q) const {
 }
 
 Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex& index, int a, int b, int c,
-                                std::size_t* candidates) {
+                                std::size_t* candidates, const std::function<bool(int)>& ignore) {
   const P3 &pa = points[a], &pb = points[b];
   SearchBall ball = c < 0 ? search_ball(pa, pb) : search_ball(pa, pb, points[c]);
   P3 center(ball.center[0], ball.center[1], ball.center[2]);
-  if (ball.everything) center = c < 0 ? CGAL::midpoint(pa, pb) : CGAL::circumcenter(pa, pb, points[c]);
+  if (ball.everything) center = c < 0 ? CGAL::midpoint(pa, pb) : CGAL::centroid(pa, pb, points[c]);
   double radius = std::sqrt(CGAL::to_double(CGAL::squared_distance(center, pa)));
-  Encroachment best;
+  // Candidates by decreasing floating-point depth; the first one the exact predicate confirms is reported. Deep
+  // encroachers are confirmed at once, so a big sphere over many points costs one exact test, not one per point.
+  std::vector<std::pair<double, int>> found;
   index.for_each_in(ball, [&](int t) {
-    if (t == a || t == b || t == c) return;
-    if (candidates) ++*candidates;
+    if (t == a || t == b || t == c || (ignore && ignore(t))) return;
+    double depth = 1.0 - std::sqrt(CGAL::to_double(CGAL::squared_distance(center, points[t]))) / radius;
+    found.emplace_back(-depth, t);
+  });
+  if (candidates) *candidates += found.size();
+  std::sort(found.begin(), found.end());
+  for (const auto& [minus_depth, t] : found) {
     const P3& pt = points[t];
     bool inside = c < 0 ? CGAL::side_of_bounded_sphere(pa, pb, pt) == CGAL::ON_BOUNDED_SIDE
                         : CGAL::side_of_bounded_sphere(pa, pb, points[c], pt) == CGAL::ON_BOUNDED_SIDE;
-    if (!inside) return;
-    double depth = 1.0 - std::sqrt(CGAL::to_double(CGAL::squared_distance(center, pt))) / radius;
-    if (best.vertex < 0 || depth > best.depth || (depth == best.depth && t < best.vertex)) {
-      best.vertex = t;
-      best.depth = depth;
-    }
-  });
-  return best;
+    if (inside) return {-1, t, -minus_depth};
+  }
+  return {};
 }
 
 }  // namespace nonobtuse::gabriel3d

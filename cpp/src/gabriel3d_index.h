@@ -4,6 +4,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "nonobtuse/gabriel3d.h"
@@ -90,9 +91,11 @@ void PointIndex::for_each_in(const SearchBall& ball, Visit&& visit) const {
   }
 }
 
-// The deepest point strictly inside the diametral sphere of segment ab (c == -1) or triangle abc, other than the
-// simplex's own vertices; index == -1 when the sphere is empty. Exact decisions; depth in floating point.
+// The point strictly inside the diametral sphere of segment ab (c == -1) or triangle abc, other than the simplex's
+// own vertices, that is deepest by floating-point depth among those the exact predicate confirms (exact ties in
+// depth are vanishingly rare and only change which encroacher is named); vertex == -1 when the sphere is empty.
+// Points for which ignore(i) is true are not considered.
 Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex& index, int a, int b, int c,
-                                std::size_t* candidates = nullptr);
+                                std::size_t* candidates = nullptr, const std::function<bool(int)>& ignore = {});
 
 }  // namespace nonobtuse::gabriel3d

@@ -246,7 +246,7 @@ bool triangle_on_facet(const PlcState& s, int f, int a, int b, int c) {
   Q2 g = CGAL::centroid(ia->second->point(), ib->second->point(), ic->second->point());
   FacetCDT::Locate_type lt;
   int li = 0;
-  auto loc = facet.cdt.locate(g, lt, li);
+  auto loc = facet.cdt.locate(g, lt, li, ia->second->face());  // the walk starts at a corner: short
   if (lt == FacetCDT::FACE) return loc->info().in_domain;
   if (lt == FacetCDT::EDGE) return loc->info().in_domain && loc->neighbor(li)->info().in_domain;
   return false;

@@ -32,8 +32,9 @@ SubfacetRef canonical(SubfacetRef r) {
 
 class Refiner {
  public:
-  Refiner(PlcState& s, const Refine3Options& o)
-      : s_(s), o_(o), index_(s.points), start_(std::chrono::steady_clock::now()) {}
+  Refiner(PlcState& s, const Refine3Options& o, bool ignore_frame_artifacts)
+      : s_(s), o_(o), ignore_frame_artifacts_(ignore_frame_artifacts), index_(s.points),
+        start_(std::chrono::steady_clock::now()) {}
 
   // Runs to convergence of the subfacets and subsegments, or to a stop.
   std::optional<Stop> run();
@@ -48,21 +49,39 @@ class Refiner {
 
  private:
   std::optional<Stop> budget_left() const;
+  bool out_of_time() const { return seconds() > o_.time_limit; }
   std::vector<Key> encroached_subsegments() const;
   std::vector<SubfacetRef> encroached_subfacets() const;
   bool encroached(int a, int b, int c) const {
     return deepest_encroacher(s_.points, index_, a, b, c).vertex >= 0;
   }
+  // A subfacet (a, b, c) of facet f encroached in 3D, not counting points of f that the facet's triangulation
+  // sees outside the subfacet's circumcircle (exact 2D test in its frame). In exact arithmetic the two tests agree
+  // for points in the facet's plane; they differ only through the rounding of the frame and of Steiner points
+  // (near-cocircular points, e.g. a regular 10-gon, where splitting for them wasted hundreds of points). Points
+  // of f inside the 2D circumcircle lie behind a subsegment and do count. The exact check of the final mesh is
+  // authoritative either way; repair() fixes what it finds.
+  bool subfacet_encroached(int f, int a, int b, int c) const {
+    const Facet& facet = *s_.facets[f];
+    const Q2 &pa = facet.vertex.at(a)->point(), &pb = facet.vertex.at(b)->point(), &pc = facet.vertex.at(c)->point();
+    auto artifact = [&](int t) {
+      auto it = facet.vertex.find(t);
+      return ignore_frame_artifacts_ && it != facet.vertex.end() &&
+             CGAL::side_of_bounded_circle(pa, pb, pc, it->second->point()) != CGAL::ON_BOUNDED_SIDE;
+    };
+    return deepest_encroacher(s_.points, index_, a, b, c, nullptr, artifact).vertex >= 0;
+  }
   // Splits `sub` if it still exists and (unless `always`) is still encroached by a vertex.
   std::optional<Stop> split(const Key& sub, bool always, bool* inserted);
   // Splits subfacet f (a face of facet f.facet's triangulation, or only a triangle on it when !require_face).
-  std::optional<Stop> split_subfacet(const SubfacetRef& f, bool require_face, bool* inserted, bool* split_segment);
+  std::optional<Stop> split_subfacet(const SubfacetRef& f, bool require_face, bool* inserted);
   std::optional<Stop> too_short(const P3& p, const P3& q) const;
   std::optional<Stop> too_close(const P3& p) const;
   void inserted(int m);
 
   PlcState& s_;
   const Refine3Options& o_;
+  bool ignore_frame_artifacts_;
   PointIndex index_;
   std::chrono::steady_clock::time_point start_;
   long last_encroached_segments_ = 0, last_encroached_facets_ = 0;
@@ -71,15 +90,17 @@ class Refiner {
 std::optional<Stop> Refiner::budget_left() const {
   if (steiner_on_segments + steiner_on_facets >= o_.max_steiner)
     return Stop{Refine3Status::BudgetExhausted, "max_steiner (" + std::to_string(o_.max_steiner) + ") reached"};
-  if (seconds() > o_.time_limit)
+  if (out_of_time())
     return Stop{Refine3Status::BudgetExhausted, "time_limit (" + std::to_string(o_.time_limit) + " s) reached"};
   return std::nullopt;
 }
 
 std::vector<Key> Refiner::encroached_subsegments() const {
   std::vector<Key> out;
-  for (const auto& [sub, parent] : s_.subsegments)
+  for (const auto& [sub, parent] : s_.subsegments) {
     if (encroached(sub.first, sub.second, -1)) out.push_back(sub);
+    if (out_of_time()) break;  // run() stops at its next budget check
+  }
   return out;
 }
 
@@ -91,8 +112,9 @@ std::vector<SubfacetRef> Refiner::encroached_subfacets() const {
       if (!fh->info().in_domain) continue;
       int a = fh->vertex(0)->info(), b = fh->vertex(1)->info(), c = fh->vertex(2)->info();
       if (CGAL::collinear(s_.points[a], s_.points[b], s_.points[c])) continue;  // rounding; left to the final check
-      if (encroached(a, b, c)) out.push_back(canonical({static_cast<int>(f), a, b, c}));
+      if (subfacet_encroached(static_cast<int>(f), a, b, c)) out.push_back(canonical({static_cast<int>(f), a, b, c}));
     }
+    if (out_of_time()) break;
   }
   // The face order of a triangulation depends on where the walks of point location went (randomized): sort.
   std::sort(out.begin(), out.end());
@@ -181,12 +203,13 @@ std::optional<Key> first_crossed_subsegment(const Facet& facet, const Q2& g, con
 }
 
 // Splits subfacet f at its circumcenter, or splits the subsegments that point encroaches or lies beyond.
-std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_face, bool* inserted_point,
-                                            bool* split_segment) {
+std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_face, bool* inserted_point) {
   Facet& facet = *s_.facets[r.facet];
   FacetCDT::Face_handle fh;
   auto va = facet.vertex.at(r.a), vb = facet.vertex.at(r.b), vc = facet.vertex.at(r.c);
-  if ((!facet.cdt.is_face(va, vb, vc, fh) && require_face) || !encroached(r.a, r.b, r.c)) return std::nullopt;
+  if (require_face ? !facet.cdt.is_face(va, vb, vc, fh) || !subfacet_encroached(r.facet, r.a, r.b, r.c)
+                   : !encroached(r.a, r.b, r.c))
+    return std::nullopt;
   if (!require_face) fh = va->face();
   const P3 center = CGAL::circumcenter(s_.points[r.a], s_.points[r.b], s_.points[r.c]);
   // A circumcenter that encroaches a subsegment of this facet is not inserted: the subsegments are split instead.
@@ -211,7 +234,6 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
   }
   if (!hit.empty()) {
     std::sort(hit.begin(), hit.end());
-    *split_segment = true;
     for (const Key& sub : hit)
       if (auto stop = split(sub, true, inserted_point)) return stop;
     return std::nullopt;
@@ -228,6 +250,7 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
 
 std::optional<Stop> Refiner::run() {
   for (;;) {
+    if (auto stop = budget_left()) return stop;
     bool progress = false;
     // Level 1: subsegments, until none is encroached.
     for (auto subs = encroached_subsegments(); !subs.empty(); subs = encroached_subsegments()) {
@@ -246,10 +269,8 @@ std::optional<Stop> Refiner::run() {
     auto subfacets = encroached_subfacets();
     last_encroached_facets_ = static_cast<long>(subfacets.size());
     if (subfacets.empty()) return std::nullopt;
-    for (const auto& r : subfacets) {
-      bool split_segment = false;
-      if (auto stop = split_subfacet(r, true, &progress, &split_segment)) return stop;
-    }
+    for (const auto& r : subfacets)
+      if (auto stop = split_subfacet(r, true, &progress)) return stop;
     if (!progress)  // every encroached subfacet's circumcenter was refused: the same state would repeat forever
       return Stop{Refine3Status::Stalled, "encroached subfacets remain whose circumcenters cannot be inserted"};
   }
@@ -261,9 +282,7 @@ std::optional<Stop> Refiner::repair(const Restricted& mesh, const std::vector<Ke
     if (auto stop = split(segments[e.index], false, progress)) return stop;
   for (const auto& e : report.faces) {
     auto [a, b, c] = mesh.boundary_faces[e.index];
-    bool split_segment = false;
-    if (auto stop = split_subfacet(canonical({mesh.face_facets[e.index], a, b, c}), false, progress, &split_segment))
-      return stop;
+    if (auto stop = split_subfacet(canonical({mesh.face_facets[e.index], a, b, c}), false, progress)) return stop;
   }
   return std::nullopt;
 }
@@ -290,12 +309,14 @@ const char* to_string(Refine3Status status) {
   return "stalled";
 }
 
-Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options) {
+namespace {
+
+Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool ignore_frame_artifacts) {
   using namespace gabriel3d;
   PlcState s = build_plc_state(plc);
   Refine3Result out;
   out.diagnosis.smallest_angles = smallest_input_angles(s);
-  Refiner refiner(s, options);
+  Refiner refiner(s, options, ignore_frame_artifacts);
   // Refine the subfacets, restrict the Delaunay tetrahedralization, check it exactly; where its boundary faces
   // differ from the subfacets (cospherical points) and are encroached, split those too and start over.
   std::optional<Stop> stop;
@@ -339,6 +360,22 @@ Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options) {
   }
   out.seconds = refiner.seconds();
   return out;
+}
+
+}  // namespace
+
+// First without the frame-rounding encroachers (fewest Steiner points). When that stalls (the Delaunay faces
+// that cover a facet then sit on rounding-level slivers whose circumcenters coincide with existing vertices),
+// once more from the input counting them: their extra points usually break the near-cospherical ties.
+Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options) {
+  Refine3Result first = refine_once(plc, options, true);
+  if (first.status != Refine3Status::Stalled) return first;
+  Refine3Options rest = options;
+  rest.time_limit = std::max(0.0, options.time_limit - first.seconds);
+  Refine3Result second = refine_once(plc, rest, false);
+  second.seconds += first.seconds;
+  second.diagnosis.stop_reason += " (second attempt; the first stalled: " + first.diagnosis.stop_reason + ")";
+  return second;
 }
 
 }  // namespace nonobtuse

@@ -220,3 +220,24 @@ TEST(Gabriel3DRefine, BudgetIsAStatus) {
 
 }  // namespace
 }  // namespace nonobtuse
+
+namespace nonobtuse {
+namespace {
+
+// The flat tetrahedron (edges at 5.7 degrees to the base facet) keeps the refinement busy until its budget. In
+// Debug builds (NONOBTUSE_CHECK_INVARIANTS) every insertion re-validates the facets' triangulations and the
+// subsegments; here the outcome must be consistent with its certificate.
+TEST(Gabriel3DRefine, FlatTetrahedronRunsToItsBudgetConsistently) {
+  Refine3Options o;
+  o.max_steiner = 200;
+  auto r = refine_gabriel(flat_tetrahedron_plc(), o);
+  bool clean = r.certificate.faces.empty() && r.certificate.segments.empty();
+  EXPECT_EQ(r.status == Refine3Status::Converged, clean) << r.diagnosis.stop_reason;
+  EXPECT_LE(r.steiner_on_segments + r.steiner_on_facets, 200);
+  ASSERT_FALSE(r.diagnosis.smallest_angles.empty());
+  EXPECT_EQ(r.diagnosis.smallest_angles[0].kind, "segment-facet");
+  EXPECT_NEAR(r.diagnosis.smallest_angles[0].degrees, std::atan(0.1) * 180.0 / 3.14159265358979323846, 1e-9);
+}
+
+}  // namespace
+}  // namespace nonobtuse

@@ -43,12 +43,6 @@ def encroached_counts(report: Any) -> tuple[int, int]:
     return len(report.faces), len(report.segments)
 
 
-def _worst_depth(report: Any) -> float | None:
-    """Largest encroachment depth (1 - distance / radius; floating point, for display), None when Gabriel."""
-    depths = [float(d.max()) for d in (report.face_depths, report.segment_depths) if len(d)]
-    return max(depths) if depths else None
-
-
 def _print(summary: dict[str, Any], as_json: bool) -> None:
     if as_json:
         print(json.dumps(jsonable(summary)))
@@ -68,7 +62,7 @@ def run_check3d(args: argparse.Namespace) -> int:
                "tets": len(mesh.tets),
                "boundary_faces": len(mesh.boundary_faces), "steiner_points": mesh.stats["steiner_points"],
                "encroached_facets": facets, "encroached_segments": segments,
-               "worst_depth": _worst_depth(report), "control_volumes": control_volumes3d(mesh).to_dict()}
+               "gabriel": report.to_dict(), "control_volumes": control_volumes3d(mesh).to_dict()}
     _print(summary, args.json)
     return EXIT_OK if facets == 0 and segments == 0 else EXIT_VIOLATIONS
 

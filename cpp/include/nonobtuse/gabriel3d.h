@@ -22,7 +22,7 @@ using Tetrahedron = std::array<int, 4>;  // indices, positively oriented
 // A boundary simplex (face or segment) whose open diametral sphere holds a mesh vertex.
 struct Encroachment {
   int index = -1;      // row in the faces (or segments) that were checked
-  int vertex = -1;     // the deepest encroaching vertex
+  int vertex = -1;     // the deepest encroaching vertex (by floating-point depth; encroachment itself is exact)
   double depth = 0.0;  // 1 - |vertex - center| / radius, in (0, 1]; floating point, for display only
 };
 
@@ -112,8 +112,9 @@ struct Refine3Result {
 // vertices restricted to the PLC's interior (flood fill from outside across boundary faces; hole seeds removed).
 // Steiner points lie on segments and facets (up to rounding of their coordinates). Stops at max_steiner, min_length,
 // time_limit, or when no progress is possible (stalled). status == Converged iff the exact check of the returned
-// mesh passes. Throws InvalidInput on malformed input (index out of range, duplicate points, degenerate or
-// non-planar facets, crossing facet edges).
+// mesh passes. The facets' boundary edges count as segments (their subsegments are returned and checked).
+// Deterministic. Throws InvalidInput on malformed input (index out of range, duplicate points, degenerate
+// triangles, facet edges crossing or passing through a vertex, facet vertices coinciding in the facet's plane).
 Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options);
 
 const char* to_string(Refine3Status status);
