@@ -1,14 +1,18 @@
 """Benchmark of nonobtuse boundary refinement against Triangle -pD, side by side in one process on the same
 inputs: Steiner points and wall time per strategy, beside the lower bound and CGAL make_conforming_Gabriel_2.
 
-Inputs: the CG:SHOP 2025 categories ortho, point-set, simple-polygon (../shared/data/cgshop25), and generated
+Inputs: the CG:SHOP 2025 categories ortho, point-set, simple-polygon, the PSLG categories (interior
+constraints) simple-polygon-exterior and simple-polygon-exterior-20 (../shared/data/cgshop25) and la.poly (a
+soil cross-section with interfaces, ../shared/data/2d), and generated
 domains of 1e3 .. 1e6 vertices: convex polygons with interior points, star-shaped (non-convex) polygons
 with interior points, and thin layers (a 1000 m x 1 m strip whose top and bottom are polylines, with
 interior points).
 
-    PYTHONPATH=src .venv/bin/python experiments/bench_refine2d.py [--quick]
+    PYTHONPATH=src .venv/bin/python experiments/bench_refine2d.py [--quick] [--pslg]
 
 Writes experiments/results/bench_refine2d.csv and .png and prints a table. --quick: generated sizes up to 1e4.
+--pslg: only the PSLG inputs, with the CG:SHOP best known counts beside; writes
+experiments/results/bench_refine2d_pslg.csv.
 """
 
 from __future__ import annotations
@@ -22,12 +26,14 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(ROOT / "src"), str(ROOT / "tests")]
+sys.path[:0] = [str(ROOT / "src"), str(ROOT / "tests"), str(ROOT / "experiments")]
 
 import triangle  # noqa: E402
 
 import nonobtuse  # noqa: E402
+from cgshop_best_known import best_known  # noqa: E402
 from nonobtuse import Domain  # noqa: E402
+from nonobtuse.io import load_domain  # noqa: E402
 from refine_helpers import SHARED, cgshop_domain  # noqa: E402
 
 STRATEGIES = ("greedy", "project-flip", "projection")
@@ -94,7 +100,7 @@ def cgal_gabriel(domain: Domain) -> tuple[int, float]:
     return n, time.perf_counter() - t0
 
 
-def run(name: str, category: str, domain: Domain, rows: list) -> None:
+def run(name: str, category: str, domain: Domain, rows: list, best: bool = False) -> None:
     row = {"input": name, "category": category, "vertices": len(domain.points)}
     for s in STRATEGIES:
         t0 = time.perf_counter()
@@ -104,6 +110,8 @@ def run(name: str, category: str, domain: Domain, rows: list) -> None:
         row["lower_bound"] = r.stats["lower_bound"]
     row["triangle_pD_steiner"], row["triangle_pD_seconds"] = triangle_pd(domain)
     row["cgal_gabriel_steiner"], row["cgal_gabriel_seconds"] = cgal_gabriel(domain)
+    if best:  # the PSLG categories: CG:SHOP's best known all-triangle counts (issue 4)
+        row["best_known_steiner"] = best_known(name)
     rows.append(row)
     print(
         f"{name:40s} n={row['vertices']:8d} lb={row['lower_bound']:7d} "
@@ -117,15 +125,21 @@ def run(name: str, category: str, domain: Domain, rows: list) -> None:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="generated inputs up to 1e4 vertices")
+    ap.add_argument("--pslg", action="store_true", help="only the PSLG inputs (CG:SHOP *-exterior*, la.poly)")
     args = ap.parse_args()
     rows: list[dict] = []
     cg = SHARED / "cgshop25"
     if cg.exists():
         for f in sorted(cg.glob("*.instance.json")):
             cat = f.name.split("_")[0]
-            if cat in ("ortho", "point-set", "simple-polygon"):
+            if cat in ("ortho", "point-set", "simple-polygon") and not args.pslg:
                 run(f.name.split(".")[0], cat, cgshop_domain(f), rows)
-    sizes = [10**3, 10**4] if args.quick else [10**3, 10**4, 10**5, 10**6]
+            elif cat in ("simple-polygon-exterior", "simple-polygon-exterior-20"):
+                run(f.name.split(".")[0], cat, cgshop_domain(f), rows, best=True)
+    la = SHARED / "2d" / "la.poly"
+    if la.exists():
+        run("la", "la.poly", load_domain(la), rows, best=True)
+    sizes = [] if args.pslg else [10**3, 10**4] if args.quick else [10**3, 10**4, 10**5, 10**6]
     for n in sizes:
         for gen in (convex, star, thin_layer):
             try:
@@ -134,8 +148,9 @@ def main() -> None:
                 print(f"{gen.__name__}_{n}: skipped, {e}")
     out = ROOT / "experiments" / "results"
     out.mkdir(parents=True, exist_ok=True)
-    with open(out / "bench_refine2d.csv", "w", newline="") as fh:
-        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
+    stem = "bench_refine2d_pslg" if args.pslg else "bench_refine2d"
+    with open(out / f"{stem}.csv", "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(dict.fromkeys(k for r in rows for k in r)))
         w.writeheader()
         w.writerows(rows)
     print("\ncategory totals (Steiner points):")
@@ -143,12 +158,14 @@ def main() -> None:
     keys = (
         ["lower_bound"]
         + [f"{s}_steiner" for s in STRATEGIES]
-        + ["triangle_pD_steiner", "cgal_gabriel_steiner"]
+        + ["triangle_pD_steiner", "cgal_gabriel_steiner", "best_known_steiner"]
     )
-    print(f"{'category':16s} " + " ".join(f"{k:>20s}" for k in keys))
+    print(f"{'category':26s} " + " ".join(f"{k:>20s}" for k in keys))
     for c in cats:
-        print(f"{c:16s} " + " ".join(f"{sum(r[k] for r in rows if r['category'] == c):20d}" for k in keys))
-    plot(rows, out / "bench_refine2d.png")
+        tot = [sum(r.get(k) or 0 for r in rows if r["category"] == c) for k in keys]
+        print(f"{c:26s} " + " ".join(f"{t:20d}" for t in tot))
+    if not args.pslg:
+        plot(rows, out / "bench_refine2d.png")
 
 
 def plot(rows: list, path: Path) -> None:

@@ -14,6 +14,25 @@ RefineStrategy strategy_from(const std::string& name) {
   throw InvalidInput("unknown refinement strategy '" + name + "' (greedy, project-flip, projection)");
 }
 
+py::dict diagnosis_to_dict(const RefineDiagnosis2& g) {
+  py::list junctions, angles;
+  for (const auto& j : g.junctions)
+    junctions.append(py::dict(py::arg("vertex") = j.vertex, py::arg("constraints") = j.constraints,
+                              py::arg("min_angle_degrees") = j.min_angle_degrees,
+                              py::arg("steiner_points") = j.steiner_points));
+  for (const auto& a : g.angles)
+    angles.append(py::dict(py::arg("vertex") = a.vertex, py::arg("edge") = py::make_tuple(a.vertex, a.a),
+                           py::arg("neighbour") = py::make_tuple(a.vertex, a.b), py::arg("degrees") = a.degrees,
+                           py::arg("steiner_points") = a.steiner_points));
+  py::dict d;
+  d["junctions"] = junctions;
+  d["angles"] = angles;
+  d["initial_violations"] = g.initial_violations;
+  d["propagation_depth"] = g.propagation_depth;
+  d["propagation_splits"] = g.propagation_splits;
+  return d;
+}
+
 py::dict result_to_dict(const RefineResult2& r) {
   py::dict d;
   d["mesh"] = mesh_to_dict(r.mesh);
@@ -26,6 +45,7 @@ py::dict result_to_dict(const RefineResult2& r) {
   std::vector<std::array<int, 4>> rows;
   for (const auto& e : r.edges) rows.push_back({e.edge[0], e.edge[1], e.steiner_points, e.lower_bound});
   d["edges"] = from_index_rows<4>(rows);
+  d["diagnosis"] = diagnosis_to_dict(r.diagnosis);
   return d;
 }
 

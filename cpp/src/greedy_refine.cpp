@@ -9,6 +9,10 @@
 // conflict zone), where x would break f (Figure 5). Then x moves back to the interval's start (Theorem 3's
 // rule); where the start is s itself, see choose_point.
 //
+// PSLGs (issue 4): an interface or dangling subsegment is swept once for both of its sides (encroachers of both,
+// t* = min over both); a sweep starting at an acute junction puts its first point on a power-of-two shell
+// (concentric_shells.cpp, with the termination argument of that rule).
+//
 // Termination: every step inserts one Steiner point strictly inside the subsegment being refined, and the
 // budget caps the points; a side is deferred at most once (the deferred set), so the queue drains: a side leaves
 // the queue when it is not violated, and re-enters only when a split changes its triangle. Within the budget,
@@ -18,6 +22,7 @@
 #include <optional>
 #include <set>
 
+#include "concentric_shells.h"
 #include "refine2d_state.h"
 
 namespace nonobtuse::refine2d {
@@ -81,6 +86,9 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
   };
   // Paper 4.3: blocked by a boundary vertex whose subsegment is violated: refine that one first.
   if (may_defer && blocker != nullptr && blocked_by_violated_boundary(st, blocker)) return defer();
+  // Concentric shells: from an acute junction the first point goes on a power-of-two shell (concentric_shells.cpp).
+  if (is_acute_junction(st, cur.s, cur.e) && pick_point(s, e, shell_parameter(s, e, t_greedy), allowed, p))
+    return Step::Place;
   double t = t_greedy;
   // Each iteration places a point or moves t strictly back toward s (to a forbidden interval's start, or by a
   // relative 2^-40 when rounding put the start inside the interval again); every candidate is checked exactly.
@@ -116,7 +124,8 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
 // fail (the apex is not among them), the walk is redone.
 void sweep(State& st, Side cur, std::set<Key>& deferred) {
   DiskWalk w = st.walk_diametral_disk(cur);
-  while (st.budget_left() && st.is_violated(cur)) {
+  // Interfaces: both sides at once (the walk collected both sides' encroachers).
+  while (st.budget_left() && (st.is_violated(cur) || st.is_violated({cur.e, cur.s}))) {
     keep_encroaching(cur.s->point(), cur.e->point(), w.encroachers);
     if (std::find(w.encroachers.begin(), w.encroachers.end(), st.apex(cur)) == w.encroachers.end())
       w = st.walk_diametral_disk(cur);
@@ -138,7 +147,13 @@ void greedy_refine(State& st) {
   while (!st.queue.empty() && st.budget_left()) {
     Side side = st.queue.front();
     st.queue.pop_front();
-    if (st.is_violated(side)) sweep(st, side, deferred);
+    if (!st.is_violated(side)) continue;
+    const std::size_t before = st.queue.size();
+    st.propagation.begin(side.s->info(), side.e->info(), st.placed);
+    sweep(st, shell_anchor(st, side), deferred);
+    for (std::size_t i = before; i < st.queue.size(); ++i)
+      st.propagation.queued(st.queue[i].s->info(), st.queue[i].e->info());
+    st.propagation.end(st.placed);
   }
 }
 

@@ -10,13 +10,15 @@ namespace {
 using refine2d::Side;
 using refine2d::State;
 
-// Exact certificate of a mesh as returned (check2d's classifier): the boundary edges (a triangle on one side
-// only) whose triangle is obtuse at the apex opposite them. Interfaces are issue 4.
+// Exact certificate of a mesh as returned (check2d's classifier): the sides of boundary edges (a triangle on one
+// side) and of interfaces (a constrained segment or a region jump with triangles on both sides, each side
+// checked on its own: issue 4) whose triangle is obtuse at the apex opposite the edge.
 long long count_obtuse_boundary(const Mesh2& mesh) {
   long long bad = 0;
   for (const EdgeReport& r : classify_edges(mesh)) {
-    const EdgeSide& side = r.left.triangle >= 0 ? r.left : r.right;
-    if (r.kind == EdgeKind::Boundary && side.angle == AngleClass::Obtuse) ++bad;
+    if (r.kind == EdgeKind::Interior) continue;
+    for (const EdgeSide* side : {&r.left, &r.right})
+      if (side->triangle >= 0 && side->angle == AngleClass::Obtuse) ++bad;
   }
   return bad;
 }
@@ -58,9 +60,14 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   // inside the disk implies that some vertex there is visible, hence that the subsegment is encroached, so the
   // count is exact. Dangling interior constraints (issue 4) could hide a reachable vertex (a pinwheel of
   // segments); the bound could then overcount.
-  std::vector<Side> sides = st.boundary_sides();
-  for (std::size_t k = 0; k < sides.size(); ++k)
-    st.edges[k].lower_bound = st.greedy_count(sides[k], st.walk_diametral_disk(sides[k]).encroachers);
+  // An interface edge is one single-edge problem with the encroachers of both sides (the walk collects both).
+  std::vector<bool> bounded(st.edges.size(), false);
+  for (const Side& side : st.boundary_sides()) {
+    int k = st.edge_of(side);
+    if (bounded[k]) continue;
+    bounded[k] = true;
+    st.edges[k].lower_bound = st.greedy_count(side, st.walk_diametral_disk(side).encroachers);
+  }
 
   auto run = [&] {
     switch (options.strategy) {
@@ -95,6 +102,7 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   r.steiner_points = st.placed;
   for (const auto& e : st.edges) r.lower_bound += e.lower_bound;
   r.edges = st.edges;
+  r.diagnosis = refine2d::diagnose(st);
   r.status = r.obtuse_boundary_triangles == 0 ? RefineStatus::Converged
              : st.budget_left()                 ? RefineStatus::Stalled
                                                 : RefineStatus::BudgetExhausted;

@@ -29,8 +29,8 @@ State::State(const Domain2& d, long long b) : domain(d), n_input(static_cast<int
     throw InvalidInput("the domain contains no triangle (are all points collinear, or is everything a hole?)");
   for (const Side& side : boundary_sides()) {
     int a = side.s->info(), c = side.e->info();
-    edge_index_[{std::min(a, c), std::max(a, c)}] = static_cast<int>(edges.size());
-    edges.push_back({{a, c}, 0, 0});
+    if (edge_index_.emplace(std::make_pair(std::min(a, c), std::max(a, c)), static_cast<int>(edges.size())).second)
+      edges.push_back({{a, c}, 0, 0});  // an interface appears once, as (min, max)
   }
   convex_polygon = is_convex_polygon();
 }
@@ -70,8 +70,14 @@ Face_handle State::left_face(const Side& side) const {
 
 bool State::is_boundary_side(const Side& side) const {
   Face_handle f = left_face(side);
-  if (f == nullptr || !f->info().in_domain) return false;
-  return !f->neighbor(f->index(apex(side)))->info().in_domain;
+  return f != nullptr && f->info().in_domain;
+}
+
+std::vector<Face_handle> State::domain_faces(const Side& side) const {
+  std::vector<Face_handle> out;
+  for (const Side& sd : {side, Side{side.e, side.s}})
+    if (is_boundary_side(sd)) out.push_back(left_face(sd));
+  return out;
 }
 
 Vertex_handle State::apex(const Side& side) const {
@@ -107,12 +113,12 @@ void State::enqueue_all() {
 }
 
 template <class Visit>
-void State::walk_disk(Face_handle start, const Point& a, const Point& b, Visit&& visit) const {
+void State::walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit) const {
   double cx = 0.5 * (a.x() + b.x()), cy = 0.5 * (a.y() + b.y());
   double r2 = 0.25 * CGAL::to_double(CGAL::squared_distance(a, b));
   double reach = r2 * (1 + 1e-9) + 1e-300;  // pruning slack: walk a little too far rather than too little
-  std::vector<Face_handle> stack{start};
-  std::unordered_set<Face_handle> seen{start};
+  std::vector<Face_handle> stack(start);
+  std::unordered_set<Face_handle> seen(start.begin(), start.end());
   while (!stack.empty()) {
     Face_handle f = stack.back();
     stack.pop_back();
@@ -135,10 +141,12 @@ DiskWalk State::walk_diametral_disk(const Side& side) const {
   DiskWalk out;
   const Point &s = side.s->point(), &e = side.e->point();
   std::unordered_set<Vertex_handle> found;
-  walk_disk(left_face(side), s, e, [&](Face_handle f) {
+  const bool left = is_boundary_side(side), right = is_boundary_side({side.e, side.s});
+  auto on_domain_side = [&](const Point& q) { return (left && encroaches(s, e, q)) || (right && encroaches(e, s, q)); };
+  walk_disk(domain_faces(side), s, e, [&](Face_handle f) {
     for (int i = 0; i < 3; ++i) {
       Vertex_handle v = f->vertex(i);
-      if (v != side.s && v != side.e && !cdt.is_infinite(v) && !found.count(v) && encroaches(s, e, v->point())) {
+      if (v != side.s && v != side.e && !cdt.is_infinite(v) && !found.count(v) && on_domain_side(v->point())) {
         found.insert(v);
         out.encroachers.push_back(v);
       }
@@ -153,16 +161,17 @@ DiskWalk State::walk_diametral_disk(const Side& side) const {
 
 std::vector<Side> State::sides_broken_by(const Side& side, const Point& p) const {
   std::vector<Side> out;
-  Face_handle start = left_face(side);
-  std::vector<Face_handle> stack{start};
-  std::unordered_set<Face_handle> seen{start};
+  const Side reverse{side.e, side.s};
+  std::vector<Face_handle> stack = domain_faces(side);
+  std::unordered_set<Face_handle> seen(stack.begin(), stack.end());
   while (!stack.empty()) {
     Face_handle f = stack.back();
     stack.pop_back();
     for (int i = 0; i < 3; ++i) {
       Side edge{f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))};  // f is on its left
       if (f->is_constrained(i)) {
-        if (!same_side(edge, side) && is_boundary_side(edge) && encroaches(edge.s->point(), edge.e->point(), p))
+        if (!same_side(edge, side) && !same_side(edge, reverse) && is_boundary_side(edge) &&
+            encroaches(edge.s->point(), edge.e->point(), p))
           out.push_back(edge);
         continue;
       }
@@ -179,7 +188,7 @@ std::vector<Side> State::sides_broken_by(const Side& side, const Point& p) const
 
 bool State::reachable_within(const Side& start, const Point& a, const Point& b, Vertex_handle q) const {
   bool found = false;
-  walk_disk(left_face(start), a, b, [&](Face_handle f) { return found = f->has_vertex(q); });
+  walk_disk(domain_faces(start), a, b, [&](Face_handle f) { return found = f->has_vertex(q); });
   return found;
 }
 
@@ -403,14 +412,14 @@ int State::edge_of(const Side& side) const {
 }
 
 void keep_encroaching(const Point& s, const Point& e, std::vector<Vertex_handle>& q) {
-  q.erase(std::remove_if(q.begin(), q.end(), [&](Vertex_handle v) { return !encroaches(s, e, v->point()); }),
+  q.erase(std::remove_if(q.begin(), q.end(), [&](Vertex_handle v) { return !inside_diametral_disk(s, e, v->point()); }),
           q.end());
 }
 
 bool State::subsegment_is_empty(const Side& start, const Point& s, const Point& p,
                                 const std::vector<Vertex_handle>& q) const {
   return std::none_of(q.begin(), q.end(), [&](Vertex_handle v) {
-    return encroaches(s, p, v->point()) && reachable_within(start, s, p, v);
+    return inside_diametral_disk(s, p, v->point()) && reachable_within(start, s, p, v);
   });
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cdt.h"
+#include "refine2d_diagnosis.h"
 #include "nonobtuse/refine2d.h"
 
 namespace nonobtuse::refine2d {
@@ -48,9 +49,12 @@ class State {
 
   // The face on the left of s -> e, or nullptr when (s, e) is not a constrained edge of the CDT (anymore).
   Face_handle left_face(const Side& side) const;
-  // A constrained subsegment with a domain triangle on its left and none on its right. (Issue 4 relaxes this to
-  // "a domain triangle on its left" so that both sides of an interface are refined.)
+  // A constrained subsegment with a domain triangle on its left (issue 4: both sides of an interface or of a
+  // dangling segment are boundary sides, each refined on its own; an outer boundary edge has one).
   bool is_boundary_side(const Side& side) const;
+  // The domain triangles next to the subsegment of `side`: its left face first when that is in the domain, then
+  // the right one when that is (two for an interface or dangling segment). Visibility walks start from these.
+  std::vector<Face_handle> domain_faces(const Side& side) const;
   // A boundary side whose triangle is obtuse at the apex (exact: CGAL::angle(s, apex, e) == OBTUSE).
   bool is_violated(const Side& side) const;
   // The apex of the side's triangle (call only on a boundary side).
@@ -58,9 +62,10 @@ class State {
   // Every boundary side of the current CDT.
   std::vector<Side> boundary_sides() const;
 
-  // Vertices strictly inside the open diametral half-disk of `side` (exact: left of s -> e and
-  // angle(s, q, e) == OBTUSE), found by walking from the side's triangle across unconstrained edges into every
-  // triangle meeting the closed disk. Constraints stop the walk, which gives visibility; the float distance
+  // Vertices strictly inside the open diametral disk of the subsegment on a domain side of it (exact: strictly
+  // left of s -> e when the left is a domain side, strictly right when the right is, and angle(s, q, e) ==
+  // OBTUSE), found by walking from its domain_faces across unconstrained edges into every triangle meeting the
+  // closed disk. Constraints stop the walk, which gives visibility; the float distance
   // test only prunes the walk (conservatively, with slack): every decision on a vertex is exact.
   // Cost: the number of triangles meeting the disk.
   DiskWalk walk_diametral_disk(const Side& side) const;
@@ -85,11 +90,15 @@ class State {
   void check_invariants();
   // Every boundary side pushed on the queue.
   void enqueue_all();
-  // The index in `edges` of the input boundary edge a subsegment lies on.
+  // The index in `edges` of the input boundary edge a subsegment lies on (either orientation).
   int edge_of(const Side& side) const;
+  // The index in `edges` of the input edge Steiner point `index` (>= n_input) was placed on.
+  int steiner_edge(int index) const { return steiner_edge_.at(index - n_input); }
+  // Provenance of the work queue (issue 4 diagnosis, refine2d_diagnosis.cpp).
+  Propagation propagation;
   // The boundary sides (other than `side`) that a vertex at p, on `side`, would make violated: exactly those
   // among the edges of p's conflict zone (the triangles whose circumcircle strictly contains p, reachable from
-  // `side`'s triangle across unconstrained edges; their triangles get p as apex) whose open half-disk contains p.
+  // `side`'s domain_faces across unconstrained edges; their triangles get p as apex) whose open half-disk contains p.
   // These are the forbidden intervals of `side` that contain p, visibility included. Cost: the conflict zone.
   std::vector<Side> sides_broken_by(const Side& side, const Point& p) const;
 
@@ -101,10 +110,11 @@ class State {
   // Cost: one disk walk per candidate tried, in increasing t (usually one).
   double greedy_parameter(const Side& start, const Point& s, const Point& e, const std::vector<Vertex_handle>& q,
                           Vertex_handle* blocker = nullptr) const;
-  // True when no vertex of q that [s, p] would see (reachable_within) encroaches it (exact encroachment).
+  // True when no vertex of q that [s, p] would see (reachable_within) encroaches it (exact encroachment, on
+  // either side: q only holds vertices of domain sides).
   bool subsegment_is_empty(const Side& start, const Point& s, const Point& p,
                            const std::vector<Vertex_handle>& q) const;
-  // Whether q is reachable from `start`'s triangle inside the closed diametral disk of [a, b] (float pruning with
+  // Whether q is reachable from `start`'s domain_faces inside the closed diametral disk of [a, b] (float pruning with
   // slack, so "reachable" errs toward yes) without crossing a constraint.
   bool reachable_within(const Side& start, const Point& a, const Point& b, Vertex_handle q) const;
 
@@ -119,10 +129,10 @@ class State {
   // Domain marks of the faces changed by inserting v between to_s and to_e (see split); queues their sides.
   void remark_around(Vertex_handle v, Vertex_handle to_e, Vertex_handle to_s, const cdt::FaceInfo& left,
                      const cdt::FaceInfo& right);
-  // Depth-first walk from `start` across unconstrained edges into the faces meeting the closed diametral disk of
-  // [a, b]; visit(face) returns true to stop.
+  // Depth-first walk from the faces `start` across unconstrained edges into the faces meeting the closed
+  // diametral disk of [a, b]; visit(face) returns true to stop.
   template <class Visit>
-  void walk_disk(Face_handle start, const Point& a, const Point& b, Visit&& visit) const;
+  void walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit) const;
   std::map<std::pair<int, int>, int> edge_index_;  // input boundary edge (min, max) -> index in edges
   std::vector<int> steiner_edge_;                   // Steiner point (index - n_input) -> index in edges
 };
@@ -162,6 +172,13 @@ bool pick_point_at_or_before(const Point& s, const Point& e, double t, Valid&& v
   for (int k = 40; k >= 4; k -= 4)
     if (pick_point(s, e, t * (1 - std::ldexp(1.0, -k)), valid, p)) return true;
   return false;
+}
+
+// Exact: q strictly inside the open diametral disk of [s, e], on either side (not on the line). The encroacher
+// lists come from walk_diametral_disk, which only collects vertices on domain sides, so for a boundary edge this
+// is `encroaches`, and for an interface it treats both sides at once (t* = min over both sides' encroachers).
+inline bool inside_diametral_disk(const Point& s, const Point& e, const Point& q) {
+  return CGAL::orientation(s, e, q) != CGAL::COLLINEAR && CGAL::angle(s, q, e) == CGAL::OBTUSE;
 }
 
 // Keeps the vertices of q still encroaching [s, e] (disks of subsegments that share e shrink as s advances).

@@ -1,5 +1,6 @@
-"""Nonobtuse boundary refinement: the fewest Steiner points on boundary edges so that every boundary
-triangle of the constrained Delaunay triangulation is nonobtuse at the angle opposite its boundary edge."""
+"""Nonobtuse boundary refinement: the fewest Steiner points on constraint edges so that every triangle of the
+constrained Delaunay triangulation is nonobtuse at the angle opposite each constrained edge it has (boundary,
+interface or dangling segment)."""
 
 from __future__ import annotations
 
@@ -26,7 +27,15 @@ class RefineResult:
             False or None when unknown), ``seconds`` (float), ``obtuse_boundary_triangles`` (int, the exact
             certificate of ``mesh``: 0 when converged), ``edges``: one dict per input boundary edge
             ``{"edge": [a, b], "steiner_points": k, "lower_bound": l}`` (a, b input point indices, the
-            domain on the left of a -> b).
+            domain on the left of a -> b; an interface or dangling segment, with the domain on both sides,
+            once as a < b), ``diagnosis``: ``junctions`` (at most 10 dicts ``vertex, constraints,
+            min_angle_degrees, steiner_points``: the input vertices where constraints meet that drew the most
+            Steiner points, each point counted at the nearer end of its input edge), ``angles`` (at most 10
+            dicts ``vertex, edge, neighbour, degrees, steiner_points``: the input angle between ``edge`` and
+            its closest constraint ``neighbour`` at ``vertex``), ``initial_violations`` (violated subsegments
+            that started a cascade), ``propagation_depth`` (the most distinct input edges one initial
+            violation put Steiner points on) and ``propagation_splits`` (the most Steiner points it caused);
+            propagation is tracked by the greedy strategy only.
     status: ``"converged"``, ``"budget_exhausted"`` or ``"stalled"`` (budget left, but a violated side
             admits no double split point passing the exact checks); ``mesh`` is then the partial result.
     """
@@ -41,23 +50,27 @@ class RefineResult:
 
 
 def refine(domain: Domain, strategy: str = "greedy", max_steiner: int | None = None) -> RefineResult:
-    """Adds Steiner points on the boundary edges of ``domain`` until every boundary triangle of its
-    constrained Delaunay triangulation is nonobtuse opposite its boundary edge.
+    """Adds Steiner points on the constraint edges of ``domain`` until every triangle of its constrained
+    Delaunay triangulation is nonobtuse opposite each constrained edge it has (boundary, interface or
+    dangling segment).
 
-    domain:      a validated :class:`~nonobtuse.domain.Domain` (closed boundary loops, or
-                 ``convex_hull=True`` for point sets: the hull edges are the boundary). Interior
-                 constraints (interfaces) are kept but not refined yet.
+    domain:      a validated :class:`~nonobtuse.domain.Domain`: a PSLG with closed boundary loops (or
+                 ``convex_hull=True`` for point sets: the hull edges are the boundary), holes, interior
+                 interfaces meeting at junctions, dangling segments, isolated points, region attributes.
+                 Both sides of every interior constraint are refined, each nonobtuse on its own (each side
+                 carries its own conductivity); acute junctions get concentric power-of-two shells.
     strategy:    ``"greedy"`` (sensitive Greedy-Refine: the longest empty subsegment from one end, never
                  inside another subsegment's diametral disk; optimal for one edge and for convex polygons),
                  ``"project-flip"`` or ``"projection"`` (the paper's baselines).
     max_steiner: Steiner budget; None: ``10 n + 1000`` for n input points. When it is spent the partial
                  mesh is returned with status ``"budget_exhausted"``.
 
-    Guarantees: Steiner points lie on boundary subsegments (exactly on the line when a double point there
-    exists, else a few ulps off it); the returned mesh is checked exactly (``stats
-    ["obtuse_boundary_triangles"]`` is 0 whenever the status is ``"converged"``). ``lower_bound`` is the
-    sum over input boundary edges of the single-edge greedy count against the input vertices visible from
-    the edge: no refinement placing Steiner points on boundary edges uses fewer. ``optimal`` is True when
+    Guarantees: Steiner points lie on constraint subsegments (exactly on the line when a double point there
+    exists, else a few ulps off it); the returned mesh is checked exactly on every side of every constraint
+    (``stats["obtuse_boundary_triangles"]`` counts the obtuse sides: 0 whenever the status is
+    ``"converged"``). ``lower_bound`` is the sum over input constraint edges of the single-edge greedy count
+    against the input vertices visible from the edge (from both sides of an interface): no refinement
+    placing Steiner points on the constraints uses fewer. ``optimal`` is True when
     the count equals the bound, or for the greedy strategy on a convex polygon without interior points
     (Theorem 3), None otherwise.
     Deterministic. Cost: O(n log n) to triangulate plus, per Steiner point, the triangles meeting the
@@ -92,6 +105,7 @@ def refine(domain: Domain, strategy: str = "greedy", max_steiner: int | None = N
             {"edge": [int(a), int(b)], "steiner_points": int(k), "lower_bound": int(lb)}
             for a, b, k, lb in np.asarray(r["edges"]).reshape(-1, 4)
         ],
+        "diagnosis": r["diagnosis"],
     }
     m = r["mesh"]
     mesh = Mesh(

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "nonobtuse/refine2d_diagnosis.h"
 #include "nonobtuse/types.h"
 
 namespace nonobtuse {
@@ -24,7 +25,8 @@ struct RefineOptions {
   long long max_steiner = -1;
 };
 
-// Per boundary edge of the input (a constrained edge of the input's CDT with the domain on exactly one side).
+// Per boundary edge of the input: a constrained edge of the input's CDT with the domain on one side (a boundary
+// edge) or on both (an interface or dangling segment, listed once, as (min, max)).
 struct BoundaryEdgeStats {
   Segment edge;            // input point indices (a, b), the domain on the left of a -> b
   int steiner_points = 0;  // Steiner points placed on it
@@ -41,6 +43,7 @@ struct RefineResult2 {
   // edge. 0 whenever status == Converged.
   long long obtuse_boundary_triangles = 0;
   std::vector<BoundaryEdgeStats> edges;
+  RefineDiagnosis2 diagnosis;  // where the Steiner points went (junctions, input angles, propagation)
   double seconds = 0.0;
 };
 
@@ -50,11 +53,12 @@ struct RefineResult2 {
 // for interference cascades (paper, Figure 6), where no polynomial bound is known.
 long long default_steiner_budget(std::size_t n_points);
 
-// Refines the boundary of `domain` (validated by the caller; boundary = the segments bordering the domain on
-// one side, or the convex hull when domain.convex_hull_boundary). Steiner points go only on boundary
-// subsegments; each is a rounded construction checked by exact predicates (see greedy_refine.cpp). The result's
-// certificate is the exact check of the returned mesh. Interfaces (constraints with the domain on both sides)
-// are left as they are (issue 4).
+// Refines every constraint of `domain` (validated by the caller): boundary segments (the domain on one side, or
+// the convex hull when domain.convex_hull_boundary) on their domain side, interfaces and dangling segments (the
+// domain on both sides) on both sides, each side nonobtuse on its own (issue 4). Steiner points go only on
+// constraint subsegments; each is a rounded construction checked by exact predicates (see greedy_refine.cpp).
+// The result's certificate is the exact check of the returned mesh (every side of every constraint);
+// `diagnosis` says which junctions and input angles drew the points and how far one violation propagated.
 //
 // optimal: 1 when steiner_points == lower_bound (the bound is then attained); otherwise, for the Greedy strategy
 // on a convex polygon (no holes, no interior points or constraints) that converged without a fallback step, 1 by
