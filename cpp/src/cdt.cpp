@@ -72,7 +72,8 @@ std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain) {
 
 void mark_domain(CDT& cdt, const Domain2& domain) {
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = FaceInfo{};
-  // Fill from `seeds` across unconstrained edges, giving each face reached `value` via set(face).
+  if (cdt.dimension() < 2) return;  // collinear points: no face, nothing inside
+  // Fill from `stack` across unconstrained edges; set(face) marks each face reached.
   auto fill = [&](std::vector<Face_handle> stack, auto&& reached, auto&& set) {
     while (!stack.empty()) {
       Face_handle f = stack.back();

@@ -47,6 +47,14 @@ TEST(Triangulate, PointSetUsesConvexHull) {
   EXPECT_EQ(m.segments.size(), 3u);   // the hull edges became boundary segments
 }
 
+TEST(Triangulate, CollinearPointsWithAHoleSeedHaveNoTriangle) {
+  Domain2 d;
+  d.points = {{0, 0}, {1, 1}, {2, 2}};
+  d.holes = {{0.5, 0.5}};
+  d.convex_hull_boundary = true;
+  EXPECT_THROW(triangulate(d), InvalidInput);
+}
+
 TEST(Triangulate, CrossingSegmentsAreRefused) {
   Domain2 d;
   d.points = {{0, 0}, {1, 1}, {0, 1}, {1, 0}};

@@ -2,9 +2,16 @@
 
 from __future__ import annotations
 
+from nonobtuse.check import CheckReport, check
+from nonobtuse.control_volumes import ControlVolumes, control_volumes
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InternalError, InvalidInputError, NonobtuseError
 from nonobtuse.mesh import Mesh
+from nonobtuse.refine import RefineResult, refine
+from nonobtuse.triangulate import triangulate
 
-__all__ = ["Domain", "InternalError", "InvalidInputError", "Mesh", "NonobtuseError"]
+__all__ = [
+    "CheckReport", "ControlVolumes", "Domain", "InternalError", "InvalidInputError", "Mesh", "NonobtuseError",
+    "RefineResult", "check", "control_volumes", "refine", "triangulate",
+]
 __version__ = "0.1.0"

@@ -15,11 +15,18 @@ EXIT_OK, EXIT_VIOLATIONS, EXIT_INVALID, EXIT_NOT_CONVERGED = 0, 1, 2, 3
 
 
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="nonobtuse", description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(
+        prog="nonobtuse",
+        description="Delaunay meshes fit for control-volume simulation: exact nonobtuse-boundary checks and "
+        "repair with few Steiner points.",
+        epilog="exit codes: 0 ok, 1 a check found violations, 2 invalid input, 3 refinement did not converge",
+    )
     sub = parser.add_subparsers(dest="command", required=True)
-    from nonobtuse import cli_2d  # each module adds its subcommands and sets func=
+    from nonobtuse import cli_2d, cli_3d, cli_refine  # each module adds its subcommands and sets func=
 
     cli_2d.register(sub)
+    cli_refine.register(sub)
+    cli_3d.register(sub)
     return parser
 
 

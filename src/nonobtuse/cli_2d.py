@@ -3,8 +3,63 @@
 from __future__ import annotations
 
 import argparse
+import json
+from pathlib import Path
+
+from nonobtuse import demo
+from nonobtuse.check import check
+from nonobtuse.domain import Domain
+from nonobtuse.io import is_mesh_file, load_domain, read_mesh, write_mesh
+from nonobtuse.triangulate import triangulate
+
+EXIT_OK, EXIT_VIOLATIONS = 0, 1  # see nonobtuse.cli
+
+
+def _load(args: argparse.Namespace) -> Domain:
+    return load_domain(args.input, convex_hull=True if args.convex_hull else None)
+
+
+def _add_domain_options(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--convex-hull", action="store_true", help="close the domain with the convex hull of its "
+                   "points (Triangle -c), for an open boundary")
+
+
+def _triangulate(args: argparse.Namespace) -> int:
+    mesh = triangulate(_load(args))
+    write_mesh(mesh, args.output)
+    print(f"{args.input}: {len(mesh.points)} points, {len(mesh.triangles)} triangles -> {args.output}")
+    return EXIT_OK
+
+
+def _check(args: argparse.Namespace) -> int:
+    path = Path(args.input)
+    mesh = read_mesh(path) if is_mesh_file(path) else triangulate(_load(args))
+    report = check(mesh)
+    report.source = str(path)
+    print(json.dumps(report.to_dict(), indent=1) if args.json else report.summary())
+    if args.plot:
+        from nonobtuse.plot import plot_check  # matplotlib only when asked
+
+        plot_check(mesh, report, args.plot, vertical_exaggeration=args.exaggeration)
+    return EXIT_OK if report.ok else EXIT_VIOLATIONS
 
 
 def register(sub: argparse._SubParsersAction) -> None:
+    p = sub.add_parser("triangulate", help="constrained Delaunay triangulation, no Steiner points")
+    p.add_argument("input", help="domain: .poly, .node, CG:SHOP .json, domain .json")
+    p.add_argument("-o", "--output", required=True, help="mesh file: .json, .node/.ele/.poly, .vtu, .msh")
+    _add_domain_options(p)
+    p.set_defaults(func=_triangulate)
+
+    p = sub.add_parser("check", help="exact check: is every boundary and interface angle nonobtuse? "
+                       "(exit 0 yes, 1 no, 2 invalid input)")
+    p.add_argument("input", help="a mesh file (checked as is) or a domain file (its constrained Delaunay "
+                   "triangulation is checked)")
+    p.add_argument("--json", action="store_true", help="print the full report as JSON")
+    _add_domain_options(p)
+    p.add_argument("--plot", metavar="PNG", help="also draw the mesh, offending edges in red")
+    p.add_argument("--exaggeration", type=float, default=1.0, help="vertical exaggeration of the plot")
+    p.set_defaults(func=_check)
+
     p = sub.add_parser("demo", help="run on a built-in thin-layer geological cross-section")
-    p.set_defaults(func=lambda args: 0)
+    p.set_defaults(func=lambda args: demo.run())

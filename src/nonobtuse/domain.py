@@ -17,6 +17,27 @@ def _points(a, name: str) -> np.ndarray:
 
 
 @dataclass
+class SourceMap:
+    """Where the items of a :class:`Domain` were read from, so that messages can name the file and line.
+
+    file:      the file's name as given.
+    first_id:  the id the file gives point 0 (Triangle files number from 0 or 1; 0 elsewhere).
+    points_file: the file the points were read from when it is not ``file`` (a .poly listing no vertices takes
+               them from the .node file beside it), else None.
+    points, segments, holes, regions: (k,) int64 1-based line numbers, one per item (0 where unknown, e.g.
+               a JSON file).
+    """
+
+    file: str
+    first_id: int = 0
+    points_file: str | None = None
+    points: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    segments: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    holes: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    regions: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+
+
+@dataclass
 class Domain:
     """A 2D domain.
 
@@ -29,6 +50,9 @@ class Domain:
     convex_hull: when True the domain is the convex hull of the points (point sets, open boundaries);
               otherwise it is what the closed segment loops enclose.
     source:   where it came from (a file name), for messages.
+    origin:   file lines of every item (set by the readers in :mod:`nonobtuse.io`), or None.
+    repairs:  what validation changed (segments split at points lying on them, duplicate segments dropped),
+              one sentence each; empty when the domain was used as given.
     """
 
     points: np.ndarray
@@ -37,6 +61,8 @@ class Domain:
     regions: np.ndarray = field(default_factory=lambda: np.zeros((0, 3), dtype=np.float64))
     convex_hull: bool = False
     source: str = "<memory>"
+    origin: SourceMap | None = None
+    repairs: list[str] = field(default_factory=list)
 
     def __post_init__(self) -> None:
         self.points = _points(self.points, "points")

@@ -1,5 +1,6 @@
 // Exact nonobtuse-boundary certificate of a 2D mesh.
 #pragma once
+#include <cstdint>
 #include <vector>
 
 #include "nonobtuse/types.h"
@@ -19,13 +20,22 @@ struct EdgeReport {
   Segment edge;  // (a, b) with a < b
   EdgeKind kind;
   EdgeSide left, right;     // left: the side where (a, b, apex) is counter-clockwise
-  bool locally_delaunay;    // exact incircle; meaningful for Interior and Interface edges
+  bool locally_delaunay;    // exact incircle; meaningful for Interior and Interface edges (true for Boundary)
 };
 
-// Every edge of `mesh`, classified: Boundary = an edge with one triangle (a constrained segment, or a hull
-// edge); Interface = a constrained segment (listed in mesh.segments) with triangles on both sides; Interior =
-// the rest. Angles and incircle tests are exact (CGAL exact-predicates kernel) on the coordinates as stored.
-// Throws InvalidInput when the triangles do not form a manifold mesh (an edge with more than two triangles).
+// Every edge of `mesh`, classified, sorted by (a, b):
+//   Boundary  = an edge with a triangle on one side only (a constrained segment, or a hull edge);
+//   Interface = an edge with triangles on both sides that is a constrained segment (listed in mesh.segments), or
+//               whose two triangles carry different region attributes (a material jump: each side is weighted by
+//               its own conductivity, so each side must be nonobtuse on its own);
+//   Interior  = the rest.
+// Angles (CGAL::angle at the apex) and incircle tests (side_of_oriented_circle) are exact (CGAL
+// exact-predicates kernel) on the coordinates as stored.
+// Guarantees: every edge of every triangle appears exactly once; a Boundary edge has its triangle on the left or
+// on the right side and -1 on the other.
+// Throws InvalidInput when a triangle is not strictly counter-clockwise (degenerate or clockwise), when the
+// triangles do not form a consistently oriented manifold mesh (an edge with more than two triangles, or two on
+// the same side), or when a listed segment is not an edge of any triangle.
 // Cost: O(m log m) for m triangles.
 std::vector<EdgeReport> classify_edges(const Mesh2& mesh);
 

@@ -1,5 +1,17 @@
-# Exact Gabriel certificate and Ruppert-like refinement (helper gabriel3d)
-from nonobtuse.mesh3d.gabriel import Gabriel3DResult as Gabriel3DResult
-from nonobtuse.mesh3d.gabriel import GabrielReport as GabrielReport
-from nonobtuse.mesh3d.gabriel import check_gabriel as check_gabriel
-from nonobtuse.mesh3d.gabriel import refine_gabriel as refine_gabriel
+"""The 3D module: PLC input, tetrahedralization backends, exact Gabriel check and refinement, control volumes."""
+
+from __future__ import annotations
+
+from nonobtuse.mesh3d.control_volumes3d import ControlVolumes3D, control_volumes3d
+from nonobtuse.mesh3d.gabriel import Gabriel3DResult, GabrielReport, check_gabriel, refine_gabriel
+from nonobtuse.mesh3d.io3d import read_tetmesh_json, write_tetmesh
+from nonobtuse.mesh3d.load import load_plc
+from nonobtuse.mesh3d.plc import PLC, TetMesh
+from nonobtuse.mesh3d.tetrahedralize import tetrahedralize
+from nonobtuse.mesh3d.validate3d import validate_plc
+
+__all__ = [
+    "PLC", "ControlVolumes3D", "Gabriel3DResult", "GabrielReport", "TetMesh", "check_gabriel",
+    "control_volumes3d", "load_plc", "read_tetmesh_json", "refine_gabriel", "tetrahedralize", "validate_plc",
+    "write_tetmesh",
+]

@@ -1,0 +1,70 @@
+// 3D PLC predicates: orientation and collinearity signs, triangle-soup self-intersections, Delaunay cells.
+#include <pybind11/pybind11.h>
+
+#include "convert.h"
+#include "nonobtuse/plc_predicates.h"
+
+namespace nonobtuse::bindings {
+namespace {
+
+std::vector<PlcPoint> to_points3(const DoubleArray& a) {
+  require_shape(a, 3, "points");
+  std::vector<PlcPoint> out(a.ndim() == 2 ? a.shape(0) : 0);
+  auto* d = a.data();
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = {d[3 * i], d[3 * i + 1], d[3 * i + 2]};
+  return out;
+}
+
+}  // namespace
+
+void bind_plc(py::module_& m) {
+  m.def(
+      "plc_orient3d",
+      [](const DoubleArray& points, const IndexArray& quads) {
+        auto p = to_points3(points);
+        auto q = to_index_rows<4>(quads, p.size(), "quads");
+        return from_vector(orient3d_signs(p, q));
+      },
+      py::arg("points"), py::arg("quads"),
+      "Exact orient3d sign (int8: +1, 0 coplanar, -1) of every row (a, b, c, d) of quads (m, 4).");
+  m.def(
+      "plc_collinear",
+      [](const DoubleArray& points, const IndexArray& triples) {
+        auto p = to_points3(points);
+        auto t = to_index_rows<3>(triples, p.size(), "triples");
+        return from_vector(collinear_flags(p, t));
+      },
+      py::arg("points"), py::arg("triples"),
+      "Exact collinearity (int8 1/0) of every row (a, b, c) of triples (m, 3).");
+  m.def(
+      "plc_self_intersections",
+      [](const DoubleArray& points, const IndexArray& triangles, std::size_t max_pairs) {
+        auto p = to_points3(points);
+        auto t = to_index_rows<3>(triangles, p.size(), "triangles");
+        std::vector<std::array<int, 2>> pairs;
+        {
+          py::gil_scoped_release release;
+          pairs = triangle_soup_self_intersections(p, t, max_pairs);
+        }
+        return from_index_rows<2>(pairs);
+      },
+      py::arg("points"), py::arg("triangles"), py::arg("max_pairs") = 1,
+      "Pairs (k, 2) int64 (i < j) of triangles intersecting beyond shared vertices/edges (exact);\n"
+      "triangles must be non-degenerate and distinct. At most max_pairs rows.");
+  m.def(
+      "delaunay_tetrahedra",
+      [](const DoubleArray& points) {
+        auto p = to_points3(points);
+        std::vector<std::array<int, 4>> cells;
+        {
+          py::gil_scoped_release release;
+          cells = delaunay_tetrahedra(p);
+        }
+        return from_index_rows<4>(cells);
+      },
+      py::arg("points"),
+      "Finite cells (t, 4) int64 of the Delaunay tetrahedralization of points (n, 3), positively oriented.\n"
+      "Raises InvalidInputError when two points coincide.");
+}
+
+}  // namespace nonobtuse::bindings

@@ -1,0 +1,58 @@
+// Boundary refinement: refine.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "bind_mesh2d.h"
+#include "nonobtuse/refine2d.h"
+
+namespace nonobtuse::bindings {
+namespace {
+
+RefineStrategy strategy_from(const std::string& name) {
+  for (auto s : {RefineStrategy::Greedy, RefineStrategy::ProjectFlip, RefineStrategy::Projection})
+    if (to_string(s) == name) return s;
+  throw InvalidInput("unknown refinement strategy '" + name + "' (greedy, project-flip, projection)");
+}
+
+py::dict result_to_dict(const RefineResult2& r) {
+  py::dict d;
+  d["mesh"] = mesh_to_dict(r.mesh);
+  d["status"] = to_string(r.status);
+  d["steiner_points"] = r.steiner_points;
+  d["lower_bound"] = r.lower_bound;
+  d["optimal"] = r.optimal < 0 ? py::object(py::none()) : py::object(py::bool_(r.optimal == 1));
+  d["obtuse_boundary_triangles"] = r.obtuse_boundary_triangles;
+  d["seconds"] = r.seconds;
+  std::vector<std::array<int, 4>> rows;
+  for (const auto& e : r.edges) rows.push_back({e.edge[0], e.edge[1], e.steiner_points, e.lower_bound});
+  d["edges"] = from_index_rows<4>(rows);
+  return d;
+}
+
+}  // namespace
+
+void bind_refine2d(py::module_& m) {
+  m.def(
+      "refine",
+      [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,
+         bool convex_hull_boundary, const std::string& strategy, long long max_steiner) {
+        Domain2 d = domain_from_arrays(points, segments, holes, regions, convex_hull_boundary);
+        RefineOptions options{strategy_from(strategy), max_steiner};
+        RefineResult2 r;
+        {
+          py::gil_scoped_release release;
+          r = refine(d, options);
+        }
+        return result_to_dict(r);
+      },
+      py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("regions"), py::arg("convex_hull_boundary"),
+      py::arg("strategy") = "greedy", py::arg("max_steiner") = -1,
+      "Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0: default\n"
+      "budget 10 n + 1000. Returns a dict: mesh (as triangulate), status ('converged' | 'budget_exhausted'),\n"
+      "steiner_points, lower_bound, optimal (True | None), obtuse_boundary_triangles (exact certificate),\n"
+      "edges (k, 4) int64 rows a, b, steiner_points, lower_bound per input boundary edge, seconds.");
+  m.def("default_steiner_budget", &default_steiner_budget, py::arg("n_points"),
+        "The default Steiner budget for n input points: 10 n + 1000.");
+}
+
+}  // namespace nonobtuse::bindings

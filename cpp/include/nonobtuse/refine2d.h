@@ -1,0 +1,69 @@
+// Nonobtuse boundary refinement: Steiner points on boundary edges so that every boundary triangle of the
+// constrained Delaunay triangulation is nonobtuse at the angle opposite its boundary edge.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "nonobtuse/types.h"
+
+namespace nonobtuse {
+
+enum class RefineStrategy : std::int8_t {
+  Greedy = 0,       // sensitive Greedy-Refine (paper sections 4.1-4.4): longest empty subsegment, forbidden intervals
+  ProjectFlip = 1,  // baseline (paper section 3.3): foot of the obtuse apex, constrained Delaunay restored by flips
+  Projection = 2,   // baseline (paper section 4.1): foot of every encroaching visible vertex, repeated
+};
+
+// Stalled: budget left, but some violated side admits no double split point that keeps its neighbouring
+// triangles valid (even after the midpoint rescue); the partial mesh is returned, as for BudgetExhausted.
+enum class RefineStatus : std::int8_t { Converged = 0, BudgetExhausted = 1, Stalled = 2 };
+
+struct RefineOptions {
+  RefineStrategy strategy = RefineStrategy::Greedy;
+  // Maximum number of Steiner points; < 0 selects default_steiner_budget(n) for n input points.
+  long long max_steiner = -1;
+};
+
+// Per boundary edge of the input (a constrained edge of the input's CDT with the domain on exactly one side).
+struct BoundaryEdgeStats {
+  Segment edge;            // input point indices (a, b), the domain on the left of a -> b
+  int steiner_points = 0;  // Steiner points placed on it
+  int lower_bound = 0;     // single-edge Greedy-Refine against the input vertices (see lower_bound_per_edge)
+};
+
+struct RefineResult2 {
+  Mesh2 mesh;  // the constrained Delaunay triangulation of the refined domain (input points first)
+  RefineStatus status = RefineStatus::Converged;
+  long long steiner_points = 0;
+  long long lower_bound = 0;
+  int optimal = -1;  // 1 certainly optimal, 0 certainly not, -1 unknown (see refine's docstring)
+  // Exact certificate of `mesh` as returned: boundary sides whose triangle is obtuse opposite the boundary
+  // edge. 0 whenever status == Converged.
+  long long obtuse_boundary_triangles = 0;
+  std::vector<BoundaryEdgeStats> edges;
+  double seconds = 0.0;
+};
+
+// Default Steiner budget for n input points: 10 n + 1000. Greedy places at most one point per input vertex
+// encroaching each edge in the convex case, and Project-Flip O(n) points (paper, section 3.3), so a well-posed
+// input needs far fewer; the budget exists for PSLG-like interference cascades (paper, Figure 6).
+long long default_steiner_budget(std::size_t n_points);
+
+// Refines the boundary of `domain` (validated by the caller; boundary = the segments bordering the domain on
+// one side, or the convex hull when domain.convex_hull_boundary). Steiner points go only on boundary
+// subsegments; each is a rounded construction checked by exact predicates (see greedy_refine.cpp). The result's
+// certificate is the exact check of the returned mesh. Interfaces (constraints with the domain on both sides)
+// are left as they are (issue 4).
+//
+// optimal: 1 when steiner_points == lower_bound (the bound is then attained); otherwise, for the Greedy strategy
+// on a convex polygon (no holes, no interior points or constraints) that converged without a fallback step, 1 by
+// Theorem 3 of the paper; -1 (unknown) in every other case.
+// Throws InvalidInput when the domain cannot be triangulated (crossing constraints, no triangle).
+// Cost: O(n log n) to triangulate, plus per Steiner point the walk over the triangles meeting the diametral
+// disk of the refined subsegment.
+RefineResult2 refine(const Domain2& domain, const RefineOptions& options = {});
+
+std::string to_string(RefineStrategy s);
+std::string to_string(RefineStatus s);
+
+}  // namespace nonobtuse

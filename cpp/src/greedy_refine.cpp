@@ -1,0 +1,139 @@
+// Sensitive Greedy-Refine (paper sections 4.1-4.4) on the constrained Delaunay triangulation.
+//
+// A boundary side (s, e) is violated when its triangle's apex is strictly inside the diametral disk; in a CDT
+// that happens iff some vertex visible from the open subsegment lies in the open half-disk on the domain side.
+// A sweep walks from s toward e: each step places the Steiner point x at the end of the longest subsegment
+// [s, x] whose half-disk is empty (closed form t* = min |q - s|^2 / ((q - s) . d), Theorem 2), unless x lies in
+// a forbidden interval: inside the open half-disk of another boundary subsegment f met by the walk, where the
+// point would break f (Figure 5). Then x moves back to the interval's start (Theorem 3's rule).
+//
+// Termination: every step inserts one Steiner point strictly inside the subsegment being refined, and the
+// budget caps the points; a side is deferred at most once (the deferred set), so the queue drains. Within the
+// budget, for convex polygons Theorem 3 bounds the points by the optimum; in general (holes, reflex vertices,
+// interfaces) no polynomial bound is known (paper, Figure 6), hence the budget and the status.
+#include <set>
+
+#include "refine2d_state.h"
+
+namespace nonobtuse::refine2d {
+namespace {
+
+using Key = std::pair<int, int>;
+Key key(const Side& side) { return {side.s->info(), side.e->info()}; }
+
+// The side among `nearby` whose open diametral half-disk strictly contains p, or nullptr.
+const Side* forbidder(const std::vector<Side>& nearby, const Point& p) {
+  for (const Side& f : nearby)
+    if (encroaches(f.s->point(), f.e->point(), p)) return &f;
+  return nullptr;
+}
+
+// The forbidden interval of [s, e] with respect to f: the parameters t1 <= t2 where s + t (e - s) crosses f's
+// diametral circle (a float construction; every decision made with it is re-checked exactly).
+std::pair<double, double> forbidden_interval(const Point& s, const Point& e, const Side& f) {
+  const Point &a = f.s->point(), &b = f.e->point();
+  double mx = 0.5 * (a.x() + b.x()), my = 0.5 * (a.y() + b.y());
+  double r2 = 0.25 * ((b.x() - a.x()) * (b.x() - a.x()) + (b.y() - a.y()) * (b.y() - a.y()));
+  double dx = e.x() - s.x(), dy = e.y() - s.y(), wx = s.x() - mx, wy = s.y() - my;
+  double A = dx * dx + dy * dy, B = 2 * (dx * wx + dy * wy), C = wx * wx + wy * wy - r2;
+  double disc = std::max(0.0, B * B - 4 * A * C), root = std::sqrt(disc);
+  return {(-B - root) / (2 * A), (-B + root) / (2 * A)};
+}
+
+// True when s lies in the closed diametral disk of f (f's forbidden interval then starts at s: no progress).
+bool in_closed_disk(const Point& s, const Side& f) {
+  const Point &a = f.s->point(), &b = f.e->point();
+  return s == a || s == b || CGAL::angle(a, s, b) != CGAL::ACUTE;
+}
+
+// Paper 4.3: when the greedy step is blocked by a vertex on the boundary whose own subsegment is violated,
+// refine that subsegment first (its refinement may unblock this one).
+bool blocked_by_violated_boundary(const State& st, Vertex_handle blocker) {
+  auto ec = st.cdt.incident_edges(blocker), done = ec;
+  if (ec == nullptr) return false;
+  do {
+    if (!ec->first->is_constrained(ec->second)) continue;
+    Vertex_handle a = ec->first->vertex(CDT::ccw(ec->second)), b = ec->first->vertex(CDT::cw(ec->second));
+    if (st.is_violated({a, b}) || st.is_violated({b, a})) return true;
+  } while (++ec != done);
+  return false;
+}
+
+enum class Step { Place, Defer, Stuck };
+
+// Chooses the next Steiner point on `cur` (violated) given the walk's encroachers and nearby sides.
+Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& deferred, Point& p) {
+  const Point &s = cur.s->point(), &e = cur.e->point();
+  auto empty = [&](const Point& c) {
+    return subsegment_is_empty(s, c, w.encroachers) && st.keeps_triangles_valid(cur, c);
+  };
+  auto allowed = [&](const Point& c) { return empty(c) && forbidder(w.nearby, c) == nullptr; };
+  Vertex_handle blocker;
+  const double t_greedy = greedy_parameter(s, e, w.encroachers, &blocker);
+  const bool may_defer = !deferred.count(key(cur));
+  auto defer = [&] {
+    deferred.insert(key(cur));
+    return Step::Defer;
+  };
+  // Paper 4.3: blocked by a boundary vertex whose subsegment is violated: refine that one first.
+  if (may_defer && blocker != nullptr && blocked_by_violated_boundary(st, blocker)) return defer();
+  double t = t_greedy;
+  // Each iteration places a point or moves t strictly back toward s (to a forbidden interval's start, or by a
+  // relative 2^-40 when rounding put the start inside the interval again); every candidate is checked exactly.
+  for (int iter = 0; iter < 64; ++iter) {
+    if (!pick_point_at_or_before(s, e, t, empty, p)) break;
+    const Side* f = forbidder(w.nearby, p);
+    if (f == nullptr) return Step::Place;
+    auto [t_start, t_end] = forbidden_interval(s, e, *f);
+    // An interval starting within 2^-20 |e - s| of s counts as starting at s: s was itself placed at the start of
+    // f's interval (on f's circle up to rounding), and moving back to it would only creep forward by ulps.
+    if (!in_closed_disk(s, *f) && t_start > 0x1p-20) {
+      // Theorem 3: move back to the start of the forbidden interval. Where two intervals touch (the single-point
+      // gap of Lemma 2, e.g. the foot of an obtuse apex), the exact gap point is among the candidates.
+      if (pick_point(s, e, t_start, allowed, p)) return Step::Place;
+      t = std::min(t_start, t * (1 - 0x1p-40));
+      continue;
+    }
+    // The interval starts at s: no point before it. If f is violated itself, refine it first (paper 4.3).
+    if (may_defer && st.is_violated(*f)) return defer();
+    // Otherwise the end of the interval: s is on f's circle, so [s, end] is a chord of f's disk whose half on
+    // f's side lies in f's empty disk: usually empty; checked exactly.
+    if (t_end < 1 && pick_point(s, e, t_end, allowed, p)) return Step::Place;
+    break;
+  }
+  // Fallback: the plain greedy point, which breaks f's disk (f is re-queued by the split and refined in turn).
+  st.fallback_used = true;
+  return pick_point_at_or_before(s, e, t_greedy, empty, p) ? Step::Place : Step::Stuck;
+}
+
+// Refines the violated side from s toward e until the remaining subsegment is fine, a step is deferred, or the
+// budget is spent. The walk runs once: points placed on this edge never encroach its other subsegments (they
+// are on its line or just outside), so the first walk's encroachers and nearby sides stay a superset.
+void sweep(State& st, Side cur, std::set<Key>& deferred) {
+  DiskWalk w = st.walk_diametral_disk(cur);
+  while (st.budget_left() && st.is_violated(cur)) {
+    keep_encroaching(cur.s->point(), cur.e->point(), w.encroachers);
+    if (w.encroachers.empty()) throw InternalError("greedy_refine: a violated subsegment without encroacher");
+    Point p;
+    Step step = choose_point(st, cur, w, deferred, p);
+    if (step == Step::Defer) st.queue.push_back(cur);
+    if (step != Step::Place) return;
+    Vertex_handle v = st.split(cur, p);
+    if (v == nullptr) return;
+    cur = {v, cur.e};
+  }
+}
+
+}  // namespace
+
+void greedy_refine(State& st) {
+  std::set<Key> deferred;
+  st.enqueue_all();
+  while (!st.queue.empty() && st.budget_left()) {
+    Side side = st.queue.front();
+    st.queue.pop_front();
+    if (st.is_violated(side)) sweep(st, side, deferred);
+  }
+}
+
+}  // namespace nonobtuse::refine2d

@@ -1,0 +1,47 @@
+// Baseline (paper section 4.1): orthogonal projection. For a violated boundary side, one Steiner point at the
+// foot of every encroaching visible vertex (strictly inside the half-disk, found by the disk walk), then the
+// new subsegments are re-examined, until no side is violated. Each foot splits the side strictly inside
+// (an encroacher projects strictly between s and e), so each round makes progress; the budget bounds the rounds.
+#include <algorithm>
+
+#include "refine2d_state.h"
+
+namespace nonobtuse::refine2d {
+namespace {
+
+// Parameter of the foot of q on the line s + t (e - s).
+double foot_parameter(const Point& s, const Point& e, const Point& q) {
+  double dx = e.x() - s.x(), dy = e.y() - s.y();
+  return ((q.x() - s.x()) * dx + (q.y() - s.y()) * dy) / (dx * dx + dy * dy);
+}
+
+}  // namespace
+
+Vertex_handle split_at_foot(State& st, const Side& side, const Point& q) {
+  Point p;
+  const Point &s = side.s->point(), &e = side.e->point();
+  if (!pick_point(s, e, foot_parameter(s, e, q), [&](const Point& c) { return st.keeps_triangles_valid(side, c); }, p)) return nullptr;
+  return st.split(side, p);
+}
+
+void projection_refine(State& st) {
+  st.enqueue_all();
+  while (!st.queue.empty() && st.budget_left()) {
+    Side side = st.queue.front();
+    st.queue.pop_front();
+    if (!st.is_violated(side)) continue;
+    std::vector<Vertex_handle> q = st.walk_diametral_disk(side).encroachers;
+    const Point &s = side.s->point(), &e = side.e->point();
+    std::sort(q.begin(), q.end(), [&](Vertex_handle a, Vertex_handle b) {
+      return foot_parameter(s, e, a->point()) < foot_parameter(s, e, b->point());
+    });
+    Side cur = side;
+    for (Vertex_handle v : q) {  // feet in order along s -> e: each splits the remaining subsegment [cur.s, e]
+      if (!st.budget_left()) break;
+      Vertex_handle p = split_at_foot(st, cur, v->point());
+      if (p != nullptr) cur = {p, side.e};
+    }
+  }
+}
+
+}  // namespace nonobtuse::refine2d

@@ -1,0 +1,127 @@
+"""Boundary Gabriel property of 3D meshes: TetGen, fTetWild and our refinement on the 3D corpus.
+
+For every input of ../shared/data/3d (or the paths given) and every method, the exact check of nonobtuse
+(check_gabriel: a boundary subfacet/subsegment is encroached when a mesh vertex lies strictly inside its
+diametral sphere) is run on the mesh produced:
+
+- tetgen-pq: TetGen ``-pq1.414`` (quality; splits the boundary as it likes);
+- tetgen-pY: TetGen ``-pY`` (keeps the boundary: no boundary Steiner point);
+- ftetwild:  fTetWild (remeshes the surface within an envelope);
+- ours:      refine_gabriel (boundary Steiner points until no boundary facet or segment is encroached).
+
+Columns: input, method, status, points, boundary_steiner (boundary-face vertices that are not input points),
+steiner (all output points that are not input points), boundary_faces, encroached_facets, encroached_segments
+("n/a" for fTetWild, whose output does not mark segments), seconds. CSV to
+experiments/results/bench_gabriel3d.csv, and a table on stdout.
+
+Run: ``PYTHONPATH=src .venv/bin/python experiments/bench_gabriel3d.py [--quick] [files...]``
+(default: our refinement limited to 60 s and 5,000 points per input, about 10 min in all; --quick: inputs
+up to 500 triangles, our refinement limited to 20 s and 2,000 points, about 1 min).
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from nonobtuse.errors import InvalidInputError
+from nonobtuse.mesh3d import check_gabriel, load_plc, refine_gabriel, tetrahedralize
+from nonobtuse.mesh3d.load import PLC_SUFFIXES, SURFACE_SUFFIXES
+
+ROOT = Path(__file__).resolve().parents[1]
+DATA3D = ROOT / ".." / "shared" / "data" / "3d"
+RESULTS = ROOT / "experiments" / "results"
+COLUMNS = ["input", "method", "status", "points", "boundary_steiner", "steiner", "boundary_faces",
+           "encroached_facets", "encroached_segments", "seconds"]
+
+
+def measure(name: str, method: str, plc, mesh, status: str, seconds: float) -> dict[str, Any]:
+    """One CSV row: counts of the mesh and its exact Gabriel check."""
+    report = check_gabriel(mesh)
+    n = len(plc.points)
+    bverts = np.unique(mesh.boundary_faces)
+    return {"input": name, "method": method, "status": status, "points": len(mesh.points),
+            "boundary_steiner": int((bverts >= n).sum()), "steiner": len(mesh.points) - n,
+            "boundary_faces": len(mesh.boundary_faces), "encroached_facets": len(report.faces),
+            # fTetWild does not say which of its edges are segments: nothing to check there
+            "encroached_segments": len(report.segments) if len(mesh.segments) else "n/a",
+            "seconds": round(seconds, 3)}
+
+
+def run_backend(name: str, plc, method: str, backend: str, **options) -> dict[str, Any]:
+    t0 = time.perf_counter()
+    try:
+        mesh = tetrahedralize(plc, backend, **options)
+    except InvalidInputError as e:
+        return {"input": name, "method": method, "status": f"failed: {str(e)[:40]}"}
+    return measure(name, method, plc, mesh, "ok", time.perf_counter() - t0)
+
+
+def run_ours(name: str, plc, max_steiner: int, time_limit: float) -> dict[str, Any]:
+    t0 = time.perf_counter()
+    result = refine_gabriel(plc, max_steiner=max_steiner, time_limit=time_limit)
+    return measure(name, "ours", plc, result.mesh, result.status, time.perf_counter() - t0)
+
+
+def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
+    name = path.name
+    try:
+        plc = load_plc(path)
+    except InvalidInputError as e:
+        return [{"input": name, "method": "-", "status": f"invalid: {str(e)[:40]}"}]
+    if len(plc.triangles) > args.max_triangles:
+        return [{"input": name, "method": "-", "status": f"skipped: {len(plc.triangles)} triangles"}]
+    rows = [run_backend(name, plc, "tetgen-pq", "tetgen", switches="pq1.414AQ"),
+            run_backend(name, plc, "tetgen-pY", "tetgen", switches="pYAQ")]
+    if len(plc.triangles) <= args.ftetwild_max_triangles:
+        rows.append(run_backend(name, plc, "ftetwild", "ftetwild"))
+    else:
+        rows.append({"input": name, "method": "ftetwild", "status": "skipped (size)"})
+    rows.append(run_ours(name, plc, args.max_steiner, args.time_limit))
+    return rows
+
+
+def print_table(rows: list[dict[str, Any]]) -> None:
+    widths = {c: max(len(c), *(len(str(r.get(c, ""))) for r in rows)) for c in COLUMNS}
+    print("  ".join(c.ljust(widths[c]) for c in COLUMNS))
+    for r in rows:
+        print("  ".join(str(r.get(c, "")).ljust(widths[c]) for c in COLUMNS))
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("inputs", nargs="*", type=Path, help="default: every file of ../shared/data/3d")
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--out", type=Path, default=RESULTS / "bench_gabriel3d.csv")
+    args = ap.parse_args(argv)
+    quick = args.quick
+    args.max_triangles = 500 if quick else 10**9
+    args.ftetwild_max_triangles = 500 if quick else 20000
+    args.max_steiner = 2000 if quick else 5000
+    args.time_limit = 20.0 if quick else 60.0
+    inputs = args.inputs or sorted(p for p in DATA3D.glob("*") if p.suffix in SURFACE_SUFFIXES + PLC_SUFFIXES)
+    if not inputs:
+        print(f"no inputs (is {DATA3D} present?)", file=sys.stderr)
+        return 2
+    rows = []
+    for path in inputs:
+        print(f"bench_gabriel3d: {path.name}", file=sys.stderr)
+        rows += bench_one(path, args)
+    args.out.parent.mkdir(parents=True, exist_ok=True)
+    with open(args.out, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=COLUMNS)
+        w.writeheader()
+        w.writerows(rows)
+    print_table(rows)
+    print(f"\nwrote {args.out}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,160 @@
+"""Benchmark of nonobtuse boundary refinement against Triangle -pD, side by side in one process on the same
+inputs: Steiner points and wall time per strategy, beside the lower bound.
+
+Inputs: the CG:SHOP 2025 categories ortho, point-set, simple-polygon (../shared/data/cgshop25), and generated
+domains of 1e3 .. 1e6 vertices: convex polygons with interior points, star-shaped (non-convex) polygons with
+interior points, and thin layers (a 1000 m x 1 m strip whose top and bottom are polylines, with interior points).
+
+    PYTHONPATH=src .venv/bin/python experiments/bench_refine2d.py [--quick]
+
+Writes experiments/results/bench_refine2d.csv and .png and prints a table. --quick: generated sizes up to 1e4.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path[:0] = [str(ROOT / "src"), str(ROOT / "tests")]
+
+import triangle  # noqa: E402
+
+import nonobtuse  # noqa: E402
+from nonobtuse import Domain  # noqa: E402
+from refine_helpers import SHARED, cgshop_domain  # noqa: E402
+
+STRATEGIES = ("greedy", "project-flip", "projection")
+
+
+def loop(n: int) -> np.ndarray:
+    return np.array([(i, (i + 1) % n) for i in range(n)], dtype=np.int64)
+
+
+def convex(n: int, rng) -> Domain:
+    h = max(3, int(np.sqrt(n)))
+    a = np.sort(rng.uniform(0, 2 * np.pi, h))
+    r, b = np.sqrt(rng.uniform(0, 0.9, n - h)), rng.uniform(0, 2 * np.pi, n - h)
+    hull = np.c_[np.cos(a), np.sin(a)] * 1e4
+    inner = np.c_[r * np.cos(b), r * np.sin(b)] * 1e4
+    pts = np.unique(np.round(np.r_[hull, inner]), axis=0)
+    return Domain(points=pts, convex_hull=True)
+
+
+def star(n: int, rng) -> Domain:
+    h = max(8, int(np.sqrt(n)))
+    a = np.sort(rng.uniform(0, 2 * np.pi, h))
+    outer = np.round(np.c_[np.cos(a), np.sin(a)] * rng.uniform(5e3, 1e4, h)[:, None])
+    m = n - h
+    r, b = rng.uniform(0, 4.5e3, m), rng.uniform(0, 2 * np.pi, m)
+    inner = np.unique(np.round(np.c_[r * np.cos(b), r * np.sin(b)]), axis=0)
+    inner = inner[~(inner[:, None, :] == outer[None]).all(-1).any(1)] if len(inner) * h < 5e7 else inner
+    return Domain(points=np.r_[outer, inner], segments=loop(h))
+
+
+def thin_layer(n: int, rng) -> Domain:
+    """1000 m long, ~1 m thick: bottom y = 0.1 sin(x / 50), top 1 + 0.1 sin(x / 70), k vertices each, interior
+    points in between (coordinates in mm, integers)."""
+    k = max(4, int(np.sqrt(n)))
+    x = np.linspace(0, 1e6, k)
+    bottom = np.c_[x, np.round(100 * np.sin(x / 5e4))]
+    top = np.c_[x[::-1], np.round(1000 + 100 * np.sin(x[::-1] / 7e4))]
+    m = n - 2 * k
+    px = np.round(rng.uniform(1e3, 1e6 - 1e3, m))
+    lo, hi = 100 * np.sin(px / 5e4) + 150, 1000 + 100 * np.sin(px / 7e4) - 150
+    py = np.round(lo + rng.uniform(0, 1, m) * (hi - lo))
+    inner = np.unique(np.c_[px, py], axis=0)
+    return Domain(points=np.r_[bottom, top, inner], segments=loop(2 * k))
+
+
+def triangle_pd(domain: Domain) -> tuple[int, float]:
+    t0 = time.perf_counter()
+    data = {"vertices": domain.points}
+    if len(domain.segments):
+        data["segments"] = domain.segments
+    if len(domain.holes):
+        data["holes"] = domain.holes
+    out = triangle.triangulate(data, "pDQ" if len(domain.segments) else "cDQ")
+    return len(out["vertices"]) - len(domain.points), time.perf_counter() - t0
+
+
+def run(name: str, category: str, domain: Domain, rows: list) -> None:
+    row = {"input": name, "category": category, "vertices": len(domain.points)}
+    for s in STRATEGIES:
+        t0 = time.perf_counter()
+        r = nonobtuse.refine(domain, strategy=s)
+        row[f"{s}_steiner"], row[f"{s}_seconds"] = r.stats["steiner_points"], time.perf_counter() - t0
+        row[f"{s}_status"] = r.status
+        row["lower_bound"] = r.stats["lower_bound"]
+    row["triangle_pD_steiner"], row["triangle_pD_seconds"] = triangle_pd(domain)
+    rows.append(row)
+    print(
+        f"{name:40s} n={row['vertices']:8d} lb={row['lower_bound']:7d} "
+        + " ".join(f"{s}={row[f'{s}_steiner']}({row[f'{s}_seconds']:.2f}s)" for s in STRATEGIES)
+        + f" triangle-pD={row['triangle_pD_steiner']}({row['triangle_pD_seconds']:.2f}s)",
+        flush=True,
+    )
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="generated inputs up to 1e4 vertices")
+    args = ap.parse_args()
+    rows: list[dict] = []
+    cg = SHARED / "cgshop25"
+    if cg.exists():
+        for f in sorted(cg.glob("*.instance.json")):
+            cat = f.name.split("_")[0]
+            if cat in ("ortho", "point-set", "simple-polygon"):
+                run(f.name.split(".")[0], cat, cgshop_domain(f), rows)
+    sizes = [10**3, 10**4] if args.quick else [10**3, 10**4, 10**5, 10**6]
+    for n in sizes:
+        for gen in (convex, star, thin_layer):
+            try:
+                run(f"{gen.__name__}_{n}", gen.__name__, gen(n, np.random.default_rng(n)), rows)
+            except nonobtuse.InvalidInputError as e:  # a generated input that is not a valid domain
+                print(f"{gen.__name__}_{n}: skipped, {e}")
+    out = ROOT / "experiments" / "results"
+    out.mkdir(parents=True, exist_ok=True)
+    with open(out / "bench_refine2d.csv", "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+    print("\ncategory totals (Steiner points):")
+    cats = sorted({r["category"] for r in rows}, key=lambda c: [r["category"] for r in rows].index(c))
+    keys = ["lower_bound"] + [f"{s}_steiner" for s in STRATEGIES] + ["triangle_pD_steiner"]
+    print(f"{'category':16s} " + " ".join(f"{k:>20s}" for k in keys))
+    for c in cats:
+        print(f"{c:16s} " + " ".join(f"{sum(r[k] for r in rows if r['category'] == c):20d}" for k in keys))
+    plot(rows, out / "bench_refine2d.png")
+
+
+def plot(rows: list, path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    gen = [r for r in rows if r["category"] in ("convex", "star", "thin_layer")]
+    fig, ax = plt.subplots(1, 2, figsize=(11, 4))
+    for c, mk in (("convex", "o"), ("star", "s"), ("thin_layer", "^")):
+        rs = [r for r in gen if r["category"] == c]
+        n = [r["vertices"] for r in rs]
+        for s, col in (("greedy", "C0"), ("triangle_pD", "C3"), ("project-flip", "C1")):
+            ax[0].loglog(n, [max(r[f"{s}_steiner"], 1) for r in rs], mk + "-", color=col, label=f"{s} {c}")
+            ax[1].loglog(n, [r[f"{s}_seconds"] for r in rs], mk + "-", color=col, label=f"{s} {c}")
+        ax[0].loglog(n, [max(r["lower_bound"], 1) for r in rs], mk + ":", color="k", label=f"lower bound {c}")
+    ax[0].set(xlabel="input vertices", ylabel="Steiner points")
+    ax[1].set(xlabel="input vertices", ylabel="seconds")
+    ax[0].legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
+if __name__ == "__main__":
+    main()

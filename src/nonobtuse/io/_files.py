@@ -1,0 +1,128 @@
+"""File plumbing shared by the readers and writers: reading text with file:line errors, atomic writes."""
+
+from __future__ import annotations
+
+import contextlib
+import math
+import os
+import tempfile
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+from typing import IO
+
+from nonobtuse.errors import InvalidInputError
+
+
+def read_text(path: Path) -> str:
+    """The file's text; InvalidInputError naming the file when missing, unreadable, not text or empty."""
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as e:
+        raise InvalidInputError(f"{path}: cannot read the file ({e})") from None
+    if not text.strip():
+        raise InvalidInputError(f"{path}: the file is empty")
+    return text
+
+
+@dataclass
+class Line:
+    """One non-blank line of a text file, comments (from ``#``) removed, split on whitespace."""
+
+    file: str
+    number: int  # 1-based
+    tokens: list[str]
+
+    def error(self, message: str) -> InvalidInputError:
+        return InvalidInputError(f"{self.file}:{self.number}: {message}")
+
+    def need(self, n: int, what: str) -> Line:
+        """Raise unless the line has at least ``n`` tokens."""
+        if len(self.tokens) < n:
+            found = " ".join(self.tokens)
+            raise self.error(f"expected {what} ({n} values), found {len(self.tokens)}: '{found}'")
+        return self
+
+    def int(self, k: int, what: str) -> int:
+        try:
+            return int(self.tokens[k])
+        except ValueError:
+            raise self.error(f"{what} must be an integer, found '{self.tokens[k]}'") from None
+
+    def float(self, k: int, what: str) -> float:
+        """Token ``k`` as a float (NaN and infinity are accepted here and refused by validation)."""
+        token = self.tokens[k]
+        try:
+            if "_" in token:  # Python's float() accepts 1_000; no mesh format does
+                raise ValueError(token)
+            return float(token)
+        except ValueError:
+            raise self.error(f"{what} must be a number, found '{token}'") from None
+
+    def count(self, k: int, what: str) -> int:
+        """Token ``k`` as a non-negative integer."""
+        n = self.int(k, what)
+        if n < 0:
+            raise self.error(f"{what} must not be negative, found {n}")
+        return n
+
+
+class Lines:
+    """The non-blank lines of a text file in order, for formats that count their items (Triangle's)."""
+
+    def __init__(self, path: Path, text: str | None = None) -> None:
+        self.file = str(path)
+        text = read_text(path) if text is None else text
+        self._lines = [
+            Line(self.file, i, tokens)
+            for i, raw in enumerate(text.splitlines(), start=1)
+            if (tokens := raw.split("#", 1)[0].split())
+        ]
+        self._next = 0
+        self._last = len(text.splitlines())
+
+    def next(self, what: str) -> Line:
+        """The next line; when the file has ended, InvalidInputError saying ``what`` was expected."""
+        if self._next >= len(self._lines):
+            raise InvalidInputError(f"{self.file}:{self._last}: the file ends early: expected {what}")
+        self._next += 1
+        return self._lines[self._next - 1]
+
+    def at_end(self) -> bool:
+        return self._next >= len(self._lines)
+
+    def expect_end(self) -> None:
+        if not self.at_end():
+            raise self._lines[self._next].error("unexpected content after the last section (wrong counts?)")
+
+
+def exact_float(value: object, where: str) -> float:
+    """A JSON number as a float64, refusing booleans, strings and integers float64 cannot hold exactly."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise InvalidInputError(f"{where} must be a number, found {value!r}")
+    x = float(value)
+    if isinstance(value, int) and (not math.isfinite(x) or int(x) != value):
+        raise InvalidInputError(f"{where}: the integer {value} is not exactly representable as a float64")
+    return x
+
+
+@contextlib.contextmanager
+def atomic_path(path: Path) -> Iterator[Path]:
+    """A temporary path beside ``path`` (same suffix) to write to; on success it replaces ``path`` atomically
+    (os.replace), on failure it is removed and ``path`` is untouched."""
+    fd, tmp = tempfile.mkstemp(dir=path.parent or Path("."), prefix=f".{path.name}.", suffix=path.suffix)
+    os.close(fd)
+    try:
+        yield Path(tmp)
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise
+
+
+@contextlib.contextmanager
+def atomic_text(path: Path) -> Iterator[IO[str]]:
+    """A text stream whose content replaces ``path`` atomically when the block ends without an exception."""
+    with atomic_path(path) as tmp, open(tmp, "w", encoding="utf-8") as f:
+        yield f

@@ -1,0 +1,191 @@
+"""JSON formats: CG:SHOP 2025 instances and nonobtuse domains (read), nonobtuse meshes (read and write).
+The schemas are documented in :mod:`nonobtuse.io`."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any, NoReturn
+
+import numpy as np
+
+from nonobtuse.domain import Domain, SourceMap
+from nonobtuse.errors import InvalidInputError
+from nonobtuse.io._files import atomic_text, exact_float, read_text
+from nonobtuse.mesh import Mesh
+
+DOMAIN_KEYS = {"points", "segments", "holes", "regions", "convex_hull"}
+MESH_KEYS = {"points", "triangles", "segments", "input_points", "input_segments", "regions", "stats"}
+
+
+def read_json(path: Path) -> Any:
+    try:
+        return json.loads(read_text(path))
+    except json.JSONDecodeError as e:
+        raise InvalidInputError(f"{path}:{e.lineno}: not valid JSON: {e.msg}") from None
+
+
+def domain_from_json(path: Path, data: Any) -> tuple[Domain, bool | None]:
+    """A CG:SHOP 2025 instance or a nonobtuse domain, by their keys. Returns the domain and the file's
+    ``convex_hull`` (None when the file does not say)."""
+    if not isinstance(data, dict):
+        raise InvalidInputError(f"{path}: expected a JSON object, found {type(data).__name__}")
+    if "points_x" in data:
+        return _cgshop_instance(path, data), False
+    if "triangles" in data:
+        raise InvalidInputError(f"{path}: this is a mesh (it has 'triangles'), not a domain; use read_mesh")
+    if "points" not in data:
+        raise InvalidInputError(
+            f"{path}: a JSON domain needs 'points' (nonobtuse domain) or 'points_x' (CG:SHOP instance)"
+        )
+    unknown = sorted(set(data) - DOMAIN_KEYS)
+    if unknown:
+        raise InvalidInputError(f"{path}: unknown key(s) {unknown} (a domain has {sorted(DOMAIN_KEYS)})")
+    hull = data.get("convex_hull")
+    if hull is not None and not isinstance(hull, bool):
+        raise InvalidInputError(f"{path}: 'convex_hull' must be true or false, found {hull!r}")
+    points = rows(data["points"], 2, float, f"{path}: points")
+    domain = Domain(
+        points,
+        rows(data.get("segments", []), 2, int, f"{path}: segments"),
+        rows(data.get("holes", []), 2, float, f"{path}: holes"),
+        rows(data.get("regions", []), 3, float, f"{path}: regions"),
+        source=str(path),
+        origin=SourceMap(file=str(path)),
+    )
+    return domain, hull
+
+
+def _cgshop_instance(path: Path, data: dict) -> Domain:
+    """CG:SHOP 2025: ``points_x``, ``points_y`` (numbers), ``region_boundary`` (a closed loop of point
+    indices, counter-clockwise), ``additional_constraints`` (index pairs). Other keys (instance_uid,
+    num_points, num_constraints) are ignored."""
+    for key in ("points_x", "points_y", "region_boundary"):
+        if not isinstance(data.get(key), list):
+            raise InvalidInputError(f"{path}: a CG:SHOP instance needs the list '{key}'")
+    xs, ys = data["points_x"], data["points_y"]
+    if len(xs) != len(ys):
+        raise InvalidInputError(f"{path}: points_x has {len(xs)} values but points_y has {len(ys)}")
+    points = np.column_stack(
+        [rows(xs, 0, float, f"{path}: points_x"), rows(ys, 0, float, f"{path}: points_y")]
+    ).reshape(-1, 2)
+    loop = rows(data["region_boundary"], 0, int, f"{path}: region_boundary")
+    if len(loop) < 3:
+        raise InvalidInputError(f"{path}: region_boundary must list at least 3 points, found {len(loop)}")
+    boundary = np.column_stack([loop, np.roll(loop, -1)])
+    extra = rows(data.get("additional_constraints", []), 2, int, f"{path}: additional_constraints")
+    return Domain(
+        points, np.concatenate([boundary, extra]), source=str(path), origin=SourceMap(file=str(path))
+    )
+
+
+def rows(value: Any, width: int, kind: type, where: str) -> np.ndarray:
+    """A JSON list of ``width``-number lists (or of numbers when width is 0) as a float64 or int64 array.
+    Refuses booleans, strings, ragged rows, non-integers where integers are expected, and integers float64
+    cannot hold exactly; the message names ``where`` and the offending index."""
+    dtype = np.int64 if kind is int else np.float64
+    if isinstance(value, list) and len(value) == 0:
+        return np.zeros((0,) if width == 0 else (0, width), dtype=dtype)
+    try:
+        arr = np.asarray(value) if isinstance(value, list) else None
+    except ValueError:  # ragged rows
+        arr = None
+    row_shape = (width,) if width else ()
+    if arr is None or arr.dtype.kind not in ("iu" if kind is int else "iuf") or arr.shape[1:] != row_shape:
+        _explain(value, width, kind, where)
+    if any(isinstance(x, bool) for x in (value if width == 0 else (x for row in value for x in row))):
+        _explain(value, width, kind, where)  # numpy took true/false for 1/0
+    if kind is float and arr.dtype.kind in "iu" and np.abs(arr).max() > 2**53:
+        _exact_floats(value, width, where)
+    return np.ascontiguousarray(arr, dtype=dtype)
+
+
+def _exact_floats(value: list, width: int, where: str) -> None:
+    for i, row in enumerate(value):
+        for j, x in enumerate([row] if width == 0 else row):
+            exact_float(x, f"{where}[{i}]" + ("" if width == 0 else f"[{j}]"))
+
+
+def _explain(value: Any, width: int, kind: type, where: str) -> NoReturn:
+    """Raise InvalidInputError naming the first malformed entry of ``value``."""
+    if not isinstance(value, list):
+        raise InvalidInputError(f"{where} must be a list, found {type(value).__name__}")
+    what = (
+        ("an integer" if kind is int else "a number")
+        if width == 0
+        else f"a list of {width} " + ("integers" if kind is int else "numbers")
+    )
+    for i, row in enumerate(value):
+        entries = [row] if width == 0 else row
+        if not isinstance(entries, list) or len(entries) != max(width, 1):
+            raise InvalidInputError(f"{where}[{i}] must be {what}, found {row!r}")
+        for x in entries:
+            if kind is int and (isinstance(x, bool) or not isinstance(x, int)):
+                raise InvalidInputError(f"{where}[{i}] must be {what}, found {row!r}")
+            if kind is float:
+                exact_float(x, f"{where}[{i}]")
+    raise InvalidInputError(f"{where}: malformed (mixed types?)")
+
+
+def mesh_from_json(path: Path, data: Any) -> Mesh:
+    """A mesh in the nonobtuse mesh schema; checks keys, shapes, index ranges and that the first points are
+    the input points. Geometry (orientation, Delaunay) is not checked here."""
+    if not isinstance(data, dict) or "triangles" not in data:
+        raise InvalidInputError(f"{path}: not a nonobtuse mesh (a JSON object with 'triangles')")
+    missing = sorted({"points", "triangles", "segments", "input_points", "input_segments"} - set(data))
+    unknown = sorted(set(data) - MESH_KEYS)
+    if missing or unknown:
+        raise InvalidInputError(f"{path}: mesh keys missing {missing}, unknown {unknown}")
+    points = rows(data["points"], 2, float, f"{path}: points")
+    input_points = rows(data["input_points"], 2, float, f"{path}: input_points")
+    triangles = rows(data["triangles"], 3, int, f"{path}: triangles")
+    segments = rows(data["segments"], 2, int, f"{path}: segments")
+    input_segments = rows(data["input_segments"], 2, int, f"{path}: input_segments")
+    for name, idx, n in (
+        ("triangles", triangles, len(points)), ("segments", segments, len(points)),
+        ("input_segments", input_segments, len(input_points)),
+    ):  # fmt: skip
+        bad = np.flatnonzero(((idx < 0) | (idx >= n)).any(axis=1)) if len(idx) else []
+        if len(bad):
+            raise InvalidInputError(
+                f"{path}: {name}[{bad[0]}] = {idx[bad[0]].tolist()} refers to a missing point"
+            )
+    n0 = len(input_points)
+    if n0 > len(points) or not np.array_equal(points[:n0], input_points):
+        raise InvalidInputError(f"{path}: the first {n0} points must be the input points, in input order")
+    regions = None
+    if data.get("regions") is not None:
+        regions = rows(data["regions"], 0, float, f"{path}: regions")
+        if len(regions) != len(triangles):
+            raise InvalidInputError(f"{path}: {len(regions)} regions for {len(triangles)} triangles")
+    stats = data.get("stats", {})
+    if not isinstance(stats, dict):
+        raise InvalidInputError(f"{path}: 'stats' must be an object")
+    return Mesh(points, triangles, segments, input_points, input_segments, regions, stats)
+
+
+def write_mesh_json(mesh: Mesh, path: Path) -> None:
+    """The mesh schema of :mod:`nonobtuse.io`, atomically. Floats are written in shortest round-trip form, so
+    reading gives the same float64 values. NaN or infinity (never produced by nonobtuse) raise ValueError."""
+    data = {
+        "points": mesh.points.tolist(),
+        "triangles": mesh.triangles.tolist(),
+        "segments": mesh.segments.tolist(),
+        "input_points": mesh.input_points.tolist(),
+        "input_segments": mesh.input_segments.tolist(),
+    }
+    if mesh.regions is not None:
+        data["regions"] = np.asarray(mesh.regions, dtype=np.float64).tolist()
+    data["stats"] = mesh.stats
+    with atomic_text(path) as f:
+        json.dump(data, f, allow_nan=False, separators=(",", ":"), default=_plain)
+        f.write("\n")
+
+
+def _plain(value: Any) -> Any:
+    """JSON form of numpy scalars and arrays found in ``stats``."""
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, np.ndarray):
+        return value.tolist()
+    raise TypeError(f"stats value {value!r} of type {type(value).__name__} is not JSON serializable")

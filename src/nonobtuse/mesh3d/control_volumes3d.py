@@ -1,0 +1,120 @@
+"""Voronoi control volumes of a tetrahedral mesh, by the per-tet decomposition used in LaGriT / FEHM.
+
+Within a tet T = (a, b, c, d) the piece of the Voronoi face dual to edge e = (i, j) is the quadrilateral
+(M, C_f1, C_T, C_f2): M the midpoint of e, C_f1 and C_f2 the circumcenters of the two faces of T containing e,
+C_T the circumcenter of T. All four points are equidistant from i and j, so the quadrilateral lies in the
+bisector plane of e. Its signed area is measured along the direction i -> j; it is positive when T's
+circumcenter lies on the side of the faces that T occupies, and negative for obtuse configurations. Summing
+the pieces of all tets around e gives the dual area A_e; the coupling coefficient of e is A_e / |e|, and a
+negative coefficient breaks the M-matrix property. The part of T nearest to i is the union of the pyramids
+with apex i over the three pieces of the edges at i, of volume A * |e| / 6 each, so the Voronoi cell volumes
+of all vertices sum to the mesh volume (signed pieces, exactly up to rounding).
+
+Everything is computed in floating point (constructions, not decisions): the exact certificate is the Gabriel
+check of the boundary faces, this module measures its consequence.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from nonobtuse.mesh3d.plc import TetMesh
+
+# The six edges (i, j) of a positively oriented tet (0, 1, 2, 3) with the other two vertices (k, l) ordered
+# so that (i, j, k, l) is an even permutation of (0, 1, 2, 3), hence positively oriented as well.
+_EDGE_FRAMES = np.array([[0, 1, 2, 3], [0, 2, 3, 1], [0, 3, 1, 2], [1, 2, 0, 3], [1, 3, 2, 0], [2, 3, 0, 1]])
+
+
+@dataclass
+class ControlVolumes3D:
+    """Control-volume data of a tet mesh.
+
+    edges:        (e, 2) int64, a < b, sorted.
+    dual_areas:   (e,) signed area of the Voronoi face dual to each edge, clipped to the mesh.
+    lengths:      (e,) edge lengths.
+    couplings:    (e,) dual_areas / lengths: the finite-volume coupling coefficients.
+    volumes:      (n,) Voronoi cell volume of every point (clipped to the mesh; 0 for unused points).
+    negative_couplings: number of edges with a negative coupling coefficient.
+    """
+
+    edges: np.ndarray
+    dual_areas: np.ndarray
+    lengths: np.ndarray
+    couplings: np.ndarray
+    volumes: np.ndarray
+    negative_couplings: int
+
+    def to_dict(self) -> dict:
+        """Summary for JSON output."""
+        return {"edges": len(self.edges), "negative_couplings": self.negative_couplings,
+                "min_coupling": float(self.couplings.min()) if len(self.couplings) else None,
+                "total_volume": float(self.volumes.sum())}
+
+
+def signed_tet_volumes(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
+    """Signed volumes (t,) of tets (t, 4): det[b-a, c-a, d-a] / 6, positive for positively oriented tets."""
+    p = points[tets]
+    a = p[:, 0]
+    return np.einsum("ij,ij->i", p[:, 1] - a, np.cross(p[:, 2] - a, p[:, 3] - a)) / 6.0
+
+
+def triangle_circumcenters(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
+    """Circumcenters (k, 3) of triangles with corners a, b, c (each (k, 3)) in 3D."""
+    u, v = b - a, c - a
+    w = np.cross(u, v)
+    num = (u * u).sum(1)[:, None] * np.cross(v, w) + (v * v).sum(1)[:, None] * np.cross(w, u)
+    return a + num / (2.0 * (w * w).sum(1)[:, None])
+
+
+def tet_circumcenters(a: np.ndarray, b: np.ndarray, c: np.ndarray, d: np.ndarray) -> np.ndarray:
+    """Circumcenters (k, 3) of tets with corners a, b, c, d (each (k, 3))."""
+    u, v, w = b - a, c - a, d - a
+    num = ((u * u).sum(1)[:, None] * np.cross(v, w) + (v * v).sum(1)[:, None] * np.cross(w, u)
+           + (w * w).sum(1)[:, None] * np.cross(u, v))
+    return a + num / (2.0 * (u * np.cross(v, w)).sum(1)[:, None])
+
+
+def dual_area_pieces(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per tet and local edge (t, 6): the edge as global vertex pairs (t, 6, 2) and the signed area of the
+    quadrilateral piece of its dual Voronoi face inside the tet (t, 6). Tets must be positively oriented."""
+    p = points[tets]  # (t, 4, 3)
+    ct = tet_circumcenters(p[:, 0], p[:, 1], p[:, 2], p[:, 3])
+    frames = tets[:, _EDGE_FRAMES]  # (t, 6, 4): i, j, k, l
+    x = points[frames]  # (t, 6, 4, 3)
+    xi, xj, xk, xl = (x[:, :, q].reshape(-1, 3) for q in range(4))
+    m = 0.5 * (xi + xj)
+    c1 = triangle_circumcenters(xi, xj, xk)
+    c2 = triangle_circumcenters(xi, xj, xl)
+    c = np.repeat(ct, 6, axis=0)
+    # Quadrilateral M -> C(ijk) -> C_T -> C(ijl): for (i, j, k, l) positive (det[j-i, k-i, l-i] > 0) and a
+    # circumcenter inside the tet it runs counter-clockwise seen from j, so its area vector points
+    # along i -> j.
+    area_vec = 0.5 * (np.cross(c1 - m, c - m) + np.cross(c - m, c2 - m))
+    e = xj - xi
+    signed = (area_vec * e).sum(1) / np.linalg.norm(e, axis=1)
+    return frames[:, :, :2], signed.reshape(-1, 6)
+
+
+def control_volumes3d(mesh: TetMesh) -> ControlVolumes3D:
+    """Voronoi dual areas, coupling coefficients and cell volumes of `mesh` (positively oriented tets).
+
+    Cost: O(t log t) for t tets (numpy, vectorized).
+    """
+    points = np.asarray(mesh.points, dtype=np.float64)
+    tets = np.asarray(mesh.tets, dtype=np.int64).reshape(-1, 4)
+    pairs, pieces = dual_area_pieces(points, tets)
+    pairs = np.sort(pairs.reshape(-1, 2), axis=1)
+    pieces = pieces.ravel()
+    edges, inv = np.unique(pairs, axis=0, return_inverse=True)
+    inv = inv.ravel()
+    edges = edges.reshape(-1, 2)
+    dual = np.bincount(inv, weights=pieces, minlength=len(edges))
+    lengths = np.linalg.norm(points[edges[:, 1]] - points[edges[:, 0]], axis=1)
+    couplings = dual / lengths
+    # pyramid over each piece with apex at either endpoint: height |e| / 2
+    pyramid = pieces * lengths[inv] / 6.0
+    volumes = np.bincount(pairs[:, 0], weights=pyramid, minlength=len(points))
+    volumes += np.bincount(pairs[:, 1], weights=pyramid, minlength=len(points))
+    return ControlVolumes3D(edges, dual, lengths, couplings, volumes, int((couplings < 0).sum()))

@@ -1,0 +1,202 @@
+"""Tetrahedral meshes of a PLC from three backends, all returned as a :class:`TetMesh` with the PLC's points
+first, in input order, and positively oriented tets (exact orient3d; rows are swapped where needed).
+
+What each backend guarantees:
+
+- ``"cgal"``: the Delaunay tetrahedralization of the PLC's vertices (CGAL, exact predicates), no Steiner
+  point. The boundary faces are the PLC's triangles as given (facet ids as markers) and the segments the
+  PLC's; they are faces/edges of the tetrahedralization only where they are Delaunay. Tets are kept when their
+  centroid has generalized winding number >= 1/2 w.r.t. the PLC triangles (floating point: it only selects
+  which tets are reported; the exact Gabriel check reads the boundary faces and points). Volume holes and
+  regions are not applied. This is the "before" state of the Gabriel refinement.
+- ``"tetgen"``: TetGen through the ``tetgen`` package. Default switches ``pq1.414YAQ``: the boundary is kept
+  (``Y``: no Steiner point on the boundary), interior quality points are added; ``switches=...`` passes any
+  string (e.g. ``"pq1.414AQ"`` lets TetGen split the boundary). TetGen keeps the input points first and in
+  order; holes and regions of the PLC are passed on (``A`` gives region attributes). Boundary faces are
+  TetGen's faces on input facets with the facet id as marker.
+- ``"ftetwild"``: fTetWild through ``pytetwild``. It remeshes the surface within an envelope (it moves it), so
+  input points may be absent from the output. Output points exactly equal to an input point are mapped to that
+  input index; absent input points are kept as unreferenced points so that the input comes first. Boundary
+  faces are the tet faces with one tet (marker -1: no facet id is known); segments are not known (empty).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import importlib.util
+import os
+import sys
+import tempfile
+import time
+from dataclasses import replace
+from typing import Any
+
+import numpy as np
+
+from nonobtuse import _core
+from nonobtuse.errors import InvalidInputError
+from nonobtuse.mesh3d.load import facet_boundary_segments, merge_equal_points
+from nonobtuse.mesh3d.plc import PLC, TetMesh
+
+BACKENDS = ("cgal", "tetgen", "ftetwild")
+TETGEN_DEFAULT_SWITCHES = "pq1.414YAQ"
+
+
+def positively_oriented(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
+    """`tets` (t, 4) with the first two vertices swapped where orient3d (exact) is negative. Raises on a flat
+    tet (orient3d == 0)."""
+    tets = np.asarray(tets, dtype=np.int64).reshape(-1, 4)
+    s = _core.plc_orient3d(points, tets)
+    if (s == 0).any():
+        k = int(np.flatnonzero(s == 0)[0])
+        raise InvalidInputError(f"tetrahedron {k} {tets[k].tolist()} is flat (four coplanar vertices)")
+    out = tets.copy()
+    neg = s < 0
+    out[neg, 0], out[neg, 1] = tets[neg, 1], tets[neg, 0]
+    return out
+
+
+def tet_faces_once(tets: np.ndarray) -> np.ndarray:
+    """Faces (f, 3) belonging to exactly one tet, oriented outward (the tets positively oriented), in order of
+    first occurrence."""
+    # For a positive tet (a, b, c, d) the outward faces are (b, c, d), (a, d, c), (a, b, d), (a, c, b).
+    idx = np.array([[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]])
+    faces = tets[:, idx].reshape(-1, 3)
+    _, first, inv, count = np.unique(np.sort(faces, axis=1), axis=0, return_index=True, return_inverse=True,
+                                     return_counts=True)
+    once = count[inv.ravel()] == 1
+    return faces[np.sort(np.flatnonzero(once))]
+
+
+@contextlib.contextmanager
+def _stdout_to_stderr():
+    """Route the C-level stdout (file descriptor 1) to stderr: the tetgen extension prints progress
+    there, which would corrupt the --json output of the CLI."""
+    sys.stdout.flush()
+    saved = os.dup(1)
+    try:
+        os.dup2(2, 1)
+        yield
+    finally:
+        os.dup2(saved, 1)
+        os.close(saved)
+
+
+@contextlib.contextmanager
+def _in_temporary_directory():
+    """Run with the working directory set to a fresh temporary directory, removed afterwards."""
+    previous = os.getcwd()
+    with tempfile.TemporaryDirectory(prefix="nonobtuse-ftetwild-") as tmp:
+        os.chdir(tmp)
+        try:
+            yield
+        finally:
+            os.chdir(previous)
+
+
+def _cgal(plc: PLC, options: dict[str, Any]) -> TetMesh:
+    import igl
+
+    if options:
+        raise InvalidInputError(f"backend 'cgal' takes no options, got {sorted(options)}")
+    cells = _core.delaunay_tetrahedra(plc.points)
+    centroids = plc.points[cells].mean(axis=1)
+    w = igl.winding_number(plc.points, plc.triangles, centroids) if len(cells) else np.zeros(0)
+    tets = cells[np.abs(w) >= 0.5]
+    return TetMesh(plc.points.copy(), tets, plc.triangles.copy(), plc.facet_ids.copy(), plc.segments.copy())
+
+
+def _tetgen(plc: PLC, options: dict[str, Any]) -> TetMesh:
+    import tetgen
+
+    switches = options.pop("switches", TETGEN_DEFAULT_SWITCHES)
+    if options:
+        raise InvalidInputError(f"backend 'tetgen' takes only switches=..., got {sorted(options)}")
+    tg = tetgen.TetGen(plc.points, plc.triangles.astype(np.int32), (plc.facet_ids + 1).astype(np.int32))
+    for h in plc.holes:
+        tg.add_hole(h)
+    for r in plc.regions:
+        tg.add_region(int(r[3]), r[:3])
+    try:
+        with _stdout_to_stderr():
+            node, elem, attr, markers = tg.tetrahedralize(switches=switches)
+    except RuntimeError as e:
+        raise InvalidInputError(f"TetGen failed on {plc.source} with switches {switches!r}: {e}") from None
+    n = len(plc.points)
+    if len(node) < n or not np.array_equal(node[:n], plc.points):
+        raise InvalidInputError(f"TetGen merged or moved input points of {plc.source} (duplicate vertices?)")
+    node = np.asarray(node, dtype=np.float64)
+    faces = np.asarray(tg.trifaces, dtype=np.int64).reshape(-1, 3)
+    face_markers = np.asarray(markers, dtype=np.int64) - 1
+    regions = np.asarray(attr, dtype=np.float64).ravel() if attr is not None and np.size(attr) else None
+    return TetMesh(node, positively_oriented(node, elem), faces, face_markers,
+                   facet_boundary_segments(faces, face_markers), regions, {"switches": switches})
+
+
+def _load_ftetwild():
+    """pytetwild's extension module, loaded without the package __init__ (which imports pyvista)."""
+    spec = importlib.util.find_spec("pytetwild")
+    if spec is None or not spec.submodule_search_locations:
+        raise ModuleNotFoundError("backend 'ftetwild' needs the pytetwild package (pip install pytetwild)")
+    from pathlib import Path
+
+    so = next(Path(spec.submodule_search_locations[0]).glob("PyfTetWildWrapper*.so"))
+    ext_spec = importlib.util.spec_from_file_location("pytetwild.PyfTetWildWrapper", so)
+    module = importlib.util.module_from_spec(ext_spec)
+    ext_spec.loader.exec_module(module)
+    return module
+
+
+def _ftetwild(plc: PLC, options: dict[str, Any]) -> TetMesh:
+    opts = {"optimize": True, "skip_simplify": False, "edge_length_r": 0.05, "edge_length_abs": 0.0,
+            "epsilon": 1e-3, "stop_energy": 10.0, "coarsen": False, "num_threads": 1, "num_opt_iter": 80,
+            "loglevel": 6, "quiet": True, "vtk_ordering": False, "disable_filtering": False}
+    unknown = set(options) - set(opts)
+    if unknown:
+        raise InvalidInputError(f"backend 'ftetwild': unknown options {sorted(unknown)}; "
+                                f"known {sorted(opts)}")
+    opts.update(options)
+    wrapper = _load_ftetwild()
+    no_sizing_field = (np.empty((0, 3)), np.empty((0, 4), dtype=np.int32), np.empty(0))
+    with _in_temporary_directory():  # fTetWild writes __tracked_surface.stl into the working directory
+        v, t = wrapper.tetrahedralize_mesh(plc.points, plc.triangles.astype(np.uint32), *opts.values(),
+                                           *no_sizing_field)
+    points, tets = input_points_first(plc.points, np.asarray(v, dtype=np.float64), np.asarray(t, np.int64))
+    tets = positively_oriented(points, tets)
+    faces = tet_faces_once(tets)
+    return TetMesh(points, tets, faces, np.full(len(faces), -1, dtype=np.int64),
+                   stats={"ftetwild_options": opts})
+
+
+def input_points_first(inputs: np.ndarray, points: np.ndarray,
+                       tets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Renumber a mesh (points, tets) so that `inputs` come first in their order: an output point exactly
+    equal to an input point takes its index, the other output points follow in their order."""
+    merged, inv = merge_equal_points(np.concatenate([inputs, points]))
+    n = len(inputs)
+    if len(np.unique(inv[:n])) != n:
+        raise InvalidInputError("the input has two equal points")
+    # merge_equal_points numbers by first occurrence, so the inputs are 0..n-1 and new points n.. in order
+    return merged, inv[n:][tets]
+
+
+_BACKEND_FUNCS = {"cgal": _cgal, "tetgen": _tetgen, "ftetwild": _ftetwild}
+
+
+def tetrahedralize(plc: PLC, backend: str = "cgal", **options: Any) -> TetMesh:
+    """Tetrahedralize `plc` with `backend` ("cgal", "tetgen" or "ftetwild"; options per backend: tetgen
+    ``switches=``, ftetwild the pytetwild keywords such as ``edge_length_r=``, ``epsilon=``).
+
+    Returns a TetMesh: points (input points first, in input order), positively oriented tets, boundary faces
+    with markers, segments; stats with backend, seconds and steiner_points (output points not in the input).
+    What each backend guarantees is in the module docstring. Raises InvalidInputError for an unknown backend
+    or option, or when the backend fails on the input.
+    """
+    if backend not in _BACKEND_FUNCS:
+        raise InvalidInputError(f"unknown backend {backend!r}; expected one of {BACKENDS}")
+    t0 = time.perf_counter()
+    mesh = _BACKEND_FUNCS[backend](plc, dict(options))
+    seconds = time.perf_counter() - t0
+    stats = {"backend": backend, "seconds": seconds, "steiner_points": len(mesh.points) - len(plc.points),
+             **mesh.stats}
+    return replace(mesh, stats=stats)

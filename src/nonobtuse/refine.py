@@ -1,0 +1,104 @@
+"""Nonobtuse boundary refinement: the fewest Steiner points on boundary edges so that every boundary triangle of
+the constrained Delaunay triangulation is nonobtuse at the angle opposite its boundary edge."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from nonobtuse.domain import Domain
+from nonobtuse.errors import InvalidInputError
+from nonobtuse.mesh import Mesh
+
+STRATEGIES = ("greedy", "project-flip", "projection")
+CONVERGED, BUDGET_EXHAUSTED, STALLED = "converged", "budget_exhausted", "stalled"
+
+
+@dataclass
+class RefineResult:
+    """What :func:`refine` returns.
+
+    mesh:   the constrained Delaunay triangulation of the refined domain (input points first, then the Steiner
+            points); ``mesh.stats`` is ``stats``.
+    stats:  ``status``, ``strategy``, ``steiner_points`` (int), ``lower_bound`` (int), ``optimal`` (True, False
+            or None when unknown), ``seconds`` (float), ``obtuse_boundary_triangles`` (int, the exact
+            certificate of ``mesh``: 0 when converged), ``edges``: one dict per input boundary edge
+            ``{"edge": [a, b], "steiner_points": k, "lower_bound": l}`` (a, b input point indices, the domain on
+            the left of a -> b).
+    status: ``"converged"``, ``"budget_exhausted"`` or ``"stalled"`` (budget left, but a violated side admits no
+            double split point keeping its neighbouring triangles valid); ``mesh`` is then the partial result.
+    """
+
+    mesh: Mesh
+    stats: dict[str, Any] = field(default_factory=dict)
+    status: str = CONVERGED
+
+    @property
+    def converged(self) -> bool:
+        return self.status == CONVERGED
+
+
+def refine(domain: Domain, strategy: str = "greedy", max_steiner: int | None = None) -> RefineResult:
+    """Adds Steiner points on the boundary edges of ``domain`` until every boundary triangle of its constrained
+    Delaunay triangulation is nonobtuse opposite its boundary edge.
+
+    domain:      a validated :class:`~nonobtuse.domain.Domain` (closed boundary loops, or ``convex_hull=True``
+                 for point sets: the hull edges are the boundary). Interior constraints (interfaces) are kept
+                 but not refined yet.
+    strategy:    ``"greedy"`` (sensitive Greedy-Refine: the longest empty subsegment from one end, never inside
+                 another subsegment's diametral disk; optimal for one edge and for convex polygons),
+                 ``"project-flip"`` or ``"projection"`` (the paper's baselines).
+    max_steiner: Steiner budget; None: ``10 n + 1000`` for n input points. When it is spent the partial mesh is
+                 returned with status ``"budget_exhausted"``.
+
+    Guarantees: Steiner points lie on boundary subsegments (exactly on the line when a double point there
+    exists, else a few ulps outside the domain); the returned mesh is checked exactly (``stats
+    ["obtuse_boundary_triangles"]`` is 0 whenever the status is ``"converged"``). ``lower_bound`` is the sum
+    over input boundary edges of the single-edge greedy count against the input vertices: no refinement placing
+    Steiner points on boundary edges uses fewer. ``optimal`` is True when the count equals the bound, or for the
+    greedy strategy on a convex polygon without interior points (Theorem 3), None otherwise.
+    Deterministic. Cost: O(n log n) to triangulate plus, per Steiner point, the triangles meeting the diametral
+    disk being refined.
+    Raises InvalidInputError for an unknown strategy, a negative budget or a domain that cannot be triangulated.
+    """
+    from nonobtuse import _core
+
+    if strategy not in STRATEGIES:
+        raise InvalidInputError(f"unknown strategy {strategy!r}; choose one of {', '.join(STRATEGIES)}")
+    if max_steiner is not None and (int(max_steiner) != max_steiner or max_steiner < 0):
+        raise InvalidInputError(f"max_steiner must be a non-negative integer, got {max_steiner!r}")
+    r = _core.refine(
+        domain.points,
+        domain.segments,
+        domain.holes,
+        domain.regions,
+        bool(domain.convex_hull),
+        strategy,
+        -1 if max_steiner is None else int(max_steiner),
+    )
+    stats: dict[str, Any] = {
+        "status": r["status"],
+        "strategy": strategy,
+        "steiner_points": int(r["steiner_points"]),
+        "lower_bound": int(r["lower_bound"]),
+        "optimal": r["optimal"],
+        "seconds": float(r["seconds"]),
+        "obtuse_boundary_triangles": int(r["obtuse_boundary_triangles"]),
+        "edges": [
+            {"edge": [int(a), int(b)], "steiner_points": int(k), "lower_bound": int(lb)}
+            for a, b, k, lb in np.asarray(r["edges"]).reshape(-1, 4)
+        ],
+    }
+    m = r["mesh"]
+    mesh = Mesh(
+        points=m["points"],
+        triangles=m["triangles"],
+        segments=m["segments"],
+        input_points=domain.points.copy(),
+        input_segments=domain.segments.copy(),
+        regions=m["triangle_region"] if len(domain.regions) else None,
+        stats=stats,
+    )
+    return RefineResult(mesh=mesh, stats=stats, status=r["status"])

@@ -1,0 +1,33 @@
+"""Constrained Delaunay triangulation of a 2D domain (the C++ core, CGAL exact predicates)."""
+
+from __future__ import annotations
+
+from nonobtuse import _core
+from nonobtuse.domain import Domain
+from nonobtuse.mesh import Mesh
+from nonobtuse.validate import validate_domain
+
+
+def triangulate(domain: Domain) -> Mesh:
+    """Constrained Delaunay triangulation (CDT) of ``domain``, without Steiner points.
+
+    Input: a :class:`Domain`; it is validated first (``validate_domain``: duplicates, crossings, points inside
+    segments, open loops...), which may return a repaired copy (e.g. segments split at points lying on them).
+    Output: a :class:`Mesh` whose points are the validated domain's points in order, triangles (m, 3)
+    counter-clockwise covering the domain minus holes, segments every constrained edge bordering the domain,
+    ``regions`` the region attribute per triangle (0 where no seed reached), ``input_points`` /
+    ``input_segments`` the validated domain, ``stats["repairs"]`` what validation changed.
+    Raises :class:`InvalidInputError` for a domain that cannot be triangulated (it says what and where).
+    Cost: O(n log n) expected for n points.
+    """
+    valid = validate_domain(domain)
+    out = _core.triangulate(valid.points, valid.segments, valid.holes, valid.regions, valid.convex_hull)
+    return Mesh(
+        points=out["points"],
+        triangles=out["triangles"],
+        segments=out["segments"],
+        input_points=valid.points.copy(),
+        input_segments=valid.segments.copy(),
+        regions=out["triangle_region"],
+        stats={"source": valid.source, "repairs": list(valid.repairs)},
+    )

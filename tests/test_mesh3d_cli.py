@@ -1,0 +1,63 @@
+"""The check3d and refine3d commands: exit codes and output."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from mesh3d_shapes import CUBE_POINTS, CUBE_TRIANGLES, TET_TRIANGLES, write_off
+from nonobtuse.cli import EXIT_INVALID, EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS, main
+
+# A low tet: the apex (1, 1, 2) is at distance sqrt(1 + 1 + 4) < 2 sqrt(2) from the circumcenter (2, 2, 0)
+# of the base (0,0,0), (4,0,0), (0,4,0), i.e. strictly inside the base's diametral sphere.
+LOW_TET = np.array([[0, 0, 0], [4, 0, 0], [0, 4, 0], [1, 1, 2]])
+
+
+@pytest.fixture
+def cube(tmp_path):
+    return write_off(tmp_path / "cube.off", CUBE_POINTS, CUBE_TRIANGLES.tolist())
+
+
+@pytest.fixture
+def low_tet(tmp_path):
+    return write_off(tmp_path / "low.off", LOW_TET, TET_TRIANGLES.tolist())
+
+
+def test_check3d_gabriel_cube_exits_0(cube, capsys):
+    # each boundary triangle is half a unit square: its diametral sphere has the square's diagonal as
+    # diameter; the fourth corner lies on it, not inside, and the other cube corners are farther. Segments
+    # likewise.
+    assert main(["check3d", str(cube), "--json"]) == EXIT_OK
+    out = json.loads(capsys.readouterr().out)
+    assert out["encroached_facets"] == 0 and out["encroached_segments"] == 0 and out["gabriel"]["ok"]
+
+
+def test_check3d_encroached_exits_1(low_tet, capsys):
+    assert main(["check3d", str(low_tet), "--backend", "tetgen"]) == EXIT_VIOLATIONS
+    assert "encroached_facets: 1" in capsys.readouterr().out  # the base
+    assert main(["check3d", str(low_tet), "--json"]) == EXIT_VIOLATIONS
+    deepest = json.loads(capsys.readouterr().out)["gabriel"]["deepest_faces"][0]
+    assert deepest["vertex"] == 3  # the apex encroaches the base
+
+
+def test_check3d_invalid_input_exits_2(tmp_path, capsys):
+    path = write_off(tmp_path / "open.off", CUBE_POINTS, CUBE_TRIANGLES[:-1].tolist())
+    assert main(["check3d", str(path)]) == EXIT_INVALID
+    assert "surface not closed" in capsys.readouterr().err
+
+
+def test_refine3d_converges_and_writes(low_tet, tmp_path, capsys):
+    out = tmp_path / "out.json"
+    assert main(["refine3d", str(low_tet), "-o", str(out), "--json", "--max-steiner", "500"]) == EXIT_OK
+    stats = json.loads(out.read_text())["stats"]
+    assert stats["encroached_facets"] == 0 and stats["encroached_segments"] == 0
+    assert stats["steiner_points"] > 0  # the tet is encroached, so the refinement had to add points
+    assert isinstance(stats["negative_couplings"], int)
+    assert json.loads(capsys.readouterr().out)["output"] == str(out)
+
+
+def test_refine3d_without_budget_exits_3(low_tet, tmp_path):
+    assert main(["refine3d", str(low_tet), "-o", str(tmp_path / "o.vtu"), "--max-steiner", "0"]) == \
+        EXIT_NOT_CONVERGED

@@ -1,0 +1,101 @@
+"""Voronoi control volumes of tet meshes, against values worked out by hand."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
+
+from mesh3d_shapes import CUBE_POINTS
+from nonobtuse import _core
+from nonobtuse.mesh3d import TetMesh, control_volumes3d
+from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes, tet_circumcenters, triangle_circumcenters
+
+NO_FACES = np.zeros((0, 3), dtype=np.int64)
+
+
+def tetmesh(points, tets) -> TetMesh:
+    return TetMesh(np.asarray(points, dtype=float), np.asarray(tets), NO_FACES, np.zeros(0, dtype=np.int64))
+
+
+def test_regular_tet():
+    # corners (1,1,1), (1,-1,-1), (-1,-1,1), (-1,1,-1): edge 2*sqrt(2), circumcenter 0, volume 8/3
+    # (det[(0,-2,-2), (-2,-2,0), (-2,0,-2)] = +16 > 0). For edge (0, 1) the piece is the kite with corners
+    # M = (1,0,0), the two face circumcenters (= centroids) (1/3, 1/3, -1/3), (1/3, -1/3, 1/3), and 0: twice
+    # the triangle (0, M, (1/3,1/3,-1/3)) of area |(0, 1/3, 1/3)| / 2 = sqrt(2)/6, so sqrt(2)/3, and the
+    # coupling (sqrt(2)/3) / (2 sqrt(2)) = 1/6. By symmetry every vertex gets a quarter of the volume: 2/3.
+    p = [[1, 1, 1], [1, -1, -1], [-1, -1, 1], [-1, 1, -1]]
+    cv = control_volumes3d(tetmesh(p, [[0, 1, 2, 3]]))
+    assert len(cv.edges) == 6
+    np.testing.assert_allclose(cv.dual_areas, np.sqrt(2) / 3, rtol=1e-14)
+    np.testing.assert_allclose(cv.couplings, 1 / 6, rtol=1e-14)
+    np.testing.assert_allclose(cv.volumes, 2 / 3, rtol=1e-14)
+    assert cv.negative_couplings == 0
+
+
+def test_obtuse_tet_has_a_negative_coupling():
+    # a flat-ish tet: apex (0.5, 0.5, 0.05) over the right triangle (0,0,0), (1,0,0), (0,1,0) sits nearly on
+    # the hypotenuse's side, so the circumcenter (x, y, z) is far below the base: solving |c-p|^2 equal for
+    # all four gives x = y = 0.5, z = (0.05^2 - 0.5) / (2 * 0.05) = -4.975 < 0: outside the tet, beyond the
+    # base face. The base edges' pieces then point the wrong way; the volume still sums to 1/6 * 0.05 = 1/120.
+    p = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0.5, 0.5, 0.05]]
+    cv = control_volumes3d(tetmesh(p, [[0, 1, 2, 3]]))
+    assert tet_circumcenters(*[np.array([q], dtype=float) for q in p])[0] == pytest.approx([0.5, 0.5, -4.975])
+    assert cv.negative_couplings > 0
+    assert cv.volumes.sum() == pytest.approx(1 / 120, rel=1e-12)
+
+
+def test_triangle_circumcenter_of_a_right_triangle_is_the_hypotenuse_midpoint():
+    a, b, c = (np.array([v], dtype=float) for v in ([0, 0, 0], [2, 0, 0], [0, 2, 2]))
+    # angle at a: (b-a).(c-a) = 0, right angle: circumcenter = midpoint of bc = (1, 1, 1)
+    np.testing.assert_allclose(triangle_circumcenters(a, b, c)[0], [1, 1, 1], atol=1e-15)
+
+
+# A unit cube (vertex i = (i&1, (i>>1)&1, (i>>2)&1)) split into 6 tets around the diagonal 0-7 (Kuhn), or into
+# 5 tets (the regular tet 1, 2, 4, 7 and four corner tets); orientations made positive by hand (checked
+# below).
+KUHN = [[0, 1, 3, 7], [0, 3, 2, 7], [0, 2, 6, 7], [0, 6, 4, 7], [0, 4, 5, 7], [0, 5, 1, 7]]
+FIVE = [[1, 2, 4, 7], [0, 1, 2, 4], [3, 2, 1, 7], [5, 1, 4, 7], [6, 4, 2, 7]]
+
+
+@pytest.mark.parametrize("tets", [KUHN, FIVE], ids=["six", "five"])
+def test_cube_split_into_tets(tets):
+    # All 8 corners lie on one sphere centred at (1/2, 1/2, 1/2), the circumcenter of every tet, so the
+    # clipped Voronoi cell of each corner is its octant: volume 1/8. The Voronoi face of a cube edge (length
+    # 1) inside the cube is a quarter of the bisector square: 1/2 x 1/2 = 1/4, coupling 1/4. Face and space
+    # diagonals join corners whose octants meet in an edge or a point only: dual area 0.
+    mesh = tetmesh(CUBE_POINTS, tets)
+    assert (signed_tet_volumes(CUBE_POINTS, np.array(tets)) > 0).all()
+    cv = control_volumes3d(mesh)
+    np.testing.assert_allclose(cv.volumes, 1 / 8, rtol=1e-13)
+    axis = cv.lengths == 1.0
+    assert axis.sum() == 12
+    np.testing.assert_allclose(cv.couplings[axis], 1 / 4, rtol=1e-13)
+    np.testing.assert_allclose(cv.dual_areas[~axis], 0.0, atol=1e-14)
+
+
+def test_volumes_sum_to_the_mesh_volume_on_a_delaunay_mesh():
+    pytest.importorskip("tetgen")
+    from mesh3d_shapes import CUBE_TRIANGLES
+    from nonobtuse.mesh3d import PLC, tetrahedralize
+
+    plc = PLC(CUBE_POINTS * [3.0, 2.0, 1.0], CUBE_TRIANGLES, np.arange(12))  # a 3 x 2 x 1 box
+    mesh = tetrahedralize(plc, "tetgen", switches="pq1.2a0.05AQ")
+    cv = control_volumes3d(mesh)
+    assert cv.volumes.sum() == pytest.approx(6.0, rel=1e-12)
+    assert len(mesh.tets) > 100  # volume 6 in tets of at most 0.05
+
+
+@settings(derandomize=True, deadline=None, max_examples=30)
+@given(st.lists(st.tuples(*[st.integers(-50, 50)] * 3), min_size=5, max_size=40, unique=True))
+def test_cell_volumes_sum_to_the_hull_volume(coords):
+    # On the Delaunay tetrahedralization of any point set (integer coordinates, so volumes are exact in
+    # floating point up to rounding of the circumcenters), the pyramids over the dual pieces tile each tet:
+    # the cell volumes sum to the volume of the convex hull, whatever the signs of the pieces.
+    points = np.array(coords, dtype=float)
+    tets = _core.delaunay_tetrahedra(points)
+    assume(len(tets) > 0)
+    cv = control_volumes3d(tetmesh(points, tets))
+    total = signed_tet_volumes(points, tets).sum()
+    assert cv.volumes.sum() == pytest.approx(total, rel=1e-9)

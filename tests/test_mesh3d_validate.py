@@ -1,0 +1,161 @@
+"""Every kind of invalid 3D input gives an InvalidInputError naming the problem and where."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from mesh3d_shapes import (
+    CUBE_POINTS,
+    CUBE_TRIANGLES,
+    TET_POINTS,
+    TET_TRIANGLES,
+    two_tets_touching_at_a_vertex,
+    write_off,
+)
+from nonobtuse.errors import InvalidInputError
+from nonobtuse.mesh3d import load_plc
+
+
+def load_off(tmp_path, points, faces, **kw):
+    path = write_off(tmp_path / "x.off", np.asarray(points, dtype=float), np.asarray(faces).tolist())
+    return load_plc(path, **kw)
+
+
+def test_empty_file(tmp_path):
+    (tmp_path / "e.off").write_text("  \n")
+    with pytest.raises(InvalidInputError, match="e.off: the file is empty"):
+        load_plc(tmp_path / "e.off")
+
+
+def test_no_faces(tmp_path):
+    with pytest.raises(InvalidInputError, match="no facet"):
+        load_off(tmp_path, TET_POINTS, np.zeros((0, 3), dtype=int))
+
+
+@pytest.mark.parametrize("name, content, message", [
+    ("w.off", "PLY\n3 1 0\n", "not an OFF file"),
+    ("w.off", "OFF\n1 0 0\n0 zero 0\n", "w.off:3: vertex 0 must be a number, found 'zero'"),
+    ("w.stl", "hello world, this is not an STL file" * 3, "not an STL file"),
+    ("w.ply", "OFF\n", "not a PLY file"),
+    ("w.xyz", "1 2 3\n", "unknown 3D format"),
+    ("w.off", b"\xff\xfe\x00OFF", "w.off: cannot read the file"),
+])
+def test_wrong_format(tmp_path, name, content, message):
+    path = tmp_path / name
+    path.write_bytes(content if isinstance(content, bytes) else content.encode())
+    with pytest.raises(InvalidInputError, match=message):
+        load_plc(path)
+
+
+def test_truncated_file_names_what_is_missing(tmp_path):
+    (tmp_path / "t.off").write_text("OFF\n4 4 0\n0 0 0\n1 0 0\n")
+    with pytest.raises(InvalidInputError, match="t.off:4: the file ends early: expected vertex 2"):
+        load_plc(tmp_path / "t.off")
+
+
+def test_face_index_out_of_range(tmp_path):
+    with pytest.raises(InvalidInputError, match="refers to vertex 9, but there are 4 vertices"):
+        load_off(tmp_path, TET_POINTS, [[0, 1, 9], [0, 1, 2], [1, 2, 3], [0, 2, 3]])
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf])
+def test_nan_and_inf(tmp_path, bad):
+    pts = TET_POINTS.copy()
+    pts[2, 1] = bad
+    with pytest.raises(InvalidInputError, match="vertex 2 has a NaN or infinite coordinate"):
+        load_off(tmp_path, pts, TET_TRIANGLES)
+
+
+def test_not_closed_names_a_boundary_edge(tmp_path):
+    # the tet without its face (1, 2, 3): the three edges of that face are boundary edges
+    with pytest.raises(InvalidInputError, match=r"not closed: 3 boundary edges, e\.g\. edge \(1, 2\)"):
+        load_off(tmp_path, TET_POINTS, TET_TRIANGLES[:3])
+
+
+def test_non_manifold_edge(tmp_path):
+    # a tet plus a fin (0, 1, 4) hanging off its edge (0, 1), closed into a second tet (0, 1, 4, 5) so that
+    # no edge is open: edge (0, 1) then lies in 4 faces
+    pts = np.concatenate([TET_POINTS, [[0.5, -1, -1], [0.5, -2, 1]]])
+    second = np.array([[0, 1, 4], [0, 5, 1], [0, 4, 5], [1, 5, 4]])
+    with pytest.raises(InvalidInputError, match=r"non-manifold edge \(0, 1\) shared by 4 faces"):
+        load_off(tmp_path, pts, np.concatenate([TET_TRIANGLES, second]))
+
+
+def test_non_manifold_vertex(tmp_path):
+    pts, tris = two_tets_touching_at_a_vertex()
+    with pytest.raises(InvalidInputError, match=r"non-manifold vertex 0 \(0, 0, 0\).*2 separate fans"):
+        load_off(tmp_path, pts, tris)
+
+
+def test_inconsistent_orientation_and_its_fix(tmp_path):
+    tris = CUBE_TRIANGLES.copy()
+    tris[3] = tris[3][::-1]
+    with pytest.raises(InvalidInputError, match="inconsistent orientation.*fix_orientation=True"):
+        load_off(tmp_path, CUBE_POINTS, tris)
+    fixed = load_off(tmp_path, CUBE_POINTS, tris, fix_orientation=True)
+    assert np.array_equal(fixed.triangles, CUBE_TRIANGLES)  # face 3 flipped back, the rest already outward
+
+
+def test_fix_orientation_makes_an_inward_surface_outward(tmp_path):
+    fixed = load_off(tmp_path, CUBE_POINTS, CUBE_TRIANGLES[:, ::-1], fix_orientation=True)
+    assert np.array_equal(fixed.triangles, CUBE_TRIANGLES)  # every face reversed back
+
+
+def test_degenerate_face_repeated_vertex(tmp_path):
+    with pytest.raises(InvalidInputError, match=r"degenerate face 1 \[0, 0, 3\]: a repeated vertex"):
+        load_off(tmp_path, TET_POINTS, [[0, 2, 1], [0, 0, 3], [0, 3, 2], [1, 2, 3]])
+
+
+def test_degenerate_face_exactly_collinear(tmp_path):
+    # a flat "tet": the apex (0.5, 0, 0) lies on edge (0, 1) exactly, so faces (0, 1, 3) etc. have zero area
+    pts = TET_POINTS.copy()
+    pts[3] = [0.5, 0, 0]
+    with pytest.raises(InvalidInputError, match=r"degenerate face 1 \[0, 1, 3\]: its vertices are exactly "
+                                                r"collinear"):
+        load_off(tmp_path, pts, TET_TRIANGLES)
+
+
+def test_nearly_collinear_face_is_not_degenerate(tmp_path):
+    # apex 2^-30 off the line: exact arithmetic sees a (thin) triangle; the input is a valid, thin tet
+    pts = TET_POINTS.copy()
+    pts[3] = [0.5, 2.0**-30, 2.0**-30]
+    assert len(load_off(tmp_path, pts, TET_TRIANGLES).triangles) == 4
+
+
+def test_duplicate_face(tmp_path):
+    tris = np.concatenate([TET_TRIANGLES, [[2, 1, 0]]])  # face 0 again, rotated and reversed
+    with pytest.raises(InvalidInputError, match=r"duplicate face: faces 0 and 4"):
+        load_off(tmp_path, TET_POINTS, tris)
+
+
+def test_self_intersection_names_two_faces(tmp_path):
+    # two tets; the second is the first shifted by (0.2, 0.2, 0.2): their surfaces cross
+    pts = np.concatenate([TET_POINTS, TET_POINTS + 0.2])
+    with pytest.raises(InvalidInputError, match=r"self-intersection: faces \d+ \[.*\] and \d+ \[.*\] "
+                                                r"intersect"):
+        load_off(tmp_path, pts, np.concatenate([TET_TRIANGLES, TET_TRIANGLES + 4]))
+
+
+def test_disjoint_shells_are_valid(tmp_path):
+    # the same two tets, the second shifted by 2: no intersection
+    pts = np.concatenate([TET_POINTS, TET_POINTS + 2.0])
+    plc = load_off(tmp_path, pts, np.concatenate([TET_TRIANGLES, TET_TRIANGLES + 4]))
+    assert len(plc.segments) == 12
+
+
+def test_multi_region_poly_with_an_internal_facet_is_accepted(tmp_path):
+    # two unit cubes stacked along z sharing the internal facet z = 1: its edges lie in 3 faces, legitimate
+    # in a .poly with two regions
+    pts = [[x, y, z] for z in (0, 1, 2) for y in (0, 1) for x in (0, 1)]
+    sq = lambda z, a, b, c, d: f"1\n4 {4 * z + a} {4 * z + b} {4 * z + c} {4 * z + d}"  # noqa: E731
+    facets = [sq(0, 0, 1, 3, 2), sq(1, 0, 1, 3, 2), sq(2, 0, 1, 3, 2)]
+    for z in (0, 1):
+        lo, hi = 4 * z, 4 * z + 4
+        for a, b in ((0, 1), (1, 3), (3, 2), (2, 0)):
+            facets.append(f"1\n4 {lo + a} {lo + b} {hi + b} {hi + a}")
+    text = f"{len(pts)} 3 0 0\n" + "".join(f"{i} {x} {y} {z}\n" for i, (x, y, z) in enumerate(pts))
+    text += f"{len(facets)} 0\n" + "\n".join(facets) + "\n0\n2\n1 0.5 0.5 0.5 1\n2 0.5 0.5 1.5 2\n"
+    (tmp_path / "two.poly").write_text(text)
+    plc = load_plc(tmp_path / "two.poly")
+    assert len(plc.triangles) == 22  # 11 squares

@@ -1,0 +1,105 @@
+"""nonobtuse.refine: properties on random polygons, baselines, errors. The paper's figures are C++ tests
+(cpp/tests/refine2d_test.cpp); the corpus is tests/test_refine_corpus.py."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+import nonobtuse
+from nonobtuse import Domain, InvalidInputError
+from refine_helpers import obtuse_boundary_sides
+
+STRATEGIES = ["greedy", "project-flip", "projection"]
+
+
+def convex_point_set(seed: int, n_hull: int, n_inner: int) -> Domain:
+    """Integer points: n_hull on a circle of radius 1000 (rounded), n_inner inside radius ~900; the domain is
+    their convex hull."""
+    rng = np.random.default_rng(seed)
+    a = np.sort(rng.uniform(0, 2 * np.pi, n_hull))
+    r, b = np.sqrt(rng.uniform(0, 0.8, n_inner)), rng.uniform(0, 2 * np.pi, n_inner)
+    pts = np.r_[np.c_[np.cos(a), np.sin(a)], np.c_[r * np.cos(b), r * np.sin(b)]]
+    return Domain(points=np.unique(np.round(1000 * pts), axis=0), convex_hull=True)
+
+
+def star_with_hole(seed: int, n_outer: int, n_inner: int) -> Domain:
+    """A star-shaped (generally non-convex) polygon with vertex radii in [500, 1000] at sorted angles, a square
+    hole [-100, 100]^2, and n_inner points at radius in (150, 450): inside the polygon (which contains the disk of
+    radius 500 cos(pi / 8) > 460 as n_outer >= 8) and outside the hole (whose corners are at radius 141.5)."""
+    rng = np.random.default_rng(seed)
+    a = np.sort(rng.uniform(0, 2 * np.pi, n_outer))
+    rad = rng.uniform(500, 1000, n_outer)
+    outer = np.round(np.c_[rad * np.cos(a), rad * np.sin(a)])
+    hole = np.array([[-100, -100], [100, -100], [100, 100], [-100, 100]], dtype=float)
+    r, b = rng.uniform(150, 450, n_inner), rng.uniform(0, 2 * np.pi, n_inner)
+    inner = np.unique(np.round(np.c_[r * np.cos(b), r * np.sin(b)]), axis=0)
+    pts = np.r_[outer, hole, inner]
+    n = len(outer)
+    seg = [(i, (i + 1) % n) for i in range(n)] + [(n + i, n + (i + 1) % 4) for i in range(4)]
+    return Domain(points=pts, segments=np.array(seg), holes=np.array([[0.0, 0.0]]))
+
+
+def check_result(res: nonobtuse.RefineResult, domain: Domain) -> None:
+    s = res.stats
+    assert res.status == "converged"
+    assert s["obtuse_boundary_triangles"] == 0
+    assert obtuse_boundary_sides(res.mesh) == 0  # exact, in rationals, independent of the C++ certificate
+    assert s["steiner_points"] == len(res.mesh.points) - len(domain.points)
+    assert s["steiner_points"] == sum(e["steiner_points"] for e in s["edges"])
+    assert s["lower_bound"] == sum(e["lower_bound"] for e in s["edges"])
+    assert s["steiner_points"] >= s["lower_bound"]  # the bound holds for every strategy
+    np.testing.assert_array_equal(res.mesh.points[: len(domain.points)], domain.points)
+
+
+@settings(derandomize=True, deadline=None, max_examples=40)
+@given(st.integers(0, 2**31), st.integers(3, 12), st.integers(0, 30))
+def test_convex_point_sets_reach_the_bound_or_theorem_3(seed, n_hull, n_inner):
+    domain = convex_point_set(seed, n_hull, n_inner)
+    res = nonobtuse.refine(domain)
+    check_result(res, domain)
+    s = res.stats
+    # optimal is True exactly when the bound is attained, or, without interior points, by Theorem 3.
+    no_inner = all(e["edge"][0] < len(domain.points) for e in s["edges"]) and len(s["edges"]) == len(
+        domain.points
+    )
+    assert s["optimal"] == (True if s["steiner_points"] == s["lower_bound"] or no_inner else None)
+
+
+@settings(derandomize=True, deadline=None, max_examples=30)
+@given(st.integers(0, 2**31), st.integers(8, 30), st.integers(0, 40), st.sampled_from(STRATEGIES))
+def test_nonconvex_polygons_with_holes_verify_exactly(seed, n_outer, n_inner, strategy):
+    domain = star_with_hole(seed, n_outer, n_inner)
+    res = nonobtuse.refine(domain, strategy=strategy)
+    check_result(res, domain)
+
+
+@pytest.mark.parametrize("strategy", STRATEGIES)
+def test_every_strategy_verifies_on_a_point_set(strategy):
+    domain = convex_point_set(7, 10, 60)
+    check_result(nonobtuse.refine(domain, strategy=strategy), domain)
+
+
+def test_budget_exhausted_is_a_status():
+    domain = convex_point_set(3, 8, 40)
+    full = nonobtuse.refine(domain)
+    assert full.stats["steiner_points"] >= 2  # so that a budget of 1 cannot suffice
+    res = nonobtuse.refine(domain, max_steiner=1)
+    assert res.status == "budget_exhausted" and not res.converged
+    assert res.stats["steiner_points"] == 1 and res.stats["obtuse_boundary_triangles"] > 0
+    assert obtuse_boundary_sides(res.mesh) == res.stats["obtuse_boundary_triangles"]
+
+
+def test_deterministic():
+    domain = star_with_hole(11, 20, 30)
+    a, b = nonobtuse.refine(domain), nonobtuse.refine(domain)
+    np.testing.assert_array_equal(a.mesh.points, b.mesh.points)
+    np.testing.assert_array_equal(a.mesh.triangles, b.mesh.triangles)
+
+
+@pytest.mark.parametrize("kwargs", [{"strategy": "midpoint"}, {"max_steiner": -1}, {"max_steiner": 1.5}])
+def test_bad_options_are_invalid_input(kwargs):
+    with pytest.raises(InvalidInputError):
+        nonobtuse.refine(convex_point_set(1, 5, 5), **kwargs)
