@@ -74,7 +74,7 @@ class Refiner {
   // Splits `sub` if it still exists and (unless `always`) is still encroached by a vertex.
   std::optional<Stop> split(const Key& sub, bool always, bool* inserted);
   // Splits subfacet f (a face of facet f.facet's triangulation, or only a triangle on it when !require_face).
-  std::optional<Stop> split_subfacet(const SubfacetRef& f, bool require_face, bool* inserted, bool* split_segment);
+  std::optional<Stop> split_subfacet(const SubfacetRef& f, bool require_face, bool* inserted);
   std::optional<Stop> too_short(const P3& p, const P3& q) const;
   std::optional<Stop> too_close(const P3& p) const;
   void inserted(int m);
@@ -203,8 +203,7 @@ std::optional<Key> first_crossed_subsegment(const Facet& facet, const Q2& g, con
 }
 
 // Splits subfacet f at its circumcenter, or splits the subsegments that point encroaches or lies beyond.
-std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_face, bool* inserted_point,
-                                            bool* split_segment) {
+std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_face, bool* inserted_point) {
   Facet& facet = *s_.facets[r.facet];
   FacetCDT::Face_handle fh;
   auto va = facet.vertex.at(r.a), vb = facet.vertex.at(r.b), vc = facet.vertex.at(r.c);
@@ -235,7 +234,6 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
   }
   if (!hit.empty()) {
     std::sort(hit.begin(), hit.end());
-    *split_segment = true;
     for (const Key& sub : hit)
       if (auto stop = split(sub, true, inserted_point)) return stop;
     return std::nullopt;
@@ -271,10 +269,8 @@ std::optional<Stop> Refiner::run() {
     auto subfacets = encroached_subfacets();
     last_encroached_facets_ = static_cast<long>(subfacets.size());
     if (subfacets.empty()) return std::nullopt;
-    for (const auto& r : subfacets) {
-      bool split_segment = false;
-      if (auto stop = split_subfacet(r, true, &progress, &split_segment)) return stop;
-    }
+    for (const auto& r : subfacets)
+      if (auto stop = split_subfacet(r, true, &progress)) return stop;
     if (!progress)  // every encroached subfacet's circumcenter was refused: the same state would repeat forever
       return Stop{Refine3Status::Stalled, "encroached subfacets remain whose circumcenters cannot be inserted"};
   }
@@ -286,9 +282,7 @@ std::optional<Stop> Refiner::repair(const Restricted& mesh, const std::vector<Ke
     if (auto stop = split(segments[e.index], false, progress)) return stop;
   for (const auto& e : report.faces) {
     auto [a, b, c] = mesh.boundary_faces[e.index];
-    bool split_segment = false;
-    if (auto stop = split_subfacet(canonical({mesh.face_facets[e.index], a, b, c}), false, progress, &split_segment))
-      return stop;
+    if (auto stop = split_subfacet(canonical({mesh.face_facets[e.index], a, b, c}), false, progress)) return stop;
   }
   return std::nullopt;
 }
