@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import time
 from pathlib import Path
 
 import numpy as np
@@ -9,6 +10,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from experiments.plc_families import make_plc
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import check_gabriel, refine_gabriel
 from nonobtuse.mesh3d.plc import PLC, TetMesh
@@ -72,8 +74,13 @@ def assert_result_consistent(res, plc: PLC) -> None:
     assert res.stats["steiner_points"] == len(mesh.points) - len(plc.points)
     again = check_gabriel(mesh)  # the certificate is recomputed independently of the refinement
     assert (res.status == "converged") == again.ok
-    assert res.stats["encroached_facets"] == len(again.faces)
-    assert res.stats["encroached_segments"] == len(again.segments)
+    if res.stats["unchecked_faces"] or res.stats["unchecked_segments"]:  # time_limit cut the check short
+        assert res.status == "budget_exhausted"
+        assert res.stats["encroached_facets"] <= len(again.faces)
+        assert res.stats["encroached_segments"] <= len(again.segments)
+    else:
+        assert res.stats["encroached_facets"] == len(again.faces)
+        assert res.stats["encroached_segments"] == len(again.segments)
 
 
 # ---- check_gabriel
@@ -229,6 +236,19 @@ def test_budget_and_min_length_are_statuses():
     # Edge (apex, base vertex) against the base plane: atan(0.1 / 1) = 5.71 degrees.
     assert smallest["kind"] == "segment-facet"
     assert smallest["degrees"] == pytest.approx(np.degrees(np.arctan(0.1)))
+
+
+def test_time_limit_bounds_refinement_and_check():
+    # fan k=12 at 3 degrees, midpoint split: the refinement stalls after ~1 s with ~9,600 Steiner points crowded
+    # at the axis; the exact check of that state alone took 44 s before time_limit covered it (60 s in all).
+    plc = make_plc("fan", 3.0, 12)
+    start = time.perf_counter()
+    res = refine_gabriel(plc, split="midpoint", time_limit=0.3)
+    elapsed = time.perf_counter() - start
+    assert elapsed < 0.3 + 5.0  # slack: building the final Delaunay mesh (not time-limited) on a busy machine
+    assert res.status == "budget_exhausted"
+    assert "time_limit" in res.stats["diagnosis"]["stop_reason"]
+    assert_result_consistent(res, plc)
 
 
 def test_split_rules_are_deterministic():

@@ -43,6 +43,8 @@ py::dict report_to_dict(const GabrielReport& r) {
     d[(std::string(name) + "_depth").c_str()] = from_vector(depth);
   }
   d["candidates"] = r.candidates;
+  d["unchecked_faces"] = r.unchecked_faces;
+  d["unchecked_segments"] = r.unchecked_segments;
   return d;
 }
 

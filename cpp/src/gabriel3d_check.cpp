@@ -201,16 +201,8 @@ Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex&
   return {};
 }
 
-}  // namespace nonobtuse::gabriel3d
-
-namespace nonobtuse {
-
-GabrielReport check_gabriel(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
-                            const std::vector<Segment>& segments) {
-  using namespace gabriel3d;
-  std::vector<P3> pts;
-  pts.reserve(points.size());
-  for (const auto& p : points) pts.push_back(to_cgal(p));
+GabrielReport check_gabriel_until(const std::vector<P3>& pts, const std::vector<Triangle>& faces,
+                                  const std::vector<Segment>& segments, const std::function<bool()>& out_of_time) {
   auto check_index = [&](int v, const char* what, std::size_t row) {
     if (v < 0 || static_cast<std::size_t>(v) >= pts.size())
       throw InvalidInput(std::string(what) + " " + std::to_string(row) + " refers to point " + std::to_string(v) +
@@ -231,14 +223,37 @@ GabrielReport check_gabriel(const std::vector<Point3>& points, const std::vector
   PointIndex index(pts);
   GabrielReport report;
   for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (out_of_time()) {
+      report.unchecked_faces = faces.size() - f;
+      report.unchecked_segments = segments.size();
+      return report;
+    }
     Encroachment e = deepest_encroacher(pts, index, faces[f][0], faces[f][1], faces[f][2], &report.candidates);
     if (e.vertex >= 0) report.faces.push_back({static_cast<int>(f), e.vertex, e.depth});
   }
   for (std::size_t s = 0; s < segments.size(); ++s) {
+    if (out_of_time()) {
+      report.unchecked_segments = segments.size() - s;
+      return report;
+    }
     Encroachment e = deepest_encroacher(pts, index, segments[s][0], segments[s][1], -1, &report.candidates);
     if (e.vertex >= 0) report.segments.push_back({static_cast<int>(s), e.vertex, e.depth});
   }
   return report;
 }
 
+}  // namespace nonobtuse::gabriel3d
+
+namespace nonobtuse {
+
+GabrielReport check_gabriel(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+                            const std::vector<Segment>& segments) {
+  using namespace gabriel3d;
+  std::vector<P3> pts;
+  pts.reserve(points.size());
+  for (const auto& p : points) pts.push_back(to_cgal(p));
+  return check_gabriel_until(pts, faces, segments, [] { return false; });
+}
+
 }  // namespace nonobtuse
+

@@ -95,6 +95,11 @@ void PointIndex::for_each_in(const SearchBall& ball, Visit&& visit) const {
 // own vertices, that is deepest by floating-point depth among those the exact predicate confirms (exact ties in
 // depth are vanishingly rare and only change which encroacher is named); vertex == -1 when the sphere is empty.
 // Points for which ignore(i) is true are not considered.
+// check_gabriel on points already in the kernel's type. Stops when out_of_time() (asked before each face and
+// segment) returns true: the rows not reached are counted as unchecked_faces / unchecked_segments.
+GabrielReport check_gabriel_until(const std::vector<P3>& points, const std::vector<Triangle>& faces,
+                                  const std::vector<Segment>& segments, const std::function<bool()>& out_of_time);
+
 Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex& index, int a, int b, int c,
                                 std::size_t* candidates = nullptr, const std::function<bool(int)>& ignore = {});
 

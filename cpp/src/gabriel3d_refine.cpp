@@ -45,11 +45,11 @@ class Refiner {
   double seconds() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }
+  bool out_of_time() const { return seconds() > o_.time_limit; }
   long steiner_on_segments = 0, steiner_on_facets = 0;
 
  private:
   std::optional<Stop> budget_left() const;
-  bool out_of_time() const { return seconds() > o_.time_limit; }
   std::vector<Key> encroached_subsegments() const;
   std::vector<SubfacetRef> encroached_subfacets() const;
   bool encroached(int a, int b, int c) const {
@@ -269,8 +269,10 @@ std::optional<Stop> Refiner::run() {
     auto subfacets = encroached_subfacets();
     last_encroached_facets_ = static_cast<long>(subfacets.size());
     if (subfacets.empty()) return std::nullopt;
-    for (const auto& r : subfacets)
+    for (const auto& r : subfacets) {
+      if (auto stop = budget_left()) return stop;  // refused circumcenters insert nothing but cost a facet walk
       if (auto stop = split_subfacet(r, true, &progress)) return stop;
+    }
     if (!progress)  // every encroached subfacet's circumcenter was refused: the same state would repeat forever
       return Stop{Refine3Status::Stalled, "encroached subfacets remain whose circumcenters cannot be inserted"};
   }
@@ -281,6 +283,7 @@ std::optional<Stop> Refiner::repair(const Restricted& mesh, const std::vector<Ke
   for (const auto& e : report.segments)
     if (auto stop = split(segments[e.index], false, progress)) return stop;
   for (const auto& e : report.faces) {
+    if (auto stop = budget_left()) return stop;
     auto [a, b, c] = mesh.boundary_faces[e.index];
     if (auto stop = split_subfacet(canonical({mesh.face_facets[e.index], a, b, c}), false, progress)) return stop;
   }
@@ -334,8 +337,14 @@ Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool i
       segments.push_back(sub);
       out.segments.push_back({sub.first, sub.second});
     }
-    out.certificate = check_gabriel(out.points, mesh.boundary_faces, out.segments);
-    clean = out.certificate.faces.empty() && out.certificate.segments.empty();
+    // The check stops at time_limit too: a certificate with unchecked rows is never clean.
+    out.certificate = check_gabriel_until(s.points, mesh.boundary_faces, out.segments,
+                                          [&] { return refiner.out_of_time(); });
+    bool complete = out.certificate.unchecked_faces == 0 && out.certificate.unchecked_segments == 0;
+    clean = complete && out.certificate.faces.empty() && out.certificate.segments.empty();
+    if (!complete && !stop)
+      stop = Stop{Refine3Status::BudgetExhausted, "time_limit (" + std::to_string(options.time_limit) +
+                                                      " s) reached during the exact check of the result"};
     if (stop || clean) break;
     bool progress = false;
     stop = refiner.repair(mesh, segments, out.certificate, &progress);
@@ -367,9 +376,10 @@ Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool i
 // First without the frame-rounding encroachers (fewest Steiner points). When that stalls (the Delaunay faces
 // that cover a facet then sit on rounding-level slivers whose circumcenters coincide with existing vertices),
 // once more from the input counting them: their extra points usually break the near-cospherical ties.
+// The second attempt only runs while time_limit has time left (else it would return the bare input).
 Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options) {
   Refine3Result first = refine_once(plc, options, true);
-  if (first.status != Refine3Status::Stalled) return first;
+  if (first.status != Refine3Status::Stalled || first.seconds >= options.time_limit) return first;
   Refine3Options rest = options;
   rest.time_limit = std::max(0.0, options.time_limit - first.seconds);
   Refine3Result second = refine_once(plc, rest, false);

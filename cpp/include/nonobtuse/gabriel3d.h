@@ -30,6 +30,10 @@ struct GabrielReport {
   std::vector<Encroachment> faces;
   std::vector<Encroachment> segments;
   std::size_t candidates = 0;  // (simplex, vertex) pairs the float search passed to the exact predicate
+  // Faces and segments not checked because refine_gabriel's time_limit ran out during its check (the last rows);
+  // always 0 from check_gabriel.
+  std::size_t unchecked_faces = 0;
+  std::size_t unchecked_segments = 0;
 };
 
 // For every face (a, b, c): is some point strictly inside its diametral sphere (the smallest sphere through a, b, c,
