@@ -251,6 +251,34 @@ def test_time_limit_bounds_refinement_and_check():
     assert_result_consistent(res, plc)
 
 
+def area_vectors(points: np.ndarray, triangles: np.ndarray, ids: np.ndarray) -> dict[int, np.ndarray]:
+    """Sum of the area vectors (half cross products) of the triangles of each facet id."""
+    p = points[triangles]
+    a = 0.5 * np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    return {int(i): a[ids == i].sum(axis=0) for i in np.unique(ids)}
+
+
+def test_budget_exhausted_result_keeps_the_subfacets():
+    # fan k=3 at 5 degrees stopped after 5 Steiner points: the Delaunay tetrahedralization crosses an encroached
+    # subfacet, the flood fill from outside leaks into every region and no tet is left. The result used to carry
+    # no boundary face at all (so "0 encroached facets" certified nothing).
+    plc = make_plc("fan", 5.0, 3)
+    res = refine_gabriel(plc, max_steiner=5)
+    assert res.status == "budget_exhausted"
+    assert res.stats["volume_mesh"].startswith("not built")
+    assert len(res.mesh.tets) == 0
+    # The subfacets tile each facet with the input's orientation: per facet, the same summed area vector as the
+    # input triangles (a planar facet's area vector is additive over any tiling).
+    got = area_vectors(res.mesh.points, res.mesh.boundary_faces, res.mesh.face_markers)
+    want = area_vectors(plc.points, plc.triangles, plc.facet_ids)
+    assert got.keys() == want.keys()
+    for f in want:
+        np.testing.assert_allclose(got[f], want[f], rtol=1e-9, atol=1e-12)
+    # A subfacet that is no Delaunay face has a vertex inside its diametral sphere: some must be encroached.
+    assert res.stats["encroached_facets"] > 0
+    assert_result_consistent(res, plc)
+
+
 def test_split_rules_are_deterministic():
     plc = flat_tetrahedron()
     for split in ("shells", "midpoint"):

@@ -78,6 +78,7 @@ py::dict result_to_dict(const Refine3Result& r) {
   d["smallest_subsegment"] = r.smallest_subsegment;
   d["certificate"] = report_to_dict(r.certificate);
   d["diagnosis"] = diagnosis_to_dict(r.diagnosis);
+  d["volume_mesh"] = r.volume_mesh;
   return d;
 }
 

@@ -352,6 +352,23 @@ Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool i
       stop = Stop{Refine3Status::Stalled, "encroached faces of the Delaunay mesh remain but none could be split"};
     if (stop) break;
   }
+  if (!clean) {
+    // A stop can leave encroached subfacets that are no Delaunay faces: the flood fill of restrict_delaunay then
+    // leaks through them and leaves facets without faces (often no tets at all). Return the subfacets instead.
+    std::vector<bool> has_face(s.facets.size(), false);
+    for (int f : mesh.face_facets) has_face[f] = true;
+    long bare = std::count(has_face.begin(), has_face.end(), false);
+    if (bare > 0) {
+      long collinear = 0;
+      mesh = subfacet_boundary(s, &collinear);
+      out.certificate = check_gabriel_until(s.points, mesh.boundary_faces, out.segments,
+                                            [&] { return refiner.out_of_time(); });
+      out.volume_mesh = "not built: the Delaunay tetrahedralization does not conform to " + std::to_string(bare) +
+                        " of " + std::to_string(s.facets.size()) + " facets; boundary_faces are the subfacets";
+      if (collinear > 0)
+        out.volume_mesh += " (" + std::to_string(collinear) + " collinear after rounding left out)";
+    }
+  }
   out.tets = std::move(mesh.tets);
   out.boundary_faces = std::move(mesh.boundary_faces);
   out.face_markers = std::move(mesh.face_markers);

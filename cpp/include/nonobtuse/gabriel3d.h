@@ -107,6 +107,9 @@ struct Refine3Result {
   double seconds = 0.0;
   double smallest_subsegment = 0.0;
   GabrielReport certificate;  // check_gabriel on (points, boundary_faces, segments) as returned
+  // "built", or why tets is empty: when a stop leaves the Delaunay tetrahedralization not conforming to some facet
+  // (its interior leaks out), boundary_faces are the subfacets instead (oriented like the input's triangles).
+  std::string volume_mesh = "built";
   Refine3Diagnosis diagnosis;
 };
 

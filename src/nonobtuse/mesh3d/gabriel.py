@@ -93,7 +93,9 @@ class Gabriel3DResult:
             "min_length_reached" or "stalled" (no split could make progress).
     stats:  steiner_points, steiner_on_segments, steiner_on_facets, encroached_facets, encroached_segments
             (the certificate of mesh as returned), unchecked_faces, unchecked_segments (rows the certificate
-            did not reach before time_limit; then status is "budget_exhausted"), smallest_subsegment, seconds,
+            did not reach before time_limit; then status is "budget_exhausted"), volume_mesh ("built", or why
+            mesh.tets is empty: a stop left the Delaunay mesh not conforming to some facet; boundary_faces are
+            then the subfacets, oriented like the input triangles), smallest_subsegment, seconds,
             diagnosis (smallest input angles with kind/degrees/vertices/facets, Steiner points per input vertex
             and per input segment, stop_reason).
     report: the GabrielReport of mesh.
@@ -187,6 +189,7 @@ def refine_gabriel(
         "unchecked_faces": d["certificate"]["unchecked_faces"],
         "unchecked_segments": d["certificate"]["unchecked_segments"],
         "smallest_subsegment": d["smallest_subsegment"],
+        "volume_mesh": d["volume_mesh"],
         "seconds": d["seconds"],
         "diagnosis": d["diagnosis"],
     }
