@@ -321,13 +321,14 @@ Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool i
   out.diagnosis.smallest_angles = smallest_input_angles(s);
   Refiner refiner(s, options, ignore_frame_artifacts);
   // Refine the subfacets, restrict the Delaunay tetrahedralization, check it exactly; where its boundary faces
-  // differ from the subfacets (cospherical points) and are encroached, split those too and start over.
+  // differ from the subfacets (cospherical points) and are encroached, split those too and start over. After a
+  // stop, the mesh is rebuilt once more so that it shows every point inserted (repair() may stop half-way).
   std::optional<Stop> stop;
   Restricted mesh;
   std::vector<Key> segments;
   bool clean = false;
   for (;;) {
-    stop = refiner.run();
+    if (!stop) stop = refiner.run();
     mesh = restrict_delaunay(s, plc);
     out.points.clear();
     for (const auto& p : s.points) out.points.push_back(from_cgal(p));
@@ -336,6 +337,21 @@ Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool i
     for (const auto& [sub, parent] : s.subsegments) {
       segments.push_back(sub);
       out.segments.push_back({sub.first, sub.second});
+    }
+    if (stop) {
+      // A stop can leave encroached subfacets that are no Delaunay faces: the flood fill of restrict_delaunay
+      // then leaks through them and leaves facets without faces (often no tets at all). Return the subfacets.
+      std::vector<bool> has_face(s.facets.size(), false);
+      for (int f : mesh.face_facets) has_face[f] = true;
+      long bare = std::count(has_face.begin(), has_face.end(), false);
+      if (bare > 0) {
+        long collinear = 0;
+        mesh = subfacet_boundary(s, &collinear);
+        out.volume_mesh = "not built: the Delaunay tetrahedralization does not conform to " + std::to_string(bare) +
+                          " of " + std::to_string(s.facets.size()) + " facets; boundary_faces are the subfacets";
+        if (collinear > 0)
+          out.volume_mesh += " (" + std::to_string(collinear) + " collinear after rounding left out)";
+      }
     }
     // The check stops at time_limit too: a certificate with unchecked rows is never clean.
     out.certificate = check_gabriel_until(s.points, mesh.boundary_faces, out.segments,
@@ -350,24 +366,6 @@ Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool i
     stop = refiner.repair(mesh, segments, out.certificate, &progress);
     if (!stop && !progress)
       stop = Stop{Refine3Status::Stalled, "encroached faces of the Delaunay mesh remain but none could be split"};
-    if (stop) break;
-  }
-  if (!clean) {
-    // A stop can leave encroached subfacets that are no Delaunay faces: the flood fill of restrict_delaunay then
-    // leaks through them and leaves facets without faces (often no tets at all). Return the subfacets instead.
-    std::vector<bool> has_face(s.facets.size(), false);
-    for (int f : mesh.face_facets) has_face[f] = true;
-    long bare = std::count(has_face.begin(), has_face.end(), false);
-    if (bare > 0) {
-      long collinear = 0;
-      mesh = subfacet_boundary(s, &collinear);
-      out.certificate = check_gabriel_until(s.points, mesh.boundary_faces, out.segments,
-                                            [&] { return refiner.out_of_time(); });
-      out.volume_mesh = "not built: the Delaunay tetrahedralization does not conform to " + std::to_string(bare) +
-                        " of " + std::to_string(s.facets.size()) + " facets; boundary_faces are the subfacets";
-      if (collinear > 0)
-        out.volume_mesh += " (" + std::to_string(collinear) + " collinear after rounding left out)";
-    }
   }
   out.tets = std::move(mesh.tets);
   out.boundary_faces = std::move(mesh.boundary_faces);
