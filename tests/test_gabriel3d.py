@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
 import time
 from pathlib import Path
 
@@ -277,6 +280,24 @@ def test_budget_exhausted_result_keeps_the_subfacets():
     # A subfacet that is no Delaunay face has a vertex inside its diametral sphere: some must be encroached.
     assert res.stats["encroached_facets"] > 0
     assert_result_consistent(res, plc)
+
+
+@pytest.mark.parametrize("theta", [14.0, 16.0, 22.0])
+def test_fan_midpoint_does_not_crash(theta):
+    # Killed the process with SIGFPE on main 1a747d5: a needle subfacet's floating-point circumcenter was NaN and
+    # GMP raises SIGFPE when the facet's exact triangulation reads a NaN. In a subprocess so that a crash fails
+    # this test instead of killing pytest; a small budget keeps it short.
+    code = (
+        "from experiments.plc_families import make_plc\n"
+        "from nonobtuse.mesh3d import refine_gabriel\n"
+        f"r = refine_gabriel(make_plc('fan', {theta}, 3), split='midpoint', time_limit=10, max_steiner=2000)\n"
+        "print(r.status)\n"
+    )
+    root = Path(__file__).resolve().parents[1]
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(root / "src"), str(root)])}
+    done = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip() in STATUSES
 
 
 def test_split_rules_are_deterministic():

@@ -47,7 +47,28 @@ SearchBall enclose(const IVec& center, const I& radius) {
   return ball;
 }
 
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+
+EK::Point_3 exact_circumcenter(const P3& a, const P3& b, const P3& c) {
+  auto center = CGAL::circumcenter(EK::Point_3(a.x(), a.y(), a.z()), EK::Point_3(b.x(), b.y(), b.z()),
+                                   EK::Point_3(c.x(), c.y(), c.z()));
+  CGAL::exact(center);
+  return center;
+}
+
+bool finite(const P3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
+
 }  // namespace
+
+std::optional<P3> rounded_circumcenter(const P3& a, const P3& b, const P3& c) {
+  if (CGAL::collinear(a, b, c)) return std::nullopt;
+  P3 center = CGAL::circumcenter(a, b, c);
+  if (finite(center)) return center;
+  auto exact = exact_circumcenter(a, b, c);
+  center = P3(CGAL::to_double(exact.x()), CGAL::to_double(exact.y()), CGAL::to_double(exact.z()));
+  if (finite(center)) return center;
+  return std::nullopt;
+}
 
 SearchBall search_ball(const P3& a, const P3& b) {
   CGAL::Protect_FPU_rounding<true> upward;
@@ -80,10 +101,7 @@ SearchBall search_ball(const P3& a, const P3& b, const P3& c) {
     ball.everything = true;
     return ball;
   }
-  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-  auto center = CGAL::circumcenter(EK::Point_3(a.x(), a.y(), a.z()), EK::Point_3(b.x(), b.y(), b.z()),
-                                   EK::Point_3(c.x(), c.y(), c.z()));
-  CGAL::exact(center);
+  auto center = exact_circumcenter(a, b, c);
   IVec ic{I(CGAL::to_interval(center.x())), I(CGAL::to_interval(center.y())), I(CGAL::to_interval(center.z()))};
   CGAL::Protect_FPU_rounding<true> upward;
   IVec r = ic - ivec(a);

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "nonobtuse/gabriel3d.h"
@@ -29,6 +30,12 @@ struct SearchBall {
 // guessed from the triangle's shape (a sliver's circumcenter can be off by far more than a few ulps).
 SearchBall search_ball(const P3& a, const P3& b);
 SearchBall search_ball(const P3& a, const P3& b, const P3& c);
+
+// The circumcenter of triangle abc rounded to doubles, or nullopt when abc is collinear or it does not fit in a
+// double. The floating-point construction is tried first; for a needle triangle it can divide by an underflowed
+// zero (infinite or NaN coordinates, which an exact 2D kernel cannot even read: GMP raises SIGFPE on NaN), and
+// then the exact circumcenter is rounded instead.
+std::optional<P3> rounded_circumcenter(const P3& a, const P3& b, const P3& c);
 
 // A kd-tree over a growing point list. Points added after the last rebuild sit in a pending list that every query
 // scans; the tree is rebuilt when that list gets long, so insertion is amortized O(log n).

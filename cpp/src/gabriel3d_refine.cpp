@@ -211,7 +211,9 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
                    : !encroached(r.a, r.b, r.c))
     return std::nullopt;
   if (!require_face) fh = va->face();
-  const P3 center = CGAL::circumcenter(s_.points[r.a], s_.points[r.b], s_.points[r.c]);
+  const std::optional<P3> rounded = rounded_circumcenter(s_.points[r.a], s_.points[r.b], s_.points[r.c]);
+  if (!rounded) return std::nullopt;  // refused, as below (collinear after rounding, or beyond double range)
+  const P3& center = *rounded;
   // A circumcenter that encroaches a subsegment of this facet is not inserted: the subsegments are split instead.
   std::vector<Key> hit;
   for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e) {
