@@ -113,8 +113,8 @@ std::vector<SubfacetRef> Refiner::encroached_subfacets() const {
       int a = fh->vertex(0)->info(), b = fh->vertex(1)->info(), c = fh->vertex(2)->info();
       if (CGAL::collinear(s_.points[a], s_.points[b], s_.points[c])) continue;  // rounding; left to the final check
       if (subfacet_encroached(static_cast<int>(f), a, b, c)) out.push_back(canonical({static_cast<int>(f), a, b, c}));
+      if (out_of_time()) return {};  // one facet can hold most subfacets; run() stops after the scan
     }
-    if (out_of_time()) break;
   }
   // The face order of a triangulation depends on where the walks of point location went (randomized): sort.
   std::sort(out.begin(), out.end());
@@ -269,6 +269,7 @@ std::optional<Stop> Refiner::run() {
     // on the way (encroached by a circumcenter) get priority again at the next level-1 scan; a rescan after every
     // such split would cost a full pass over the subfacets per Steiner point.
     auto subfacets = encroached_subfacets();
+    if (auto stop = budget_left()) return stop;  // (a scan cut short by time_limit is empty)
     last_encroached_facets_ = static_cast<long>(subfacets.size());
     if (subfacets.empty()) return std::nullopt;
     for (const auto& r : subfacets) {
