@@ -116,7 +116,9 @@ PointIndex::PointIndex(const std::vector<P3>& points) : points_(points) {
 
 void PointIndex::add(int i) {
   pending_.push_back(i);
-  if (pending_.size() > 256 && pending_.size() * 8 > order_.size()) {
+  // Every query scans the pending list: keep it near sqrt(n) (a rebuild costs O(n log n)), not a fraction of n,
+  // which made each query O(n) and refinement quadratic.
+  if (pending_.size() > 256 && pending_.size() * pending_.size() > 16 * order_.size()) {
     order_.insert(order_.end(), pending_.begin(), pending_.end());
     pending_.clear();
     rebuild();

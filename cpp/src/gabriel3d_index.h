@@ -38,7 +38,8 @@ SearchBall search_ball(const P3& a, const P3& b, const P3& c);
 std::optional<P3> rounded_circumcenter(const P3& a, const P3& b, const P3& c);
 
 // A kd-tree over a growing point list. Points added after the last rebuild sit in a pending list that every query
-// scans; the tree is rebuilt when that list gets long, so insertion is amortized O(log n).
+// scans; the tree is rebuilt when that list exceeds max(256, 4 sqrt(n)): insertion amortized O(sqrt(n) log n),
+// a query O(log n + sqrt(n)).
 class PointIndex {
  public:
   explicit PointIndex(const std::vector<P3>& points);  // indexes points[0, size) now; keeps a reference

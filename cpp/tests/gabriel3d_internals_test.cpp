@@ -1,4 +1,4 @@
-// rounded_circumcenter: the Steiner point of a subfacet split, also for needle triangles.
+// Internals of the 3D Gabriel refinement: rounded_circumcenter (subfacet split points, needles too) and PointIndex.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -33,6 +33,36 @@ TEST(Gabriel3DCircumcenter, OrdinaryTriangleUsesTheFloatingPointCenter) {
   auto center = rounded_circumcenter(P3(0, 0, 0), P3(1, 0, 0), P3(0, 1, 0));
   ASSERT_TRUE(center.has_value());
   EXPECT_EQ(*center, P3(0.5, 0.5, 0));
+}
+
+}  // namespace
+}  // namespace nonobtuse::gabriel3d
+
+namespace nonobtuse::gabriel3d {
+namespace {
+
+TEST(Gabriel3DPointIndex, GrowingIndexFindsWhatBruteForceFinds) {
+  // Points added one at a time across several rebuilds (pending list > max(256, 4 sqrt(n))); every query must
+  // visit each point strictly within the ball (it may visit a few more just outside: the caller decides exactly).
+  std::vector<P3> points;
+  auto next = [state = 12345u]() mutable {
+    state = state * 1103515245u + 12345u;
+    return (state >> 8) / double(1 << 24);
+  };
+  for (int i = 0; i < 64; ++i) points.emplace_back(next(), next(), next());
+  points.reserve(6000);
+  PointIndex index(points);
+  for (int i = 64; i < 6000; ++i) {
+    points.emplace_back(next(), next(), next());
+    index.add(i);
+    if (i % 500 != 0) continue;
+    SearchBall ball{{next(), next(), next()}, 0.2, false};
+    std::vector<bool> seen(points.size(), false);
+    index.for_each_in(ball, [&](int t) { seen[t] = true; });
+    const P3 c(ball.center[0], ball.center[1], ball.center[2]);
+    for (std::size_t t = 0; t < points.size(); ++t)
+      if (CGAL::compare_squared_distance(points[t], c, 0.04) == CGAL::SMALLER) EXPECT_TRUE(seen[t]) << t;
+  }
 }
 
 }  // namespace
