@@ -16,6 +16,7 @@ from hypothesis import strategies as st
 from experiments.plc_families import make_plc
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import check_gabriel, refine_gabriel
+from nonobtuse.mesh3d.io3d import write_tetmesh
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
 DATA = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "3d"
@@ -280,6 +281,18 @@ def test_budget_exhausted_result_keeps_the_subfacets():
     # A subfacet that is no Delaunay face has a vertex inside its diametral sphere: some must be encroached.
     assert res.stats["encroached_facets"] > 0
     assert_result_consistent(res, plc)
+
+
+def test_result_without_tets_can_be_written(tmp_path):
+    # The result of the test above (subfacets, no tets): meshio's VTU writer failed on the empty tetra block.
+    import meshio
+
+    res = refine_gabriel(make_plc("fan", 5.0, 3), max_steiner=5)
+    assert len(res.mesh.tets) == 0
+    for suffix in (".vtu", ".msh"):
+        write_tetmesh(res.mesh, tmp_path / f"out{suffix}")
+        back = meshio.read(tmp_path / f"out{suffix}")
+        assert [(c.type, len(c.data)) for c in back.cells] == [("triangle", len(res.mesh.boundary_faces))]
 
 
 @pytest.mark.parametrize("theta", [14.0, 16.0, 22.0])
