@@ -118,8 +118,10 @@ struct Refine3Result {
 // subsegment and subfacet has an empty open diametral sphere, then returns the Delaunay tetrahedralization of all
 // vertices restricted to the PLC's interior (flood fill from outside across boundary faces; hole seeds removed).
 // Steiner points lie on segments and facets (up to rounding of their coordinates). Stops at max_steiner, min_length,
-// time_limit, or when no progress is possible (stalled). status == Converged iff the exact check of the returned
-// mesh passes. The facets' boundary edges count as segments (their subsegments are returned and checked).
+// time_limit, or when no progress is possible (stalled). time_limit also bounds the exact check of the result (rows
+// it did not reach: certificate.unchecked_*); only the final Delaunay tetrahedralization, O(n log n), runs past it.
+// A stopped run whose tetrahedralization does not conform to every facet returns the subfacets and no tets
+// (volume_mesh says so). status == Converged iff the exact check of the returned mesh passes. The facets' boundary edges count as segments (their subsegments are returned and checked).
 // Deterministic. Throws InvalidInput on malformed input (index out of range, duplicate points, degenerate
 // triangles, facet edges crossing or passing through a vertex, facet vertices coinciding in the facet's plane).
 Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options);
