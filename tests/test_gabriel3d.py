@@ -10,10 +10,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from experiments.plc_families import make_plc
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from experiments.plc_families import make_plc
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import check_gabriel, refine_gabriel
 from nonobtuse.mesh3d.io3d import write_tetmesh
@@ -243,8 +243,8 @@ def test_budget_and_min_length_are_statuses():
 
 
 def test_time_limit_bounds_refinement_and_check():
-    # fan k=12 at 3 degrees, midpoint split: the refinement stalls after ~1 s with ~9,600 Steiner points crowded
-    # at the axis; the exact check of that state alone took 44 s before time_limit covered it (60 s in all).
+    # fan k=12 at 3 degrees, midpoint split: the refinement stalls after ~1 s with ~9,600 Steiner points
+    # crowded at the axis; the exact check of that state alone took 44 s before time_limit covered it.
     plc = make_plc("fan", 3.0, 12)
     start = time.perf_counter()
     res = refine_gabriel(plc, split="midpoint", time_limit=0.3)
@@ -263,16 +263,16 @@ def area_vectors(points: np.ndarray, triangles: np.ndarray, ids: np.ndarray) -> 
 
 
 def test_budget_exhausted_result_keeps_the_subfacets():
-    # fan k=3 at 5 degrees stopped after 5 Steiner points: the Delaunay tetrahedralization crosses an encroached
-    # subfacet, the flood fill from outside leaks into every region and no tet is left. The result used to carry
-    # no boundary face at all (so "0 encroached facets" certified nothing).
+    # fan k=3 at 5 degrees stopped after 5 Steiner points: the Delaunay tetrahedralization crosses an
+    # encroached subfacet, the flood fill from outside leaks into every region and no tet is left. The result
+    # used to carry no boundary face at all (so "0 encroached facets" certified nothing).
     plc = make_plc("fan", 5.0, 3)
     res = refine_gabriel(plc, max_steiner=5)
     assert res.status == "budget_exhausted"
     assert res.stats["volume_mesh"].startswith("not built")
     assert len(res.mesh.tets) == 0
-    # The subfacets tile each facet with the input's orientation: per facet, the same summed area vector as the
-    # input triangles (a planar facet's area vector is additive over any tiling).
+    # The subfacets tile each facet with the input's orientation: per facet, the same summed area vector as
+    # the input triangles (a planar facet's area vector is additive over any tiling).
     got = area_vectors(res.mesh.points, res.mesh.boundary_faces, res.mesh.face_markers)
     want = area_vectors(plc.points, plc.triangles, plc.facet_ids)
     assert got.keys() == want.keys()
@@ -297,13 +297,14 @@ def test_result_without_tets_can_be_written(tmp_path):
 
 @pytest.mark.parametrize("theta", [14.0, 16.0, 22.0])
 def test_fan_midpoint_does_not_crash(theta):
-    # Killed the process with SIGFPE on main 1a747d5: a needle subfacet's floating-point circumcenter was NaN and
-    # GMP raises SIGFPE when the facet's exact triangulation reads a NaN. In a subprocess so that a crash fails
-    # this test instead of killing pytest; a small budget keeps it short.
+    # Killed the process with SIGFPE on main 1a747d5: a needle subfacet's floating-point circumcenter was NaN
+    # and GMP raises SIGFPE when the facet's exact triangulation reads a NaN. In a subprocess so that a crash
+    # fails this test instead of killing pytest; a small budget keeps it short.
     code = (
         "from experiments.plc_families import make_plc\n"
         "from nonobtuse.mesh3d import refine_gabriel\n"
-        f"r = refine_gabriel(make_plc('fan', {theta}, 3), split='midpoint', time_limit=10, max_steiner=2000)\n"
+        f"r = refine_gabriel(make_plc('fan', {theta}, 3), split='midpoint', time_limit=10, "
+        "max_steiner=2000)\n"
         "print(r.status)\n"
     )
     root = Path(__file__).resolve().parents[1]

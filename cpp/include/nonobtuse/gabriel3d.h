@@ -121,7 +121,8 @@ struct Refine3Result {
 // time_limit, or when no progress is possible (stalled). time_limit also bounds the exact check of the result (rows
 // it did not reach: certificate.unchecked_*); only the final Delaunay tetrahedralization, O(n log n), runs past it.
 // A stopped run whose tetrahedralization does not conform to every facet returns the subfacets and no tets
-// (volume_mesh says so). status == Converged iff the exact check of the returned mesh passes. The facets' boundary edges count as segments (their subsegments are returned and checked).
+// (volume_mesh says so). status == Converged iff the exact check of the returned mesh passes. The facets' boundary
+// edges count as segments (their subsegments are returned and checked).
 // Deterministic. Throws InvalidInput on malformed input (index out of range, duplicate points, degenerate
 // triangles, facet edges crossing or passing through a vertex, facet vertices coinciding in the facet's plane).
 Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options);

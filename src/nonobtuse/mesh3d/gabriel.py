@@ -96,8 +96,8 @@ class Gabriel3DResult:
             did not reach before time_limit; then status is "budget_exhausted"), volume_mesh ("built", or why
             mesh.tets is empty: a stop left the Delaunay mesh not conforming to some facet; boundary_faces are
             then the subfacets, oriented like the input triangles), smallest_subsegment, seconds,
-            diagnosis (smallest input angles with kind/degrees/vertices/facets, Steiner points per input vertex
-            and per input segment, stop_reason).
+            diagnosis (smallest input angles with kind/degrees/vertices/facets, Steiner points per input
+            vertex and per input segment, stop_reason).
     report: the GabrielReport of mesh.
     """
 

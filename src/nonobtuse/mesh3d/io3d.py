@@ -73,7 +73,7 @@ def _write_meshio(mesh: TetMesh, tmp: Path, fmt: str) -> None:
     blocks = [("tetra", tets, regions.astype(np.int64)),
               ("triangle", np.asarray(mesh.boundary_faces, dtype=np.int64).reshape(-1, 3),
                np.asarray(mesh.face_markers, dtype=np.int64))]
-    blocks = [b for b in blocks if len(b[1])]  # meshio's VTU writer fails on an empty block (no tets, see stats)
+    blocks = [b for b in blocks if len(b[1])]  # meshio's VTU writer fails on an empty block (no tets)
     cells = [(kind, rows) for kind, rows, _ in blocks]
     data = {"marker": [markers for _, _, markers in blocks]}
     if fmt == "gmsh22":  # gmsh needs its physical/geometrical tags
