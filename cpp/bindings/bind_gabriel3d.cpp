@@ -43,6 +43,8 @@ py::dict report_to_dict(const GabrielReport& r) {
     d[(std::string(name) + "_depth").c_str()] = from_vector(depth);
   }
   d["candidates"] = r.candidates;
+  d["unchecked_faces"] = r.unchecked_faces;
+  d["unchecked_segments"] = r.unchecked_segments;
   return d;
 }
 
@@ -76,6 +78,7 @@ py::dict result_to_dict(const Refine3Result& r) {
   d["smallest_subsegment"] = r.smallest_subsegment;
   d["certificate"] = report_to_dict(r.certificate);
   d["diagnosis"] = diagnosis_to_dict(r.diagnosis);
+  d["volume_mesh"] = r.volume_mesh;
   return d;
 }
 

@@ -47,7 +47,28 @@ SearchBall enclose(const IVec& center, const I& radius) {
   return ball;
 }
 
+using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+
+EK::Point_3 exact_circumcenter(const P3& a, const P3& b, const P3& c) {
+  auto center = CGAL::circumcenter(EK::Point_3(a.x(), a.y(), a.z()), EK::Point_3(b.x(), b.y(), b.z()),
+                                   EK::Point_3(c.x(), c.y(), c.z()));
+  CGAL::exact(center);
+  return center;
+}
+
+bool finite(const P3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
+
 }  // namespace
+
+std::optional<P3> rounded_circumcenter(const P3& a, const P3& b, const P3& c) {
+  if (CGAL::collinear(a, b, c)) return std::nullopt;
+  P3 center = CGAL::circumcenter(a, b, c);
+  if (finite(center)) return center;
+  auto exact = exact_circumcenter(a, b, c);
+  center = P3(CGAL::to_double(exact.x()), CGAL::to_double(exact.y()), CGAL::to_double(exact.z()));
+  if (finite(center)) return center;
+  return std::nullopt;
+}
 
 SearchBall search_ball(const P3& a, const P3& b) {
   CGAL::Protect_FPU_rounding<true> upward;
@@ -80,10 +101,7 @@ SearchBall search_ball(const P3& a, const P3& b, const P3& c) {
     ball.everything = true;
     return ball;
   }
-  using EK = CGAL::Exact_predicates_exact_constructions_kernel;
-  auto center = CGAL::circumcenter(EK::Point_3(a.x(), a.y(), a.z()), EK::Point_3(b.x(), b.y(), b.z()),
-                                   EK::Point_3(c.x(), c.y(), c.z()));
-  CGAL::exact(center);
+  auto center = exact_circumcenter(a, b, c);
   IVec ic{I(CGAL::to_interval(center.x())), I(CGAL::to_interval(center.y())), I(CGAL::to_interval(center.z()))};
   CGAL::Protect_FPU_rounding<true> upward;
   IVec r = ic - ivec(a);
@@ -98,7 +116,9 @@ PointIndex::PointIndex(const std::vector<P3>& points) : points_(points) {
 
 void PointIndex::add(int i) {
   pending_.push_back(i);
-  if (pending_.size() > 256 && pending_.size() * 8 > order_.size()) {
+  // Every query scans the pending list: keep it near sqrt(n) (a rebuild costs O(n log n)), not a fraction of n,
+  // which made each query O(n) and refinement quadratic.
+  if (pending_.size() > 256 && pending_.size() * pending_.size() > 16 * order_.size()) {
     order_.insert(order_.end(), pending_.begin(), pending_.end());
     pending_.clear();
     rebuild();
@@ -201,16 +221,8 @@ Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex&
   return {};
 }
 
-}  // namespace nonobtuse::gabriel3d
-
-namespace nonobtuse {
-
-GabrielReport check_gabriel(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
-                            const std::vector<Segment>& segments) {
-  using namespace gabriel3d;
-  std::vector<P3> pts;
-  pts.reserve(points.size());
-  for (const auto& p : points) pts.push_back(to_cgal(p));
+GabrielReport check_gabriel_until(const std::vector<P3>& pts, const std::vector<Triangle>& faces,
+                                  const std::vector<Segment>& segments, const std::function<bool()>& out_of_time) {
   auto check_index = [&](int v, const char* what, std::size_t row) {
     if (v < 0 || static_cast<std::size_t>(v) >= pts.size())
       throw InvalidInput(std::string(what) + " " + std::to_string(row) + " refers to point " + std::to_string(v) +
@@ -231,14 +243,37 @@ GabrielReport check_gabriel(const std::vector<Point3>& points, const std::vector
   PointIndex index(pts);
   GabrielReport report;
   for (std::size_t f = 0; f < faces.size(); ++f) {
+    if (out_of_time()) {
+      report.unchecked_faces = faces.size() - f;
+      report.unchecked_segments = segments.size();
+      return report;
+    }
     Encroachment e = deepest_encroacher(pts, index, faces[f][0], faces[f][1], faces[f][2], &report.candidates);
     if (e.vertex >= 0) report.faces.push_back({static_cast<int>(f), e.vertex, e.depth});
   }
   for (std::size_t s = 0; s < segments.size(); ++s) {
+    if (out_of_time()) {
+      report.unchecked_segments = segments.size() - s;
+      return report;
+    }
     Encroachment e = deepest_encroacher(pts, index, segments[s][0], segments[s][1], -1, &report.candidates);
     if (e.vertex >= 0) report.segments.push_back({static_cast<int>(s), e.vertex, e.depth});
   }
   return report;
 }
 
+}  // namespace nonobtuse::gabriel3d
+
+namespace nonobtuse {
+
+GabrielReport check_gabriel(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+                            const std::vector<Segment>& segments) {
+  using namespace gabriel3d;
+  std::vector<P3> pts;
+  pts.reserve(points.size());
+  for (const auto& p : points) pts.push_back(to_cgal(p));
+  return check_gabriel_until(pts, faces, segments, [] { return false; });
+}
+
 }  // namespace nonobtuse
+

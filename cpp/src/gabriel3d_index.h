@@ -5,6 +5,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "nonobtuse/gabriel3d.h"
@@ -30,8 +31,15 @@ struct SearchBall {
 SearchBall search_ball(const P3& a, const P3& b);
 SearchBall search_ball(const P3& a, const P3& b, const P3& c);
 
+// The circumcenter of triangle abc rounded to doubles, or nullopt when abc is collinear or it does not fit in a
+// double. The floating-point construction is tried first; for a needle triangle it can divide by an underflowed
+// zero (infinite or NaN coordinates, which an exact 2D kernel cannot even read: GMP raises SIGFPE on NaN), and
+// then the exact circumcenter is rounded instead.
+std::optional<P3> rounded_circumcenter(const P3& a, const P3& b, const P3& c);
+
 // A kd-tree over a growing point list. Points added after the last rebuild sit in a pending list that every query
-// scans; the tree is rebuilt when that list gets long, so insertion is amortized O(log n).
+// scans; the tree is rebuilt when that list exceeds max(256, 4 sqrt(n)): insertion amortized O(sqrt(n) log n),
+// a query O(log n + sqrt(n)).
 class PointIndex {
  public:
   explicit PointIndex(const std::vector<P3>& points);  // indexes points[0, size) now; keeps a reference
@@ -95,6 +103,11 @@ void PointIndex::for_each_in(const SearchBall& ball, Visit&& visit) const {
 // own vertices, that is deepest by floating-point depth among those the exact predicate confirms (exact ties in
 // depth are vanishingly rare and only change which encroacher is named); vertex == -1 when the sphere is empty.
 // Points for which ignore(i) is true are not considered.
+// check_gabriel on points already in the kernel's type. Stops when out_of_time() (asked before each face and
+// segment) returns true: the rows not reached are counted as unchecked_faces / unchecked_segments.
+GabrielReport check_gabriel_until(const std::vector<P3>& points, const std::vector<Triangle>& faces,
+                                  const std::vector<Segment>& segments, const std::function<bool()>& out_of_time);
+
 Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex& index, int a, int b, int c,
                                 std::size_t* candidates = nullptr, const std::function<bool(int)>& ignore = {});
 

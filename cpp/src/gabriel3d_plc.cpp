@@ -252,6 +252,27 @@ bool triangle_on_facet(const PlcState& s, int f, int a, int b, int c) {
   return false;
 }
 
+Restricted subfacet_boundary(const PlcState& s, long* collinear) {
+  Restricted out;
+  *collinear = 0;
+  for (std::size_t f = 0; f < s.facets.size(); ++f) {
+    const FacetCDT& cdt = s.facets[f]->cdt;
+    for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
+      if (!fh->info().in_domain) continue;
+      // Counter-clockwise in the frame (u, v) with u x v = the facet's normal (set_frame): the input's side.
+      int a = fh->vertex(0)->info(), b = fh->vertex(1)->info(), c = fh->vertex(2)->info();
+      if (CGAL::collinear(s.points[a], s.points[b], s.points[c])) {
+        ++*collinear;
+        continue;
+      }
+      out.boundary_faces.push_back({a, b, c});
+      out.face_markers.push_back(s.facets[f]->id);
+      out.face_facets.push_back(static_cast<int>(f));
+    }
+  }
+  return out;
+}
+
 void check_invariants(const PlcState& s) {
   for (const auto& facet : s.facets)
     if (!facet->cdt.is_valid())

@@ -91,6 +91,10 @@ struct Restricted {
   std::vector<double> tet_regions;
 };
 Restricted restrict_delaunay(const PlcState& s, const PLC3& plc);
+// The subfacets (the facets' triangulations) as boundary faces, oriented like the input triangles of their facet;
+// no tets. Subfacets whose corners became collinear through the rounding of Steiner points (no diametral sphere)
+// are left out and counted in *collinear.
+Restricted subfacet_boundary(const PlcState& s, long* collinear);
 
 // The few smallest input angles of each kind; call before refinement (it reads the unsplit input segments).
 std::vector<InputAngle> smallest_input_angles(const PlcState& s);

@@ -45,11 +45,11 @@ class Refiner {
   double seconds() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }
+  bool out_of_time() const { return seconds() > o_.time_limit; }
   long steiner_on_segments = 0, steiner_on_facets = 0;
 
  private:
   std::optional<Stop> budget_left() const;
-  bool out_of_time() const { return seconds() > o_.time_limit; }
   std::vector<Key> encroached_subsegments() const;
   std::vector<SubfacetRef> encroached_subfacets() const;
   bool encroached(int a, int b, int c) const {
@@ -113,8 +113,8 @@ std::vector<SubfacetRef> Refiner::encroached_subfacets() const {
       int a = fh->vertex(0)->info(), b = fh->vertex(1)->info(), c = fh->vertex(2)->info();
       if (CGAL::collinear(s_.points[a], s_.points[b], s_.points[c])) continue;  // rounding; left to the final check
       if (subfacet_encroached(static_cast<int>(f), a, b, c)) out.push_back(canonical({static_cast<int>(f), a, b, c}));
+      if (out_of_time()) return {};  // one facet can hold most subfacets; run() stops after the scan
     }
-    if (out_of_time()) break;
   }
   // The face order of a triangulation depends on where the walks of point location went (randomized): sort.
   std::sort(out.begin(), out.end());
@@ -211,7 +211,9 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
                    : !encroached(r.a, r.b, r.c))
     return std::nullopt;
   if (!require_face) fh = va->face();
-  const P3 center = CGAL::circumcenter(s_.points[r.a], s_.points[r.b], s_.points[r.c]);
+  const std::optional<P3> rounded = rounded_circumcenter(s_.points[r.a], s_.points[r.b], s_.points[r.c]);
+  if (!rounded) return std::nullopt;  // refused, as below (collinear after rounding, or beyond double range)
+  const P3& center = *rounded;
   // A circumcenter that encroaches a subsegment of this facet is not inserted: the subsegments are split instead.
   std::vector<Key> hit;
   for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e) {
@@ -267,10 +269,13 @@ std::optional<Stop> Refiner::run() {
     // on the way (encroached by a circumcenter) get priority again at the next level-1 scan; a rescan after every
     // such split would cost a full pass over the subfacets per Steiner point.
     auto subfacets = encroached_subfacets();
+    if (auto stop = budget_left()) return stop;  // (a scan cut short by time_limit is empty)
     last_encroached_facets_ = static_cast<long>(subfacets.size());
     if (subfacets.empty()) return std::nullopt;
-    for (const auto& r : subfacets)
+    for (const auto& r : subfacets) {
+      if (auto stop = budget_left()) return stop;  // refused circumcenters insert nothing but cost a facet walk
       if (auto stop = split_subfacet(r, true, &progress)) return stop;
+    }
     if (!progress)  // every encroached subfacet's circumcenter was refused: the same state would repeat forever
       return Stop{Refine3Status::Stalled, "encroached subfacets remain whose circumcenters cannot be inserted"};
   }
@@ -281,6 +286,7 @@ std::optional<Stop> Refiner::repair(const Restricted& mesh, const std::vector<Ke
   for (const auto& e : report.segments)
     if (auto stop = split(segments[e.index], false, progress)) return stop;
   for (const auto& e : report.faces) {
+    if (auto stop = budget_left()) return stop;
     auto [a, b, c] = mesh.boundary_faces[e.index];
     if (auto stop = split_subfacet(canonical({mesh.face_facets[e.index], a, b, c}), false, progress)) return stop;
   }
@@ -318,13 +324,14 @@ Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool i
   out.diagnosis.smallest_angles = smallest_input_angles(s);
   Refiner refiner(s, options, ignore_frame_artifacts);
   // Refine the subfacets, restrict the Delaunay tetrahedralization, check it exactly; where its boundary faces
-  // differ from the subfacets (cospherical points) and are encroached, split those too and start over.
+  // differ from the subfacets (cospherical points) and are encroached, split those too and start over. After a
+  // stop, the mesh is rebuilt once more so that it shows every point inserted (repair() may stop half-way).
   std::optional<Stop> stop;
   Restricted mesh;
   std::vector<Key> segments;
   bool clean = false;
   for (;;) {
-    stop = refiner.run();
+    if (!stop) stop = refiner.run();
     mesh = restrict_delaunay(s, plc);
     out.points.clear();
     for (const auto& p : s.points) out.points.push_back(from_cgal(p));
@@ -334,14 +341,34 @@ Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool i
       segments.push_back(sub);
       out.segments.push_back({sub.first, sub.second});
     }
-    out.certificate = check_gabriel(out.points, mesh.boundary_faces, out.segments);
-    clean = out.certificate.faces.empty() && out.certificate.segments.empty();
+    if (stop) {
+      // A stop can leave encroached subfacets that are no Delaunay faces: the flood fill of restrict_delaunay
+      // then leaks through them and leaves facets without faces (often no tets at all). Return the subfacets.
+      std::vector<bool> has_face(s.facets.size(), false);
+      for (int f : mesh.face_facets) has_face[f] = true;
+      long bare = std::count(has_face.begin(), has_face.end(), false);
+      if (bare > 0) {
+        long collinear = 0;
+        mesh = subfacet_boundary(s, &collinear);
+        out.volume_mesh = "not built: the Delaunay tetrahedralization does not conform to " + std::to_string(bare) +
+                          " of " + std::to_string(s.facets.size()) + " facets; boundary_faces are the subfacets";
+        if (collinear > 0)
+          out.volume_mesh += " (" + std::to_string(collinear) + " collinear after rounding left out)";
+      }
+    }
+    // The check stops at time_limit too: a certificate with unchecked rows is never clean.
+    out.certificate = check_gabriel_until(s.points, mesh.boundary_faces, out.segments,
+                                          [&] { return refiner.out_of_time(); });
+    bool complete = out.certificate.unchecked_faces == 0 && out.certificate.unchecked_segments == 0;
+    clean = complete && out.certificate.faces.empty() && out.certificate.segments.empty();
+    if (!complete && !stop)
+      stop = Stop{Refine3Status::BudgetExhausted, "time_limit (" + std::to_string(options.time_limit) +
+                                                      " s) reached during the exact check of the result"};
     if (stop || clean) break;
     bool progress = false;
     stop = refiner.repair(mesh, segments, out.certificate, &progress);
     if (!stop && !progress)
       stop = Stop{Refine3Status::Stalled, "encroached faces of the Delaunay mesh remain but none could be split"};
-    if (stop) break;
   }
   out.tets = std::move(mesh.tets);
   out.boundary_faces = std::move(mesh.boundary_faces);
@@ -367,9 +394,10 @@ Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool i
 // First without the frame-rounding encroachers (fewest Steiner points). When that stalls (the Delaunay faces
 // that cover a facet then sit on rounding-level slivers whose circumcenters coincide with existing vertices),
 // once more from the input counting them: their extra points usually break the near-cospherical ties.
+// The second attempt only runs while time_limit has time left (else it would return the bare input).
 Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options) {
   Refine3Result first = refine_once(plc, options, true);
-  if (first.status != Refine3Status::Stalled) return first;
+  if (first.status != Refine3Status::Stalled || first.seconds >= options.time_limit) return first;
   Refine3Options rest = options;
   rest.time_limit = std::max(0.0, options.time_limit - first.seconds);
   Refine3Result second = refine_once(plc, rest, false);

@@ -30,6 +30,10 @@ struct GabrielReport {
   std::vector<Encroachment> faces;
   std::vector<Encroachment> segments;
   std::size_t candidates = 0;  // (simplex, vertex) pairs the float search passed to the exact predicate
+  // Faces and segments not checked because refine_gabriel's time_limit ran out during its check (the last rows);
+  // always 0 from check_gabriel.
+  std::size_t unchecked_faces = 0;
+  std::size_t unchecked_segments = 0;
 };
 
 // For every face (a, b, c): is some point strictly inside its diametral sphere (the smallest sphere through a, b, c,
@@ -103,6 +107,9 @@ struct Refine3Result {
   double seconds = 0.0;
   double smallest_subsegment = 0.0;
   GabrielReport certificate;  // check_gabriel on (points, boundary_faces, segments) as returned
+  // "built", or why tets is empty: when a stop leaves the Delaunay tetrahedralization not conforming to some facet
+  // (its interior leaks out), boundary_faces are the subfacets instead (oriented like the input's triangles).
+  std::string volume_mesh = "built";
   Refine3Diagnosis diagnosis;
 };
 
@@ -111,8 +118,11 @@ struct Refine3Result {
 // subsegment and subfacet has an empty open diametral sphere, then returns the Delaunay tetrahedralization of all
 // vertices restricted to the PLC's interior (flood fill from outside across boundary faces; hole seeds removed).
 // Steiner points lie on segments and facets (up to rounding of their coordinates). Stops at max_steiner, min_length,
-// time_limit, or when no progress is possible (stalled). status == Converged iff the exact check of the returned
-// mesh passes. The facets' boundary edges count as segments (their subsegments are returned and checked).
+// time_limit, or when no progress is possible (stalled). time_limit also bounds the exact check of the result (rows
+// it did not reach: certificate.unchecked_*); only the final Delaunay tetrahedralization, O(n log n), runs past it.
+// A stopped run whose tetrahedralization does not conform to every facet returns the subfacets and no tets
+// (volume_mesh says so). status == Converged iff the exact check of the returned mesh passes. The facets' boundary
+// edges count as segments (their subsegments are returned and checked).
 // Deterministic. Throws InvalidInput on malformed input (index out of range, duplicate points, degenerate
 // triangles, facet edges crossing or passing through a vertex, facet vertices coinciding in the facet's plane).
 Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options);

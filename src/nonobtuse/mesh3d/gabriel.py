@@ -92,10 +92,12 @@ class Gabriel3DResult:
     status: "converged" (the exact check of mesh passes), "budget_exhausted" (max_steiner or time_limit),
             "min_length_reached" or "stalled" (no split could make progress).
     stats:  steiner_points, steiner_on_segments, steiner_on_facets, encroached_facets, encroached_segments
-    (the
-            certificate of mesh as returned), smallest_subsegment, seconds, diagnosis (smallest input angles
-            with
-            kind/degrees/vertices/facets, Steiner points per input vertex and per input segment, stop_reason).
+            (the certificate of mesh as returned), unchecked_faces, unchecked_segments (rows the certificate
+            did not reach before time_limit; then status is "budget_exhausted"), volume_mesh ("built", or why
+            mesh.tets is empty: a stop left the Delaunay mesh not conforming to some facet; boundary_faces are
+            then the subfacets, oriented like the input triangles), smallest_subsegment, seconds,
+            diagnosis (smallest input angles with kind/degrees/vertices/facets, Steiner points per input
+            vertex and per input segment, stop_reason).
     report: the GabrielReport of mesh.
     """
 
@@ -150,7 +152,9 @@ def refine_gabriel(
     input vertex end), then encroached subfacets at their circumcenter, unless it encroaches a subsegment of
     the facet or lies outside the facet, in which case that subsegment is split. The facets' boundary edges
     count as segments. Stops at max_steiner, time_limit (seconds), min_length (no split may create a shorter
-    edge) or when stalled; the status says which.
+    edge) or when stalled; the status says which. time_limit bounds the refinement and the exact check of
+    the result (not the final Delaunay tetrahedralization, O(n log n)); rows the check did not reach are
+    counted in stats["unchecked_faces"] / ["unchecked_segments"].
     progress: True prints a line to stderr every progress_every insertions; a callable receives
     (steiner_points, encroached_subsegments, encroached_subfacets, seconds).
     Guarantee: status == "converged" iff the exact check of the returned mesh passes. Deterministic.
@@ -182,7 +186,10 @@ def refine_gabriel(
         "steiner_on_facets": d["steiner_on_facets"],
         "encroached_facets": len(report.faces),
         "encroached_segments": len(report.segments),
+        "unchecked_faces": d["certificate"]["unchecked_faces"],
+        "unchecked_segments": d["certificate"]["unchecked_segments"],
         "smallest_subsegment": d["smallest_subsegment"],
+        "volume_mesh": d["volume_mesh"],
         "seconds": d["seconds"],
         "diagnosis": d["diagnosis"],
     }

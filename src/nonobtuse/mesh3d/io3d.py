@@ -70,8 +70,12 @@ def _write_meshio(mesh: TetMesh, tmp: Path, fmt: str) -> None:
 
     tets = np.asarray(mesh.tets, dtype=np.int64)
     regions = np.zeros(len(tets)) if mesh.tet_regions is None else np.asarray(mesh.tet_regions, dtype=float)
-    cells = [("tetra", tets), ("triangle", np.asarray(mesh.boundary_faces, dtype=np.int64))]
-    data = {"marker": [regions.astype(np.int64), np.asarray(mesh.face_markers, dtype=np.int64)]}
+    blocks = [("tetra", tets, regions.astype(np.int64)),
+              ("triangle", np.asarray(mesh.boundary_faces, dtype=np.int64).reshape(-1, 3),
+               np.asarray(mesh.face_markers, dtype=np.int64))]
+    blocks = [b for b in blocks if len(b[1])]  # meshio's VTU writer fails on an empty block (no tets)
+    cells = [(kind, rows) for kind, rows, _ in blocks]
+    data = {"marker": [markers for _, _, markers in blocks]}
     if fmt == "gmsh22":  # gmsh needs its physical/geometrical tags
         data = {"gmsh:physical": data["marker"], "gmsh:geometrical": data["marker"]}
     meshio.write(tmp, meshio.Mesh(mesh.points, cells, cell_data=data), file_format=fmt,

@@ -1,0 +1,69 @@
+// Internals of the 3D Gabriel refinement: rounded_circumcenter (subfacet split points, needles too) and PointIndex.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gabriel3d_index.h"
+
+namespace nonobtuse::gabriel3d {
+namespace {
+
+TEST(Gabriel3DCircumcenter, NeedleTriangleGetsTheExactCenterRounded) {
+  // Apex 1e-200 above the midpoint of a unit base: the floating-point construction divides by
+  // 2 |(b - a) x (c - a)|^2 = 2e-400, which underflows to 0 (before the fix: NaN coordinates, and GMP raised SIGFPE
+  // when the facet's exact 2D triangulation read them). The exact center: x = 0.5 and, from
+  // 0.25 + y^2 = (y - h)^2, y = (h^2 - 0.25) / (2 h) = -1.25e199 for h = 1e-200 (to rounding).
+  const double h = 1e-200;
+  const P3 a(0, 0, 0), b(1, 0, 0), c(0.5, h, 0);
+  const P3 naive = CGAL::circumcenter(a, b, c);
+  ASSERT_FALSE(std::isfinite(naive.x()) && std::isfinite(naive.y()) && std::isfinite(naive.z()));
+  auto center = rounded_circumcenter(a, b, c);
+  ASSERT_TRUE(center.has_value());
+  EXPECT_EQ(center->x(), 0.5);
+  EXPECT_NEAR(center->y() / (-0.25 / (2 * h)), 1.0, 1e-12);
+  EXPECT_EQ(center->z(), 0.0);
+}
+
+TEST(Gabriel3DCircumcenter, CollinearHasNone) {
+  EXPECT_FALSE(rounded_circumcenter(P3(0, 0, 0), P3(1, 1, 1), P3(2, 2, 2)).has_value());
+}
+
+TEST(Gabriel3DCircumcenter, OrdinaryTriangleUsesTheFloatingPointCenter) {
+  // Right triangle: the center is the hypotenuse's midpoint (0.5, 0.5, 0), exact in doubles.
+  auto center = rounded_circumcenter(P3(0, 0, 0), P3(1, 0, 0), P3(0, 1, 0));
+  ASSERT_TRUE(center.has_value());
+  EXPECT_EQ(*center, P3(0.5, 0.5, 0));
+}
+
+}  // namespace
+}  // namespace nonobtuse::gabriel3d
+
+namespace nonobtuse::gabriel3d {
+namespace {
+
+TEST(Gabriel3DPointIndex, GrowingIndexFindsWhatBruteForceFinds) {
+  // Points added one at a time across several rebuilds (pending list > max(256, 4 sqrt(n))); every query must
+  // visit each point strictly within the ball (it may visit a few more just outside: the caller decides exactly).
+  std::vector<P3> points;
+  auto next = [state = 12345u]() mutable {
+    state = state * 1103515245u + 12345u;
+    return (state >> 8) / double(1 << 24);
+  };
+  for (int i = 0; i < 64; ++i) points.emplace_back(next(), next(), next());
+  points.reserve(6000);
+  PointIndex index(points);
+  for (int i = 64; i < 6000; ++i) {
+    points.emplace_back(next(), next(), next());
+    index.add(i);
+    if (i % 500 != 0) continue;
+    SearchBall ball{{next(), next(), next()}, 0.2, false};
+    std::vector<bool> seen(points.size(), false);
+    index.for_each_in(ball, [&](int t) { seen[t] = true; });
+    const P3 c(ball.center[0], ball.center[1], ball.center[2]);
+    for (std::size_t t = 0; t < points.size(); ++t)
+      if (CGAL::compare_squared_distance(points[t], c, 0.04) == CGAL::SMALLER) EXPECT_TRUE(seen[t]) << t;
+  }
+}
+
+}  // namespace
+}  // namespace nonobtuse::gabriel3d
