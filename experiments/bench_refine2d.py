@@ -28,12 +28,11 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(ROOT / "src"), str(ROOT / "tests"), str(ROOT / "experiments")]
 
-import triangle  # noqa: E402
-
 import nonobtuse  # noqa: E402
 from cgshop_best_known import best_known  # noqa: E402
 from nonobtuse import Domain  # noqa: E402
 from nonobtuse.io import load_domain  # noqa: E402
+from nonobtuse.peers import triangle_pd  # noqa: E402
 from refine_helpers import SHARED, cgshop_domain  # noqa: E402
 
 STRATEGIES = ("greedy", "project-flip", "projection")
@@ -76,17 +75,6 @@ def thin_layer(n: int, rng) -> Domain:
     py = np.round(lo + rng.uniform(0, 1, m) * (hi - lo))
     inner = np.unique(np.c_[px, py], axis=0)
     return Domain(points=np.r_[bottom, top, inner], segments=loop(2 * k))
-
-
-def triangle_pd(domain: Domain) -> tuple[int, float]:
-    t0 = time.perf_counter()
-    data = {"vertices": domain.points}
-    if len(domain.segments):
-        data["segments"] = domain.segments
-    if len(domain.holes):
-        data["holes"] = domain.holes
-    out = triangle.triangulate(data, "pDQ" if len(domain.segments) else "cDQ")
-    return len(out["vertices"]) - len(domain.points), time.perf_counter() - t0
 
 
 def cgal_gabriel(domain: Domain) -> tuple[int, float]:

@@ -159,16 +159,10 @@ def run_method(domain, method: str) -> dict:
     """Steiner points, status, seconds (and the lower bound, for our strategies) of one method on a domain."""
     start = time.perf_counter()
     if method == "triangle-pD":
-        import triangle
+        from nonobtuse.peers import triangle_pd
 
-        pslg = {"vertices": domain.points}
-        if len(domain.segments):
-            pslg["segments"] = domain.segments
-        if len(domain.holes):
-            pslg["holes"] = domain.holes
-        out = triangle.triangulate(pslg, "pcD" if domain.convex_hull else "pD")
-        return {"steiner_points": len(out["vertices"]) - len(domain.points), "status": "converged",
-                "seconds": time.perf_counter() - start, "lower_bound": None}
+        steiner, seconds = triangle_pd(domain)
+        return {"steiner_points": steiner, "status": "converged", "seconds": seconds, "lower_bound": None}
     import nonobtuse
 
     result = nonobtuse.refine(domain, strategy=method)

@@ -30,7 +30,7 @@ def star_with_hole(seed: int, n_outer: int, n_inner: int) -> Domain:
     [-100, 100]^2, and n_inner points at radius in (150, 400).
 
     Vertex i sits at angle (2 pi / n)(i + u_i) with u_i in [0, 1/2): consecutive angles differ by at least
-    pi / n, so at radius >= 500 rounding to integers (moves < 1) cannot reorder them and the polygon is simple.
+    pi / n, so at radius >= 500 rounding to integers (moves < 1) cannot reorder them: the polygon is simple.
     Gaps are below 3 pi / n <= 3 pi / 8, so the polygon contains the disk of radius 500 cos(3 pi / 16) > 415:
     the inner points are inside it and outside the hole (whose corners are at radius 141.5)."""
     rng = np.random.default_rng(seed)

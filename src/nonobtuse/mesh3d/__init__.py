@@ -1,4 +1,5 @@
-"""The 3D module: PLC input, tetrahedralization backends, exact Gabriel check and refinement, control volumes."""
+"""The 3D module: PLC input, tetrahedralization backends, exact Gabriel check and refinement, control
+volumes."""
 
 from __future__ import annotations
 

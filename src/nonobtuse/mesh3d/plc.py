@@ -14,9 +14,9 @@ class PLC:
 
     points:     (n, 3) float64.
     triangles:  (m, 3) int64: the facets, triangulated; consistently oriented (outward for a closed surface).
-    facet_ids:  (m,) int64: the input facet (polygon) each triangle belongs to. Triangles of one planar polygon
-                share an id; for a triangle-soup input (OFF/STL/...) every triangle is its own facet, and adjacent
-                coplanar triangles may be merged into one facet by the loader.
+    facet_ids:  (m,) int64: the input facet (polygon) each triangle belongs to. Triangles of one planar
+                polygon share an id; in a triangle soup (OFF/STL/...) the loader merges adjacent exactly
+                coplanar triangles into one facet.
     segments:   (k, 2) int64: PLC segments: edges where two facets meet at a non-flat angle, plus dangling
                 input segments.
     holes:      (h, 3) float64 volume-hole seeds.
