@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(ROOT / "src"), str(ROOT / "tests"), str(ROOT / "experiments")]
+sys.path[:0] = [str(ROOT / "tests"), str(ROOT / "experiments")]  # nonobtuse: installed or PYTHONPATH=src
 
 import nonobtuse  # noqa: E402
 from cgshop_best_known import best_known  # noqa: E402

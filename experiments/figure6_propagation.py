@@ -38,7 +38,7 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(ROOT / "src"), str(ROOT / "experiments")]
+sys.path[:0] = [str(ROOT / "experiments")]  # nonobtuse: installed or PYTHONPATH=src
 
 import nonobtuse  # noqa: E402
 from bench_refine2d import cgal_gabriel, triangle_pd  # noqa: E402

@@ -14,6 +14,7 @@ from experiments.plc_families import make_plc
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import nonobtuse
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import check_gabriel, refine_gabriel
 from nonobtuse.mesh3d.io3d import write_tetmesh
@@ -308,7 +309,8 @@ def test_fan_midpoint_does_not_crash(theta):
         "print(r.status)\n"
     )
     root = Path(__file__).resolve().parents[1]
-    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(root / "src"), str(root)])}
+    package_parent = Path(nonobtuse.__file__).resolve().parents[1]  # the nonobtuse this test imported
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(package_parent), str(root)])}
     done = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, timeout=120)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip() in STATUSES
