@@ -25,9 +25,10 @@ def cgshop_domain(path: Path) -> Domain:
     return Domain(points=pts, segments=np.array(seg, dtype=np.int64), source=str(path))
 
 
-def obtuse_boundary_sides(mesh) -> int:
-    """Boundary segments (exactly one incident triangle) whose triangle is obtuse at the apex, decided in
-    exact rational arithmetic on the stored doubles, independently of the C++ certificate."""
+def obtuse_constraint_sides(mesh, *, boundary_only: bool = False) -> int:
+    """Sides of constrained segments (one per incident triangle: two for an interface or dangling segment;
+    only segments with exactly one triangle when boundary_only) whose angle opposite the segment is obtuse,
+    decided in exact rationals on the stored doubles, independently of the C++ certificate."""
     apex: dict[tuple[int, int], list[int]] = {tuple(sorted(map(int, s))): [] for s in mesh.segments}
     for t in np.asarray(mesh.triangles):
         for i in range(3):
@@ -36,11 +37,18 @@ def obtuse_boundary_sides(mesh) -> int:
                 apex[k].append(int(t[i]))
     p = [(Fraction(x), Fraction(y)) for x, y in np.asarray(mesh.points)]
     bad = 0
-    for (a, b), c in apex.items():
-        if len(c) == 1:
-            (ax, ay), (bx, by), (cx, cy) = p[a], p[b], p[c[0]]
+    for (a, b), cs in apex.items():
+        if boundary_only and len(cs) != 1:
+            continue
+        for c in cs:
+            (ax, ay), (bx, by), (cx, cy) = p[a], p[b], p[c]
             bad += (ax - cx) * (bx - cx) + (ay - cy) * (by - cy) < 0
     return bad
+
+
+def obtuse_boundary_sides(mesh) -> int:
+    """Boundary segments (exactly one incident triangle) whose triangle is obtuse at the apex (exact)."""
+    return obtuse_constraint_sides(mesh, boundary_only=True)
 
 
 def non_delaunay_edges(mesh) -> int:

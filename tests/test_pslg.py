@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import json
 import math
-from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
@@ -21,28 +20,9 @@ from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import load_domain
 from nonobtuse.io.triangle import read_poly
 from nonobtuse.validate import validate_domain
-from refine_helpers import SHARED
+from refine_helpers import SHARED, obtuse_constraint_sides
 
 PINS = json.loads((Path(__file__).parent / "data" / "pslg_corpus.json").read_text())["files"]
-
-
-def obtuse_constraint_sides(mesh) -> int:
-    """Sides of constrained segments (one per incident triangle: two for an interface or dangling segment)
-    whose angle opposite the segment is obtuse, decided in exact rationals on the stored doubles,
-    independently of the C++ certificate."""
-    apex: dict[tuple[int, int], list[int]] = {tuple(sorted(map(int, s))): [] for s in mesh.segments}
-    for t in np.asarray(mesh.triangles):
-        for i in range(3):
-            k = tuple(sorted((int(t[(i + 1) % 3]), int(t[(i + 2) % 3]))))
-            if k in apex:
-                apex[k].append(int(t[i]))
-    p = [(Fraction(x), Fraction(y)) for x, y in np.asarray(mesh.points)]
-    bad = 0
-    for (a, b), cs in apex.items():
-        for c in cs:
-            (ax, ay), (bx, by), (cx, cy) = p[a], p[b], p[c]
-            bad += (ax - cx) * (bx - cx) + (ay - cy) * (by - cy) < 0
-    return bad
 
 
 def steiner_points_on_input_segments(domain: Domain, mesh) -> bool:
