@@ -5,17 +5,6 @@
 #include "nonobtuse/plc_predicates.h"
 
 namespace nonobtuse::bindings {
-namespace {
-
-std::vector<PlcPoint> to_points3(const DoubleArray& a) {
-  require_shape(a, 3, "points");
-  std::vector<PlcPoint> out(a.ndim() == 2 ? a.shape(0) : 0);
-  auto* d = a.data();
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = {d[3 * i], d[3 * i + 1], d[3 * i + 2]};
-  return out;
-}
-
-}  // namespace
 
 void bind_plc(py::module_& m) {
   m.def(

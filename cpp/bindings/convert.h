@@ -31,6 +31,25 @@ inline std::vector<Point2> to_points2(const DoubleArray& a, const char* name = "
   return out;
 }
 
+inline std::vector<Point3> to_points3(const DoubleArray& a, const char* name = "points") {
+  require_shape(a, 3, name);
+  std::vector<Point3> out(a.ndim() == 2 ? a.shape(0) : 0);
+  auto* d = a.data();
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = {d[3 * i], d[3 * i + 1], d[3 * i + 2]};
+  return out;
+}
+
+inline DoubleArray from_points3(const std::vector<Point3>& pts) {
+  DoubleArray a({static_cast<py::ssize_t>(pts.size()), py::ssize_t{3}});
+  auto* d = a.mutable_data();
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    d[3 * i] = pts[i].x;
+    d[3 * i + 1] = pts[i].y;
+    d[3 * i + 2] = pts[i].z;
+  }
+  return a;
+}
+
 template <std::size_t K>
 std::vector<std::array<int, K>> to_index_rows(const IndexArray& a, std::size_t n_points, const char* name) {
   require_shape(a, K, name);

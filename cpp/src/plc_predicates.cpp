@@ -18,7 +18,7 @@ namespace {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using P3 = K::Point_3;
 
-P3 to_cgal(const PlcPoint& p) { return P3(p[0], p[1], p[2]); }
+P3 to_cgal(const PlcPoint& p) { return P3(p.x, p.y, p.z); }
 
 // Number of shared vertices of two triangles, and their positions in each.
 struct Shared {

@@ -11,12 +11,6 @@
 
 namespace nonobtuse {
 
-struct Point3 {
-  double x = 0.0;
-  double y = 0.0;
-  double z = 0.0;
-};
-
 using Tetrahedron = std::array<int, 4>;  // indices, positively oriented
 
 // A boundary simplex (face or segment) whose open diametral sphere holds a mesh vertex.

@@ -4,9 +4,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "nonobtuse/types.h"
+
 namespace nonobtuse {
 
-using PlcPoint = std::array<double, 3>;
+using PlcPoint = Point3;
 using PlcTriangle = std::array<int, 3>;
 
 // Exact sign of orient3d(a, b, c, d) for every row (a, b, c, d) of `quads`: +1 when d is on the positive side

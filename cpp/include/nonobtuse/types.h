@@ -12,6 +12,12 @@ struct Point2 {
   double y = 0.0;
 };
 
+struct Point3 {
+  double x = 0.0;
+  double y = 0.0;
+  double z = 0.0;
+};
+
 using Segment = std::array<int, 2>;   // indices into a point list
 using Triangle = std::array<int, 3>;  // indices, counter-clockwise
 
