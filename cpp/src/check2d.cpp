@@ -4,8 +4,6 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
-#include <map>
-#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -54,25 +52,39 @@ void require_counter_clockwise(const Mesh2& mesh) {
   }
 }
 
-// Collects each edge's sides. Invariant: at most one triangle per side of an edge; the triangle traversing the
-// edge as (a, b), a < b, lies on the left.
-std::map<Segment, EdgeReport> collect_sides(const Mesh2& mesh) {
-  std::map<Segment, EdgeReport> edges;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto& tri = mesh.triangles[t];
+// Collects each edge's sides, in increasing (a, b) order. Invariant: at most one triangle per side of an edge;
+// the triangle traversing the edge as (a, b), a < b, lies on the left. A sorted vector of half-edges rather
+// than a map: one allocation, and sorting 3m keys beats 3m tree insertions by a wide margin at 1e6 triangles.
+std::vector<EdgeReport> collect_sides(const Mesh2& mesh) {
+  struct HalfEdge {
+    Segment key;
+    int triangle, corner;
+  };
+  std::vector<HalfEdge> half;
+  half.reserve(3 * mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) {
-      int u = tri[(k + 1) % 3], v = tri[(k + 2) % 3], apex = tri[k];
-      Segment key{std::min(u, v), std::max(u, v)};
-      auto [it, fresh] = edges.try_emplace(key, EdgeReport{key, EdgeKind::Interior, {}, {}, true});
-      EdgeSide& side = u < v ? it->second.left : it->second.right;
-      if (side.triangle >= 0)
-        throw InvalidInput("edge (" + std::to_string(key[0]) + ", " + std::to_string(key[1]) + ") has " +
-                           describe_triangle(mesh, side.triangle) + " and " + describe_triangle(mesh, t) +
-                           " on the same side: the mesh is not a consistently oriented manifold");
-      side.triangle = static_cast<int>(t);
-      side.apex = apex;
-      side.angle = classify_angle(at(mesh, u), at(mesh, apex), at(mesh, v));
+      int u = mesh.triangles[t][(k + 1) % 3], v = mesh.triangles[t][(k + 2) % 3];
+      half.push_back({{std::min(u, v), std::max(u, v)}, static_cast<int>(t), k});
     }
+  std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
+    return x.key != y.key ? x.key < y.key : x.triangle < y.triangle;
+  });
+  std::vector<EdgeReport> edges;
+  edges.reserve(half.size() / 2 + 1);
+  for (const HalfEdge& h : half) {
+    if (edges.empty() || edges.back().edge != h.key)
+      edges.push_back(EdgeReport{h.key, EdgeKind::Interior, {}, {}, true});
+    const auto& tri = mesh.triangles[h.triangle];
+    int u = tri[(h.corner + 1) % 3], v = tri[(h.corner + 2) % 3], apex = tri[h.corner];
+    EdgeSide& side = u < v ? edges.back().left : edges.back().right;
+    if (side.triangle >= 0)
+      throw InvalidInput("edge (" + std::to_string(h.key[0]) + ", " + std::to_string(h.key[1]) + ") has " +
+                         describe_triangle(mesh, side.triangle) + " and " + describe_triangle(mesh, h.triangle) +
+                         " on the same side: the mesh is not a consistently oriented manifold");
+    side.triangle = h.triangle;
+    side.apex = apex;
+    side.angle = classify_angle(at(mesh, u), at(mesh, apex), at(mesh, v));
   }
   return edges;
 }
@@ -100,24 +112,26 @@ std::vector<EdgeReport> classify_edges(const Mesh2& mesh) {
     throw InvalidInput("triangle_region has " + std::to_string(mesh.triangle_region.size()) + " entries for " +
                        std::to_string(mesh.triangles.size()) + " triangles");
   require_counter_clockwise(mesh);
-  std::map<Segment, EdgeReport> edges = collect_sides(mesh);
-  std::set<Segment> constrained;
+  std::vector<EdgeReport> edges = collect_sides(mesh);
+  auto find = [&edges](const Segment& key) {
+    auto it = std::lower_bound(edges.begin(), edges.end(), key,
+                               [](const EdgeReport& e, const Segment& k) { return e.edge < k; });
+    return it != edges.end() && it->edge == key ? it : edges.end();
+  };
+  std::vector<char> constrained(edges.size(), 0);
   for (std::size_t s = 0; s < mesh.segments.size(); ++s) {
     auto [a, b] = mesh.segments[s];
-    Segment key{std::min(a, b), std::max(a, b)};
-    if (edges.find(key) == edges.end())
+    auto it = find(Segment{std::min(a, b), std::max(a, b)});
+    if (it == edges.end())
       throw InvalidInput("segment " + std::to_string(s) + " (" + std::to_string(a) + ", " + std::to_string(b) +
                          ") is not an edge of any triangle");
-    constrained.insert(key);
+    constrained[it - edges.begin()] = 1;
   }
-  std::vector<EdgeReport> out;
-  out.reserve(edges.size());
-  for (auto& [key, e] : edges) {
-    e.kind = kind_of(mesh, e, constrained.count(key) > 0);
-    e.locally_delaunay = locally_delaunay(mesh, e);
-    out.push_back(e);
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    edges[i].kind = kind_of(mesh, edges[i], constrained[i] != 0);
+    edges[i].locally_delaunay = locally_delaunay(mesh, edges[i]);
   }
-  return out;
+  return edges;
 }
 
 }  // namespace nonobtuse
