@@ -1,30 +1,56 @@
-"""The paper's Figure 6 family (section 5.1): one obtuse triangle whose repair travels along a chain of
-interfaces.
+"""The paper's Figure 6 phenomenon (section 5.1): one obtuse triangle whose repair must travel through n
+interfaces, for every refinement method, not only for midpoint splitting.
 
-The paper shows a "quality" PSLG (every angle between 30 and 120 degrees) whose triangles are all
-constrained, with a single obtuse triangle (120 degrees at p, opposite edge o_1), and states that repairing
-o_1 induces Omega(n) Steiner points, one per highlighted edge. The picture itself is not in our text copy, so
-this script builds the closest family we can state exactly: a zigzag strip of n + 1 isosceles triangles with
-apex angle `apex` (default 30 degrees, base angles 75), every edge a constraint (the n highlighted edges
-e_1..e_n are the interfaces between consecutive triangles, the rails the outer boundary), plus the triangle
-(p, v_0, v_1) on e_0 = o_1 with a 120 degree angle at p, the only obtuse one. A Steiner point on e_k within
-cos(apex) |e_k| of the vertex it shares with e_{k+1} lies inside the diametral disk of e_{k+1} (Figure 6's
-mechanism), so a method that repairs each edge with one point near the foot of its encroacher (midpoint
-splitting: Triangle -pD, CGAL) walks the whole strip. The sensitive greedy need not: on e_{k+1} it puts its
-first point at the start of e_{k+2}'s forbidden interval and its next ones out of it where it can, and the
-cascade stops after a few edges (measured: the same handful of points for every n, 8 with propagation depth
-6 in results/figure6_propagation.csv, against n + 3 for Triangle -pD and CGAL). So this family shows the
-Omega(n) of midpoint refinement, not a lower bound for every method; we did not find a quality family that
-forces one point per edge on every refinement (a random search over zigzag strips with nonobtuse triangles
-found none where greedy's count grows with n).
+The paper's figure is not in our text copy; it is described as a "quality" PSLG (angles between 30 and 120
+degrees) with one obtuse triangle (120 degrees at p, opposite the edge o_1) whose repair "necessarily induces"
+one Steiner point on each of n highlighted edges. :func:`figure6` builds a family for which we can prove
+that claim for every valid refinement; its triangles are thin layers (needles), not the paper's quality
+triangles -- see "Why not quality" below.
 
-We measure, for n from 10 to 10,000, the Steiner points of nonobtuse.refine (greedy), Triangle -pD and CGAL
-make_conforming_Gabriel_2, and fit the slope of each against n.
+The family, for n >= 1 (H = 0.3, y_k = k H / n):
+- the highlighted edges e_k = (-1, y_k) -- (1, y_k), k = 1..n: interior interfaces of length 2 (n thin
+  layers), e_1 = o_1;
+- p = (0, y_1 - 1/sqrt(3)), an isolated input point below e_1: the triangle (-1, y_1), (1, y_1), p has
+  120 degrees at p, the only obtuse angle of the input;
+- the outer boundary, a regular 24-gon of radius 3 about the origin (its edges' diametral disks reach
+  no closer than 3 (cos 7.5 - sin 7.5) > 2.5 to the origin, so they are empty).
+Every other side is initially fine: the endpoint (+-1, y_j) is at squared distance 1 + (y_j - y_k)^2 > 1 from
+the centre (0, y_k) of e_k's diametral disk (radius 1); p sees only e_1 (the segment from p to any point of
+e_k, k >= 2, crosses e_1 at |x| < 1); the outer vertices are at distance >= 2.9 from every centre.
 
-    PYTHONPATH=src .venv/bin/python experiments/figure6_propagation.py [--quick] [--apex DEG]
+Lower bound (valid = Steiner points only on constraint segments, and every constraint subsegment has, on each
+side, no visible vertex strictly inside its open diametral disk). Lemma: if a vertex v of a valid refinement
+sees the constraint segment e = [a, b] and lies strictly inside its diametral disk, with foot f on e at
+distance h, and a and b are farther than h from f along e, then the refinement has a Steiner point on e within
+h of f. Proof: the subsegment [s, t] containing f has v strictly outside or on its disk, i.e.
+(f - s)(t - f) <= h^2 (v is at height h over f), so min(f - s, t - f) <= h; that endpoint is a vertex on e
+other than a, b. Induction: p forces a Steiner point on e_1 in I_1 = [-h_1, h_1], h_1 = y_1 - p_y = 1/sqrt(3);
+a point (x, y_k) with x in I_k = [-(h_1 + (y_k - y_1)), +(h_1 + (y_k - y_1))] sees e_{k+1} (nothing lies
+between the layers) at height y_{k+1} - y_k, strictly inside its disk because
+(h_1 + H)^2 + (H/n)^2 < 0.88^2 + 0.01 < 1, and |x| + h < 0.9 keeps a, b farther than h; so every refinement
+has a Steiner point in I_{k+1} on e_{k+1}. Hence every valid refinement has >= n Steiner points (the line
+"n" on the plot). :func:`forced_intervals` computes the I_k exactly (rationals of the stored coordinates)
+and the test checks the invariant for small n.
 
-Writes experiments/results/figure6_propagation.csv and .png and prints the table and the fitted slopes.
---quick: n up to 1,000.
+Why not quality: with the 30-120 degree bound, the triangle of the input CDT on the side of e_{k+1} facing
+e_k has base angles >= 30 degrees, so a forcing point q of e_k lies in a corner of e_{k+1}'s disk seen from
+the corner c at an angle phi >= 30 degrees. Then the forced interval on e_{k+1} is [rho (cos phi - sin phi),
+rho (cos phi + sin phi)] from c (rho = |cq|): it reaches from within 0.27 of its length of c to as far as
+L / (cos phi + sin phi) (beyond that it includes the far end, an input vertex, and the chain stops). A
+numerical search over period-2 zigzag/herringbone chains (congruent segments rotated +-theta, with and
+without filler points) found none whose forced intervals stay strictly inside the next disk for more than a
+few steps; the only chains that propagate indefinitely are the near-parallel ones, where the interval grows
+by 2 h per layer and the layer spacing must be O(1/n) of the segment length. (The strip of isosceles
+triangles the paper's picture suggests propagates under midpoint splitting only: there our greedy stops
+after 8 points at every n while Triangle -pD and CGAL need n + 3.)
+
+We refine each instance with nonobtuse.refine (greedy and project-flip), Triangle -pD and CGAL
+make_conforming_Gabriel_2, for n from 10 to 10,000:
+
+    PYTHONPATH=src .venv/bin/python experiments/figure6_propagation.py [--quick]
+
+Writes experiments/results/figure6_propagation.csv and .png (--quick: n up to 1,000, *_quick.* files) and
+prints the table and the least-squares slope of each count against n.
 """
 
 from __future__ import annotations
@@ -33,6 +59,7 @@ import argparse
 import csv
 import math
 import sys
+from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
@@ -41,46 +68,74 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(ROOT / "experiments")]  # nonobtuse: installed or PYTHONPATH=src
 
 import nonobtuse  # noqa: E402
-from bench_refine2d import cgal_gabriel, triangle_pd  # noqa: E402
+from bench_refine2d import cgal_gabriel  # noqa: E402
 from nonobtuse import Domain  # noqa: E402
 from nonobtuse.check import check_mesh  # noqa: E402
+from nonobtuse.peers import triangle_pd  # noqa: E402
+
+STACK_HEIGHT = 0.3  # H: total height of the n layers (segment length 2)
+OUTER_VERTICES, OUTER_RADIUS = 24, 3.0
 
 
-def figure6(n: int, apex: float = 30.0) -> Domain:
-    """The strip: v_k = (k sin(apex/2), 0) for even k and (k sin(apex/2), cos(apex/2)) for odd k, k = 0..n+1
-    (unit edges e_k = (v_k, v_{k+1}), apex angle at every v_k between e_{k-1} and e_k), rails v_k v_{k+2}, and
-    p outside e_0 with a 120 degree angle at p. Points: n + 3, float64; segments: every edge (closed outer
-    loop p, v_0, bottom rail, v_{n+1} or v_n, top rail, v_1, p, plus the e_k inside)."""
-    half = math.radians(apex) / 2
-    v = [(k * math.sin(half), 0.0 if k % 2 == 0 else math.cos(half)) for k in range(n + 2)]
-    a, c = np.array(v[0]), np.array(v[1])
-    mid, d = (a + c) / 2, c - a
-    outward = np.array([-d[1], d[0]]) / np.linalg.norm(d)  # left of v_0 -> v_1: away from v_2
-    p = mid + outward * np.linalg.norm(d) / 2 * math.tan(math.radians(30))  # isosceles, 120 degrees at p
-    pts = np.array(v + [tuple(p)])
-    P = n + 2
-    bottom, top = list(range(0, n + 2, 2)), list(range(1, n + 2, 2))
-    segs = [(P, 0), (1, P)] + [(k, k + 1) for k in range(n + 1)]
-    segs += [(r[i], r[i + 1]) for r in (bottom, top) for i in range(len(r) - 1)]
-    return Domain(points=pts, segments=np.array(segs, dtype=np.int64), source=f"figure6(n={n}, apex={apex})")
+def figure6(n: int) -> Domain:
+    """The family described in the module docstring: points (24 + 2 n + 1, 2) float64 -- the outer 24-gon
+    (counter-clockwise), then e_k's endpoints (-1, y_k), (1, y_k) for k = 1..n, then p last; segments: the
+    outer loop, then e_1..e_n (segment 24 + k - 1 is e_k). One region, no holes."""
+    if n < 1:
+        raise ValueError(f"n must be >= 1, got {n}")
+    angles = 2 * np.pi * np.arange(OUTER_VERTICES) / OUTER_VERTICES
+    outer = OUTER_RADIUS * np.column_stack([np.cos(angles), np.sin(angles)])
+    y = np.arange(1, n + 1) * (STACK_HEIGHT / n)
+    ends = np.column_stack([np.tile([-1.0, 1.0], n), np.repeat(y, 2)])
+    p = np.array([[0.0, y[0] - 1 / math.sqrt(3)]])
+    loop = np.column_stack([np.arange(OUTER_VERTICES), (np.arange(OUTER_VERTICES) + 1) % OUTER_VERTICES])
+    layers = OUTER_VERTICES + np.arange(2 * n).reshape(n, 2)
+    return Domain(
+        points=np.vstack([outer, ends, p]),
+        segments=np.vstack([loop, layers]).astype(np.int64),
+        source=f"figure6(n={n})",
+    )
 
 
-def measure(n: int, apex: float) -> dict:
-    d = figure6(n, apex)
-    r = nonobtuse.refine(d)
-    if r.converged and not check_mesh(r.mesh).ok:
-        raise nonobtuse.InternalError(f"figure6 n={n}: converged but the exact check fails")
-    g = r.stats["diagnosis"]
-    return {
-        "n": n,
-        "greedy_steiner": r.stats["steiner_points"],
-        "greedy_status": r.status,
-        "lower_bound": r.stats["lower_bound"],
-        "propagation_depth": g["propagation_depth"],
-        "initial_violations": g["initial_violations"],
-        "triangle_pD_steiner": triangle_pd(d)[0],
-        "cgal_gabriel_steiner": cgal_gabriel(d)[0],
-    }
+def forced_intervals(domain: Domain) -> list[tuple[Fraction, Fraction]]:
+    """The intervals I_k = [lo, hi] (x coordinates, exact rationals of the stored floats) of e_k, k = 1..n,
+    in which every valid refinement of ``figure6(n)`` has a Steiner point (module docstring, Lemma).
+    Raises ValueError where the induction's hypotheses fail: I_k not strictly inside e_{k+1}'s diametral
+    disk, or an end of e_k within h of the foot. Cost: O(n) rational operations."""
+    pts = domain.points
+    heights = [Fraction(float(y)) for y in pts[OUTER_VERTICES:-1:2, 1]]
+    p = [Fraction(float(c)) for c in pts[-1]]
+    intervals, (f_lo, f_hi), below = [], (p[0], p[0]), p[1]
+    for k, y in enumerate(heights):  # the forcing points lie in [f_lo, f_hi] at height `below`
+        h = y - below
+        # strictly inside the disk of e_k (centre (0, y), radius 1): both ends of the convex range of feet
+        if any(x * x + h * h >= 1 for x in (f_lo, f_hi)):
+            raise ValueError(f"I_{k} is not strictly inside the diametral disk of e_{k + 1}")
+        if f_lo - h <= -1 or f_hi + h >= 1:
+            raise ValueError(f"an end of e_{k + 1} lies within h of a foot")
+        intervals.append((f_lo - h, f_hi + h))
+        (f_lo, f_hi), below = intervals[-1], y
+    return intervals
+
+
+def measure(n: int) -> dict:
+    d = figure6(n)
+    row: dict = {"n": n, "lower_bound": len(forced_intervals(d))}
+    for strategy in ("greedy", "project-flip"):
+        r = nonobtuse.refine(d, strategy=strategy)
+        if r.converged and not check_mesh(r.mesh).ok:
+            raise nonobtuse.InternalError(f"figure6 n={n} {strategy}: converged but the exact check fails")
+        row[f"{strategy}_steiner"], row[f"{strategy}_status"] = r.stats["steiner_points"], r.status
+        row[f"{strategy}_seconds"] = round(r.stats["seconds"], 3)
+        if strategy == "greedy":  # propagation is tracked by the greedy strategy only
+            row["propagation_depth"] = r.stats["diagnosis"]["propagation_depth"]
+    for key, peer in (("triangle_pD", triangle_pd), ("cgal_gabriel", cgal_gabriel)):
+        row[f"{key}_steiner"], seconds = peer(d)
+        row[f"{key}_seconds"] = round(seconds, 3)
+    return row
+
+
+KEYS = ("greedy_steiner", "project-flip_steiner", "triangle_pD_steiner", "cgal_gabriel_steiner")
 
 
 def slope(rows: list, key: str) -> float:
@@ -91,27 +146,26 @@ def slope(rows: list, key: str) -> float:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true", help="n up to 1,000")
-    ap.add_argument("--apex", type=float, default=30.0, help="apex angle of the strip triangles (30..120)")
+    ap.add_argument("--quick", action="store_true", help="n up to 1,000; writes *_quick.* files")
     args = ap.parse_args()
     ns = [10, 30, 100, 300, 1000] + ([] if args.quick else [3000, 10000])
-    keys = ("greedy_steiner", "triangle_pD_steiner", "cgal_gabriel_steiner")
     rows = []
     for n in ns:
-        rows.append(measure(n, args.apex))
+        rows.append(measure(n))
         print(" ".join(f"{k}={v}" for k, v in rows[-1].items()), flush=True)
     out = ROOT / "experiments" / "results"
     out.mkdir(parents=True, exist_ok=True)
-    with open(out / "figure6_propagation.csv", "w", newline="") as fh:
+    stem = "figure6_propagation" + ("_quick" if args.quick else "")
+    with open(out / f"{stem}.csv", "w", newline="") as fh:
         w = csv.DictWriter(fh, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
-    for k in keys:
+    for k in KEYS:
         print(f"slope {k}: {slope(rows, k):.3f} Steiner points per highlighted edge")
-    plot(rows, keys, args.apex, out / "figure6_propagation.png")
+    plot(rows, out / f"{stem}.png")
 
 
-def plot(rows: list, keys: tuple, apex: float, path: Path) -> None:
+def plot(rows: list, path: Path) -> None:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -119,10 +173,15 @@ def plot(rows: list, keys: tuple, apex: float, path: Path) -> None:
 
     n = np.array([r["n"] for r in rows])
     fig, ax = plt.subplots(figsize=(6, 4))
-    for k, mk in zip(keys, "os^"):
-        ax.loglog(n, [max(r[k], 1) for r in rows], mk + "-", label=f"{k} (slope {slope(rows, k):.2f})")
-    ax.loglog(n, n, "k:", label="n (one point per highlighted edge)")
-    ax.set(xlabel="highlighted edges n", ylabel="Steiner points", title=f"Figure 6 family, apex {apex:g} deg")
+    for k, mk in zip(KEYS, "os^v"):
+        label = k.removesuffix("_steiner")
+        ax.loglog(n, [max(r[k], 1) for r in rows], mk + "-", label=f"{label} (slope {slope(rows, k):.2f})")
+    ax.loglog(n, [r["lower_bound"] for r in rows], "k:", label="n: proven lower bound, every method")
+    ax.set(
+        xlabel="highlighted edges n (layers)",
+        ylabel="Steiner points",
+        title="Figure 6 family: one 120° triangle, n thin layers",
+    )
     ax.legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(path, dpi=120)

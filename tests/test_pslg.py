@@ -206,10 +206,9 @@ def test_budget_exhausted_is_a_status_on_an_interface():
 
 
 def test_propagation_is_diagnosed_along_a_chain():
-    # The Figure 6 family (experiments/figure6_propagation.py) with 12 highlighted edges: one initial
-    # violation (the 120 degree triangle at p), whose repair puts Steiner points on several input edges (at
-    # least e_0 and the interface e_1 it encroaches: a point on e_0 = (v0, v1) at its foot, half way, is
-    # within cos(30) of v1, inside e_1's disk).
+    # The Figure 6 family (experiments/figure6_propagation.py) with 12 layers: one initial violation (the
+    # 120 degree triangle at p under e_1), whose repair must put a Steiner point on every layer (the forced
+    # intervals, tests/test_figure6.py), so on at least the 2 input edges e_1 and e_2.
     import sys
 
     sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "experiments"))

@@ -1,0 +1,96 @@
+"""The Figure 6 family (experiments/figure6_propagation.py): the input is valid except for its one designated
+obtuse side, the forced intervals of the lower bound hold exactly, and every refinement we run puts a Steiner
+point in each of them (so has >= n points) with an exact certificate."""
+
+from __future__ import annotations
+
+import sys
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import nonobtuse
+from nonobtuse.check import check_mesh
+from nonobtuse.triangulate import triangulate
+from nonobtuse.validate import validate_domain
+from refine_helpers import obtuse_constraint_sides
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "experiments"))
+from figure6_propagation import OUTER_VERTICES, figure6, forced_intervals  # noqa: E402
+
+NS = (10, 40)
+
+
+def layer(domain, k: int) -> tuple[tuple[Fraction, Fraction], tuple[Fraction, Fraction]]:
+    """The endpoints of e_k (k = 1..n) as exact rationals."""
+    a, b = domain.segments[OUTER_VERTICES + k - 1]
+    return tuple((Fraction(float(x)), Fraction(float(y))) for x, y in domain.points[[a, b]])
+
+
+def strictly_in_diametral_disk(q, a, b) -> bool:
+    # q sees the diameter ab at an angle > 90 degrees: (q - a).(q - b) < 0, in exact rationals
+    return (q[0] - a[0]) * (q[0] - b[0]) + (q[1] - a[1]) * (q[1] - b[1]) < 0
+
+
+@pytest.mark.parametrize("n", NS)
+def test_input_is_valid_and_its_only_violation_is_p_under_o1(n):
+    d = figure6(n)
+    validate_domain(d)  # raises InvalidInputError on a bad PSLG
+    offenders = check_mesh(triangulate(d)).offenders
+    assert obtuse_constraint_sides(triangulate(d)) == 1  # independent rational count: one obtuse side
+    (o,) = offenders
+    # the lower side of e_1 = o_1 (segment 24, points 24, 25), apex p (the last point), 120 degrees:
+    # p lies 1/sqrt(3) below the midpoint of a segment of half-length 1, so tan(half the angle) = sqrt(3)
+    assert tuple(sorted(o.edge)) == (OUTER_VERTICES, OUTER_VERTICES + 1) and o.apex == len(d.points) - 1
+    assert o.degrees == pytest.approx(120.0, abs=1e-9)
+
+
+@pytest.mark.parametrize("n", NS)
+def test_forced_intervals_propagate_through_every_layer(n):
+    d = figure6(n)
+    intervals = forced_intervals(d)
+    assert len(intervals) == n
+    p = tuple(Fraction(float(c)) for c in d.points[-1])
+    for k, (lo, hi) in enumerate(intervals, start=1):
+        (ax, y), (bx, _) = layer(d, k)
+        assert ax < lo < hi < bx  # inside the open segment e_k
+        # worked out by hand: I_k = [-w, w] with w = (y_1 - p_y) + (y_k - y_1) = y_k - p_y
+        assert lo == -(y - p[1]) and hi == y - p[1]
+        if k < n:  # (a): both ends (hence the interval: the disk is convex) strictly inside e_{k+1}'s disk
+            a, b = layer(d, k + 1)
+            assert all(strictly_in_diametral_disk((x, y), a, b) for x in (lo, hi))
+    # the first forcing point: p strictly inside e_1's disk, its interval centred at p's foot
+    assert strictly_in_diametral_disk(p, *layer(d, 1))
+
+
+@pytest.mark.parametrize("n", NS)
+@pytest.mark.parametrize("strategy", ["greedy", "project-flip"])
+def test_every_refinement_has_a_steiner_point_in_every_forced_interval(n, strategy):
+    d = figure6(n)
+    res = nonobtuse.refine(d, strategy=strategy)
+    assert res.converged and check_mesh(res.mesh).ok and obtuse_constraint_sides(res.mesh) == 0
+    assert res.stats["steiner_points"] >= n
+    steiner = np.asarray(res.mesh.points)[len(d.points) :]
+    heights = d.points[OUTER_VERTICES::2, 1][:n]
+    # each Steiner point on the layer nearest to it (refine may leave a point a few ulps off its segment's
+    # line when no double lies on it: 1e-16 here, against layer spacings of 0.3 / n)
+    nearest = np.abs(steiner[:, 1, None] - heights[None, :]).argmin(axis=1)
+    assert np.all(np.abs(steiner[:, 1] - heights[nearest]) < 1e-12)
+    for k, (lo, hi) in enumerate(forced_intervals(d), start=1):
+        xs = [Fraction(float(x)) for x in steiner[nearest == k - 1, 0]]
+        assert any(lo <= x <= hi for x in xs), f"no Steiner point of e_{k} in I_{k}"
+    if strategy == "greedy":  # one initial violation whose cascade reaches every layer
+        g = res.stats["diagnosis"]
+        assert g["initial_violations"] == 1 and g["propagation_depth"] == n
+
+
+def test_forced_intervals_refuse_a_family_whose_chain_breaks():
+    # Move p down to 0.9 below e_1: I_k = [-x_k, x_k], x_k = 0.9 + (k - 1) h with h = H / n = 0.0075 for
+    # n = 40. I_14 (x = 0.9975, 0.9975^2 + h^2 < 1) is still inside e_15's disk, but its forced interval
+    # would reach 0.9975 + h = 1.005 > 1, past the end of e_15: the induction must stop there.
+    d = figure6(40)
+    d.points[-1, 1] = d.points[OUTER_VERTICES, 1] - 0.9
+    with pytest.raises(ValueError, match="an end of e_15 lies within h"):
+        forced_intervals(d)
