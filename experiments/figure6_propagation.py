@@ -13,10 +13,10 @@ The family, for n >= 1 (H = 0.3, y_k = k H / n):
 - p = (0, y_1 - 1/sqrt(3)), an isolated input point below e_1: the triangle (-1, y_1), (1, y_1), p has
   120 degrees at p, the only obtuse angle of the input;
 - the outer boundary, a regular 24-gon of radius 3 about the origin (its edges' diametral disks reach
-  no closer than 3 (cos 7.5 - sin 7.5) > 2.5 to the origin, so they are empty).
+  no closer than 3 (cos 7.5 - sin 7.5) > 2.5 to the origin, and every inner point is within 1.05 of it).
 Every other side is initially fine: the endpoint (+-1, y_j) is at squared distance 1 + (y_j - y_k)^2 > 1 from
 the centre (0, y_k) of e_k's diametral disk (radius 1); p sees only e_1 (the segment from p to any point of
-e_k, k >= 2, crosses e_1 at |x| < 1); the outer vertices are at distance >= 2.9 from every centre.
+e_k, k >= 2, crosses e_1 at |x| < 1); the outer vertices are at distance >= 2.7 from every centre.
 
 Lower bound (valid = Steiner points only on constraint segments, and every constraint subsegment has, on each
 side, no visible vertex strictly inside its open diametral disk). Lemma: if a vertex v of a valid refinement
@@ -27,22 +27,29 @@ h of f. Proof: the subsegment [s, t] containing f has v strictly outside or on i
 other than a, b. Induction: p forces a Steiner point on e_1 in I_1 = [-h_1, h_1], h_1 = y_1 - p_y = 1/sqrt(3);
 a point (x, y_k) with x in I_k = [-(h_1 + (y_k - y_1)), +(h_1 + (y_k - y_1))] sees e_{k+1} (nothing lies
 between the layers) at height y_{k+1} - y_k, strictly inside its disk because
-(h_1 + H)^2 + (H/n)^2 < 0.88^2 + 0.01 < 1, and |x| + h < 0.9 keeps a, b farther than h; so every refinement
+(h_1 + H)^2 + (H/n)^2 < 0.88^2 + 0.09 < 1, and |x| + h < 0.9 keeps a, b farther than h; so every refinement
 has a Steiner point in I_{k+1} on e_{k+1}. Hence every valid refinement has >= n Steiner points (the line
 "n" on the plot). :func:`forced_intervals` computes the I_k exactly (rationals of the stored coordinates)
 and the test checks the invariant for small n.
 
-Why not quality: with the 30-120 degree bound, the triangle of the input CDT on the side of e_{k+1} facing
-e_k has base angles >= 30 degrees, so a forcing point q of e_k lies in a corner of e_{k+1}'s disk seen from
-the corner c at an angle phi >= 30 degrees. Then the forced interval on e_{k+1} is [rho (cos phi - sin phi),
-rho (cos phi + sin phi)] from c (rho = |cq|): it reaches from within 0.27 of its length of c to as far as
-L / (cos phi + sin phi) (beyond that it includes the far end, an input vertex, and the chain stops). A
-numerical search over period-2 zigzag/herringbone chains (congruent segments rotated +-theta, with and
-without filler points) found none whose forced intervals stay strictly inside the next disk for more than a
-few steps; the only chains that propagate indefinitely are the near-parallel ones, where the interval grows
-by 2 h per layer and the layer spacing must be O(1/n) of the segment length. (The strip of isosceles
-triangles the paper's picture suggests propagates under midpoint splitting only: there our greedy stops
-after 8 points at every n while Triangle -pD and CGAL need n + 3.)
+Why not the paper's 30-120 degree quality: this argument cannot give it while segment lengths stay within a
+bounded ratio of the obtuse triangle's size. If no input angle is below 30 degrees except between two
+constraints, the CDT triangle on the side of e_{k+1} facing e_k has base angles >= 30 degrees and no point of
+e_k inside, and a point beyond a constrained triangle edge does not see e_{k+1}; so every forcing point q of
+I_k is seen from a corner c of e_{k+1} at an angle in [30, 90) degrees, in a sector of opening <= 60 degrees.
+Let rho_k be the largest |q - c| over I_k. Any forced interval [f - a, f + b] of a point at height h needs
+a b >= h^2 (else a subsegment avoids it), so it is at least 2 h >= rho_k long for the farthest q
+(h = rho sin(angle) >= rho / 2): |I_{k+1}| >= rho_k. And I_{k+1} lies in such a sector of e_{k+2}'s disk,
+whose part within distance R of its apex has diameter < R (the disk cuts the sector), so
+rho_{k+1} > |I_{k+1}| >= rho_k: the forced sets never shrink, and the gap (a fixed factor for rho / |e|
+bounded below, as it is once rho cannot shrink and |e| is bounded) makes them grow geometrically until
+they leave the disks. Propagation over n segments under the quality bound therefore needs segments whose
+length relative to the obtuse triangle grows with n, or angles below 30 degrees (this bounds our argument,
+not every argument). A short numerical search over period-2 zigzag / herringbone chains (congruent
+segments rotated +-theta and translated; random restarts and differential evolution over 9 parameters, about
+30 minutes) found no chain propagating further than near-parallel thin layers like these. (The strip of
+isosceles triangles the paper's picture suggests, this script's previous family, propagates under midpoint
+splitting only: there our greedy stopped after 8 points at every n while Triangle -pD and CGAL needed n + 3.)
 
 We refine each instance with nonobtuse.refine (greedy and project-flip), Triangle -pD and CGAL
 make_conforming_Gabriel_2, for n from 10 to 10,000:
