@@ -65,6 +65,18 @@ def test_forced_intervals_propagate_through_every_layer(n):
     assert strictly_in_diametral_disk(p, *layer(d, 1))
 
 
+def assert_a_steiner_point_in_every_forced_interval(d, steiner: np.ndarray) -> None:
+    """steiner: (m, 2) Steiner points of a refinement of d = figure6(n), each assigned to the layer nearest to
+    it (refine may leave a point a few ulps off its segment's line when no double lies on it: 1e-16 here,
+    against layer spacings of 0.3 / n)."""
+    heights = d.points[OUTER_VERTICES:-1:2, 1]
+    nearest = np.abs(steiner[:, 1, None] - heights[None, :]).argmin(axis=1)
+    assert np.all(np.abs(steiner[:, 1] - heights[nearest]) < 1e-12)
+    for k, (lo, hi) in enumerate(forced_intervals(d), start=1):
+        xs = [Fraction(float(x)) for x in steiner[nearest == k - 1, 0]]
+        assert any(lo <= x <= hi for x in xs), f"no Steiner point of e_{k} in I_{k}"
+
+
 @pytest.mark.parametrize("n", NS)
 @pytest.mark.parametrize("strategy", ["greedy", "project-flip"])
 def test_every_refinement_has_a_steiner_point_in_every_forced_interval(n, strategy):
@@ -72,18 +84,22 @@ def test_every_refinement_has_a_steiner_point_in_every_forced_interval(n, strate
     res = nonobtuse.refine(d, strategy=strategy)
     assert res.converged and check_mesh(res.mesh).ok and obtuse_constraint_sides(res.mesh) == 0
     assert res.stats["steiner_points"] >= n
-    steiner = np.asarray(res.mesh.points)[len(d.points) :]
-    heights = d.points[OUTER_VERTICES::2, 1][:n]
-    # each Steiner point on the layer nearest to it (refine may leave a point a few ulps off its segment's
-    # line when no double lies on it: 1e-16 here, against layer spacings of 0.3 / n)
-    nearest = np.abs(steiner[:, 1, None] - heights[None, :]).argmin(axis=1)
-    assert np.all(np.abs(steiner[:, 1] - heights[nearest]) < 1e-12)
-    for k, (lo, hi) in enumerate(forced_intervals(d), start=1):
-        xs = [Fraction(float(x)) for x in steiner[nearest == k - 1, 0]]
-        assert any(lo <= x <= hi for x in xs), f"no Steiner point of e_{k} in I_{k}"
+    assert_a_steiner_point_in_every_forced_interval(d, np.asarray(res.mesh.points)[len(d.points) :])
     if strategy == "greedy":  # one initial violation whose cascade reaches every layer
         g = res.stats["diagnosis"]
         assert g["initial_violations"] == 1 and g["propagation_depth"] == n
+
+
+@pytest.mark.parametrize("n", NS)
+def test_triangle_pD_also_has_a_steiner_point_in_every_forced_interval(n):
+    # the lower bound holds for every method: Triangle's conforming Delaunay refinement too (its Steiner
+    # points may also lie off the layers, in the outer region; only those on a layer are assigned to it)
+    triangle = pytest.importorskip("triangle")
+    d = figure6(n)
+    out = triangle.triangulate({"vertices": d.points, "segments": d.segments}, "pDQ")
+    steiner = out["vertices"][len(d.points) :]
+    on_layers = (np.abs(steiner[:, 0]) < 1) & (steiner[:, 1] > 0) & (steiner[:, 1] <= d.points[-2, 1])
+    assert_a_steiner_point_in_every_forced_interval(d, steiner[on_layers])
 
 
 def test_forced_intervals_refuse_a_family_whose_chain_breaks():
