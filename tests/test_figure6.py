@@ -1,6 +1,6 @@
-"""The Figure 6 family (experiments/figure6_propagation.py): the input is valid except for its one designated
-obtuse side, the forced intervals of the lower bound hold exactly, and every refinement we run puts a Steiner
-point in each of them (so has >= n points) with an exact certificate."""
+"""The Figure 6 families of experiments/figure6_propagation.py (thin layers, and the fan): the input is valid
+except for its one designated obtuse side, the forced intervals of the lower bound hold exactly, and every
+refinement we run puts a Steiner point in each of them (so has >= n points) with an exact certificate."""
 
 from __future__ import annotations
 
@@ -18,7 +18,7 @@ from nonobtuse.validate import validate_domain
 from refine_helpers import obtuse_constraint_sides
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "experiments"))
-from figure6_propagation import OUTER_VERTICES, figure6, forced_intervals  # noqa: E402
+from figure6_propagation import OUTER_VERTICES, fan_forced_intervals, figure6, figure6_fan, forced_intervals  # noqa: E402
 
 NS = (10, 40)
 
@@ -110,3 +110,58 @@ def test_forced_intervals_refuse_a_family_whose_chain_breaks():
     d.points[-1, 1] = d.points[OUTER_VERTICES, 1] - 0.9
     with pytest.raises(ValueError, match="an end of e_15 lies within h"):
         forced_intervals(d)
+
+
+# ---- the fan: n arms 1/n radian apart at one junction ----
+
+
+def arm_parameters(d, k: int, steiner: np.ndarray) -> list[Fraction]:
+    """t of the Steiner points lying on arm k, c + t (end_k - c) with c the origin (a point is on the arm when
+    it is within 1e-12 of its line: refine may leave points a few ulps off)."""
+    e = d.points[k + 1]
+    on = np.abs(steiner[:, 0] * e[1] - steiner[:, 1] * e[0]) < 1e-12
+    ee = Fraction(float(e[0])) ** 2 + Fraction(float(e[1])) ** 2
+    return [
+        (Fraction(float(x)) * Fraction(float(e[0])) + Fraction(float(y)) * Fraction(float(e[1]))) / ee
+        for x, y in steiner[on]
+    ]
+
+
+@pytest.mark.parametrize("n", NS)
+def test_fan_input_has_only_constrained_angles_and_one_violation(n):
+    d = figure6_fan(n)
+    validate_domain(d)
+    mesh = triangulate(d)
+    # every triangle edge is a constraint, so every angle lies between two constraint edges
+    segments = {tuple(sorted(s)) for s in d.segments.tolist()}
+    edges = {tuple(sorted((int(t[i]), int(t[(i + 1) % 3])))) for t in mesh.triangles for i in range(3)}
+    assert edges <= segments and len(mesh.triangles) == n  # (c, p, end_1) and (c, end_k, end_k+1), k < n
+    (o,) = check_mesh(mesh).offenders
+    assert obtuse_constraint_sides(mesh) == 1
+    # arm 1 = (c, end_1) = points (0, 2), seen from p (point 1) at 120 degrees (r chosen by the law of sines)
+    assert tuple(sorted(o.edge)) == (0, 2) and o.apex == 1 and o.degrees == pytest.approx(120.0, abs=1e-9)
+
+
+@pytest.mark.parametrize("n", NS)
+def test_fan_forced_intervals_reach_every_arm(n):
+    d = figure6_fan(n)
+    bounds = fan_forced_intervals(d)
+    assert len(bounds) == n
+    c = (Fraction(0), Fraction(0))
+    r = Fraction(float(d.points[1, 0]))
+    for k, t in enumerate(bounds, start=1):
+        assert r <= t < 1  # the forced sets never shrink (docstring), and stop short of end_k
+        if k < n:  # (a): the far end of (0, t] on arm k strictly inside arm k+1's disk (c is on its circle)
+            e, u = (tuple(Fraction(float(x)) for x in d.points[i]) for i in (k + 1, k + 2))
+            assert strictly_in_diametral_disk((t * e[0], t * e[1]), c, u)
+
+
+@pytest.mark.parametrize(("n", "strategy"), [(10, "greedy"), (40, "greedy"), (10, "project-flip")])
+def test_fan_refinements_have_a_steiner_point_in_every_forced_interval(n, strategy):
+    d = figure6_fan(n)
+    res = nonobtuse.refine(d, strategy=strategy, max_steiner=n * n + 1000)
+    assert res.converged and check_mesh(res.mesh).ok and obtuse_constraint_sides(res.mesh) == 0
+    assert res.stats["steiner_points"] >= n
+    steiner = np.asarray(res.mesh.points)[len(d.points) :]
+    for k, t_max in enumerate(fan_forced_intervals(d), start=1):
+        assert any(0 < t <= t_max for t in arm_parameters(d, k, steiner)), f"no Steiner point of arm {k}"
