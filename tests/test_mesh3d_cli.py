@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib.util
 import json
 
 import numpy as np
@@ -40,6 +41,22 @@ def test_check3d_encroached_exits_1(low_tet, capsys):
     assert main(["check3d", str(low_tet), "--json"]) == EXIT_VIOLATIONS
     deepest = json.loads(capsys.readouterr().out)["gabriel"]["deepest_faces"][0]
     assert deepest["vertex"] == 3  # the apex encroaches the base
+
+
+@pytest.mark.skipif(importlib.util.find_spec("pytetwild") is None,
+                    reason="backend ftetwild needs the pytetwild package, not installed")
+def test_check3d_ftetwild_checks_its_own_boundary(cube, capsys):
+    code = main(["check3d", str(cube), "--backend", "ftetwild", "--json"])
+    out = json.loads(capsys.readouterr().out)
+    assert out["backend"] == "ftetwild"
+    # fTetWild remeshes the surface: every boundary face of its mesh is checked, and no segments (it reports none)
+    assert out["gabriel"]["checked_faces"] == out["boundary_faces"] > 12
+    assert out["gabriel"]["checked_segments"] == 0 and out["encroached_segments"] == 0
+    assert out["steiner_points"] == out["points"] - 8
+    # it moves the surface at most within its envelope (1e-3 of the diagonal): the unit cube's volume stays ~1
+    assert out["control_volumes"]["total_volume"] == pytest.approx(1.0, abs=1e-2)
+    assert code == (EXIT_OK if out["encroached_facets"] == 0 else EXIT_VIOLATIONS)
+    assert out["gabriel"]["ok"] == (out["encroached_facets"] == 0)
 
 
 def test_check3d_invalid_input_exits_2(tmp_path, capsys):
