@@ -328,8 +328,12 @@ def test_split_rules_are_deterministic():
 
 def test_progress_callback_is_called():
     calls = []
-    refine_gabriel(flat_tetrahedron(), max_steiner=40, progress=lambda *a: calls.append(a), progress_every=10)
-    assert [c[0] for c in calls] == [10, 20, 30, 40]
+    res = refine_gabriel(flat_tetrahedron(), max_steiner=40, progress=lambda *a: calls.append(a),
+                         progress_every=10)
+    # Every 10 insertions up to the budget, then once per exact check of the Delaunay mesh (one here: the budget
+    # stops the run before any repair round), with that check's counts.
+    assert [c[0] for c in calls] == [10, 20, 30, 40, 40]
+    assert calls[-1][1:3] == (res.stats["encroached_segments"], res.stats["encroached_facets"])
 
 
 def test_invalid_plc_is_reported():

@@ -4,12 +4,17 @@ from __future__ import annotations
 
 import importlib.util
 import json
+import time
+from pathlib import Path
 
 import numpy as np
 import pytest
 
+from experiments.plc_families import make_plc
 from mesh3d_shapes import CUBE_POINTS, CUBE_TRIANGLES, TET_TRIANGLES, write_off
 from nonobtuse.cli import EXIT_INVALID, EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS, main
+from nonobtuse.mesh3d import check_gabriel
+from nonobtuse.mesh3d.io3d import read_tetmesh_json
 
 # A low tet: the apex (1, 1, 2) is at distance sqrt(1 + 1 + 4) < 2 sqrt(2) from the circumcenter (2, 2, 0)
 # of the base (0,0,0), (4,0,0), (0,4,0), i.e. strictly inside the base's diametral sphere.
@@ -69,7 +74,9 @@ def test_refine3d_converges_and_writes(low_tet, tmp_path, capsys):
     out = tmp_path / "out.json"
     assert main(["refine3d", str(low_tet), "-o", str(out), "--json", "--max-steiner", "500"]) == EXIT_OK
     stats = json.loads(out.read_text())["stats"]
+    assert stats["status"] == "converged"
     assert stats["encroached_facets"] == 0 and stats["encroached_segments"] == 0
+    assert check_gabriel(read_tetmesh_json(out)).ok  # the certificate holds for the mesh as written
     assert stats["steiner_points"] > 0  # the tet is encroached, so the refinement had to add points
     assert isinstance(stats["negative_couplings"], int)
     assert json.loads(capsys.readouterr().out)["output"] == str(out)
@@ -78,3 +85,34 @@ def test_refine3d_converges_and_writes(low_tet, tmp_path, capsys):
 def test_refine3d_without_budget_exits_3(low_tet, tmp_path):
     assert main(["refine3d", str(low_tet), "-o", str(tmp_path / "o.vtu"), "--max-steiner", "0"]) == \
         EXIT_NOT_CONVERGED
+
+
+
+def write_poly(path: Path, plc) -> Path:
+    """A TetGen .poly file of `plc`: one facet per facet id, listing its triangles as polygons (no holes)."""
+    lines = [f"{len(plc.points)} 3 0 0"] + [f"{i} {x!r} {y!r} {z!r}" for i, (x, y, z) in enumerate(plc.points.tolist())]
+    ids = np.unique(plc.facet_ids)
+    lines.append(f"{len(ids)} 0")
+    for f in ids:
+        tris = plc.triangles[plc.facet_ids == f]
+        lines.append(f"{len(tris)} 0")
+        lines += [f"3 {a} {b} {c}" for a, b, c in tris.tolist()]
+    path.write_text("\n".join(lines + ["0", "0"]) + "\n")
+    return path
+
+
+def test_refine3d_time_limit_covers_the_whole_command(tmp_path, capsys):
+    # fan k=12 at 3 degrees, midpoint split: Steiner points crowd at the axis, and an exact check of that state
+    # takes tens of seconds, so a check outside the time limit would show.
+    path = write_poly(tmp_path / "fan.poly", make_plc("fan", 3.0, 12))
+    start = time.perf_counter()
+    code = main(["refine3d", str(path), "-o", str(tmp_path / "f.json"), "--split", "midpoint", "--time-limit",
+                 "2", "--json"])
+    elapsed = time.perf_counter() - start
+    assert code == EXIT_NOT_CONVERGED
+    out = json.loads(capsys.readouterr().out)
+    # It stalls (a split point rounds onto a vertex) or runs out of time; either way the exact check of the
+    # crowded result is cut at the limit (the unlimited check of it took 25 s here), its rows left unchecked.
+    assert out["status"] in ("stalled", "budget_exhausted")
+    assert out["unchecked_faces"] + out["unchecked_segments"] > 0
+    assert elapsed < 2.0 + 5.0  # slack: the final Delaunay mesh, control volumes and writing (not time-limited)

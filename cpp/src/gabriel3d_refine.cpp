@@ -359,6 +359,10 @@ Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool i
     // The check stops at time_limit too: a certificate with unchecked rows is never clean.
     out.certificate = check_gabriel_until(s.points, mesh.boundary_faces, out.segments,
                                           [&] { return refiner.out_of_time(); });
+    if (options.progress)  // each round rebuilds the Delaunay mesh and checks it: seconds on big inputs
+      options.progress({refiner.steiner_on_segments + refiner.steiner_on_facets,
+                        static_cast<long>(out.certificate.segments.size()),
+                        static_cast<long>(out.certificate.faces.size()), refiner.seconds()});
     bool complete = out.certificate.unchecked_faces == 0 && out.certificate.unchecked_segments == 0;
     clean = complete && out.certificate.faces.empty() && out.certificate.segments.empty();
     if (!complete && !stop)

@@ -130,7 +130,7 @@ def check_gabriel(mesh: TetMesh) -> GabrielReport:
 def _print_progress(steiner: int, segments: int, facets: int, seconds: float) -> None:
     print(
         f"refine_gabriel: {steiner} Steiner points, {segments} encroached subsegments, {facets} encroached "
-        f"subfacets in the last scan, {seconds:.1f} s",
+        f"subfacets in the last scan or check, {seconds:.1f} s",
         file=sys.stderr,
     )
 
@@ -161,8 +161,9 @@ def refine_gabriel(
     edge) or when stalled; the status says which. time_limit bounds the refinement and the exact check of
     the result (not the final Delaunay tetrahedralization, O(n log n)); rows the check did not reach are
     counted in stats["unchecked_faces"] / ["unchecked_segments"].
-    progress: True prints a line to stderr every progress_every insertions; a callable receives
-    (steiner_points, encroached_subsegments, encroached_subfacets, seconds).
+    progress: True prints a line to stderr every progress_every insertions and after every exact check of the
+    Delaunay mesh (once per repair round); a callable receives (steiner_points, encroached_subsegments,
+    encroached_subfacets, seconds), the counts of the last scan or check.
     Guarantee: status == "converged" iff the exact check of the returned mesh passes. Deterministic.
     Cost: each round rescans all subsegments and subfacets (O(s log n)); meant for PLCs up to ~1e5 facets.
     Raises InvalidInputError for malformed PLCs (indices, duplicate points, degenerate or crossing facet
