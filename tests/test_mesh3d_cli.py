@@ -9,8 +9,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
 from experiments.plc_families import make_plc
+
 from mesh3d_shapes import CUBE_POINTS, CUBE_TRIANGLES, TET_TRIANGLES, write_off
 from nonobtuse.cli import EXIT_INVALID, EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS, main
 from nonobtuse.mesh3d import check_gabriel
@@ -54,7 +54,8 @@ def test_check3d_ftetwild_checks_its_own_boundary(cube, capsys):
     code = main(["check3d", str(cube), "--backend", "ftetwild", "--json"])
     out = json.loads(capsys.readouterr().out)
     assert out["backend"] == "ftetwild"
-    # fTetWild remeshes the surface: every boundary face of its mesh is checked, and no segments (it reports none)
+    # fTetWild remeshes the surface: every boundary face of its mesh is checked, and no segments (it reports
+    # none)
     assert out["gabriel"]["checked_faces"] == out["boundary_faces"] > 12
     assert out["gabriel"]["checked_segments"] == 0 and out["encroached_segments"] == 0
     assert out["steiner_points"] == out["points"] - 8
@@ -90,7 +91,8 @@ def test_refine3d_without_budget_exits_3(low_tet, tmp_path):
 
 def write_poly(path: Path, plc) -> Path:
     """A TetGen .poly file of `plc`: one facet per facet id, listing its triangles as polygons (no holes)."""
-    lines = [f"{len(plc.points)} 3 0 0"] + [f"{i} {x!r} {y!r} {z!r}" for i, (x, y, z) in enumerate(plc.points.tolist())]
+    lines = [f"{len(plc.points)} 3 0 0"]
+    lines += [f"{i} {x!r} {y!r} {z!r}" for i, (x, y, z) in enumerate(plc.points.tolist())]
     ids = np.unique(plc.facet_ids)
     lines.append(f"{len(ids)} 0")
     for f in ids:
@@ -102,8 +104,8 @@ def write_poly(path: Path, plc) -> Path:
 
 
 def test_refine3d_time_limit_covers_the_whole_command(tmp_path, capsys):
-    # fan k=12 at 3 degrees, midpoint split: Steiner points crowd at the axis, and an exact check of that state
-    # takes tens of seconds, so a check outside the time limit would show.
+    # fan k=12 at 3 degrees, midpoint split: Steiner points crowd at the axis, and an exact check of that
+    # state takes tens of seconds, so a check outside the time limit would show.
     path = write_poly(tmp_path / "fan.poly", make_plc("fan", 3.0, 12))
     start = time.perf_counter()
     code = main(["refine3d", str(path), "-o", str(tmp_path / "f.json"), "--split", "midpoint", "--time-limit",
@@ -115,4 +117,4 @@ def test_refine3d_time_limit_covers_the_whole_command(tmp_path, capsys):
     # crowded result is cut at the limit (the unlimited check of it took 25 s here), its rows left unchecked.
     assert out["status"] in ("stalled", "budget_exhausted")
     assert out["unchecked_faces"] + out["unchecked_segments"] > 0
-    assert elapsed < 2.0 + 5.0  # slack: the final Delaunay mesh, control volumes and writing (not time-limited)
+    assert elapsed < 2.0 + 5.0  # slack: final Delaunay mesh, control volumes and writing (not time-limited)

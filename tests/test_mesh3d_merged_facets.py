@@ -1,5 +1,5 @@
-"""Coplanar triangles of a surface merged into one facet: a non-convex facet with holes that touches itself at a
-vertex, loaded, refined and certified."""
+"""Coplanar triangles of a surface merged into one facet: a non-convex facet with holes that touches itself
+at a vertex, loaded, refined and certified."""
 
 from __future__ import annotations
 
@@ -15,10 +15,11 @@ def grid(x: int, y: int) -> int:
 
 
 def box_with_two_pyramids() -> tuple[np.ndarray, list[list[int]]]:
-    """A box [0, 4]^2 x [0, 1] whose top is a 4 x 4 grid of unit quads (vertices grid(x, y) at z = 1) except cells
-    (1, 1) and (2, 2), which carry pyramids of height 1/2 (apexes 29 and 30). The two footprints share only the
-    vertex (2, 2, 1): the flat part of the top is one facet with two holes that touch at that vertex. Bottom
-    corners 25..28; the side polygons list every top grid vertex on their upper edge (no T-junctions)."""
+    """A box [0, 4]^2 x [0, 1] whose top is a 4 x 4 grid of unit quads (vertices grid(x, y) at z = 1) except
+    cells (1, 1) and (2, 2), which carry pyramids of height 1/2 (apexes 29 and 30). The two footprints share
+    only the vertex (2, 2, 1): the flat part of the top is one facet with two holes that touch at that vertex.
+    Bottom corners 25..28; the side polygons list every top grid vertex on their upper edge (no T-junctions).
+    """
     top = [[x, y, 1.0] for y in range(5) for x in range(5)]
     bottom = [[0, 0, 0], [4, 0, 0], [4, 4, 0], [0, 4, 0]]
     apexes = [[1.5, 1.5, 1.5], [2.5, 2.5, 1.5]]
@@ -26,7 +27,8 @@ def box_with_two_pyramids() -> tuple[np.ndarray, list[list[int]]]:
     faces = []
     for j in range(4):
         for i in range(4):
-            cell = [grid(i, j), grid(i + 1, j), grid(i + 1, j + 1), grid(i, j + 1)]  # counter-clockwise from +z
+            # counter-clockwise seen from +z
+            cell = [grid(i, j), grid(i + 1, j), grid(i + 1, j + 1), grid(i, j + 1)]
             if (i, j) in ((1, 1), (2, 2)):
                 apex = 29 if i == 1 else 30
                 faces += [[cell[k], cell[(k + 1) % 4], apex] for k in range(4)]
@@ -47,8 +49,8 @@ def plc(tmp_path):
 
 
 def test_flat_cells_merge_into_one_facet_with_touching_holes(plc):
-    # The 14 flat quads (2 triangles each, all corners at z = 1) are one facet, numbered 0 (the first triangle is
-    # flat); the 8 pyramid triangles are not coplanar with another or with the top (apexes 1/2 above it): 8
+    # The 14 flat quads (2 triangles each, all corners at z = 1) are one facet, numbered 0 (the first triangle
+    # is flat); the 8 pyramid triangles are not coplanar with another or with the top (apexes 1/2 above it): 8
     # facets. Bottom and 4 sides: 5 facets.
     ids = plc.facet_ids
     flat = (plc.points[plc.triangles][:, :, 2] == 1.0).all(axis=1)

@@ -33,8 +33,8 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="no split may create an edge shorter than this (default: refine_gabriel's)")
     p.add_argument("--time-limit", type=float, default=None,
                    help="seconds for loading, refinement and the exact check of the result (default: "
-                        "refine_gabriel's); the final Delaunay tetrahedralization, the control volumes and the "
-                        "writing (near-linear in the output) come on top")
+                        "refine_gabriel's); the final Delaunay tetrahedralization, the control volumes and "
+                        "the writing (near-linear in the output) come on top")
     p.add_argument("--split", choices=("shells", "midpoint"), default="shells")
     p.add_argument("--fix-orientation", action="store_true", help="reorient inconsistently oriented faces")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
@@ -82,9 +82,9 @@ def run_refine3d(args: argparse.Namespace) -> int:
     if args.time_limit is not None:  # --time-limit covers loading too
         limits["time_limit"] = max(0.0, args.time_limit - (time.perf_counter() - t0))
     result = refine_gabriel(plc, split=args.split, progress=True, **limits)
-    # The certificate is refine_gabriel's exact check of result.mesh, the arrays written below unchanged (float64
-    # coordinates, written exactly); it ran within the time limit, and rows it did not reach make the status
-    # budget_exhausted. A second, unbounded check here would break --time-limit.
+    # The certificate is refine_gabriel's exact check of result.mesh, the arrays written below unchanged
+    # (float64 coordinates, written exactly); it ran within the time limit, and rows it did not reach make the
+    # status budget_exhausted. A second, unbounded check here would break --time-limit.
     stats = {**result.stats, "seconds": time.perf_counter() - t0,
              "negative_couplings": control_volumes3d(result.mesh).negative_couplings}
     write_tetmesh(replace(result.mesh, stats={**result.mesh.stats, **stats}), args.output)
