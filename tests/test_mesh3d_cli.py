@@ -108,8 +108,8 @@ def test_refine3d_time_limit_covers_the_whole_command(tmp_path, capsys):
     # state takes tens of seconds, so a check outside the time limit would show.
     path = write_poly(tmp_path / "fan.poly", make_plc("fan", 3.0, 12))
     start = time.perf_counter()
-    code = main(["refine3d", str(path), "-o", str(tmp_path / "f.json"), "--split", "midpoint", "--time-limit",
-                 "2", "--json"])
+    code = main(["refine3d", str(path), "-o", str(tmp_path / "f.json"), "--split", "midpoint", "--min-length",
+                 "0", "--time-limit", "2", "--json"])
     elapsed = time.perf_counter() - start
     assert code == EXIT_NOT_CONVERGED
     out = json.loads(capsys.readouterr().out)
