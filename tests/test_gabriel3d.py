@@ -13,10 +13,11 @@ import pytest
 from experiments.plc_families import make_plc
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from scipy.spatial import cKDTree
 
 import nonobtuse
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.mesh3d import check_gabriel, refine_gabriel
+from nonobtuse.mesh3d import check_gabriel, load_plc, refine_gabriel
 from nonobtuse.mesh3d.io3d import write_tetmesh
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
@@ -248,7 +249,7 @@ def test_time_limit_bounds_refinement_and_check():
     # crowded at the axis; the exact check of that state alone took 44 s before time_limit covered it.
     plc = make_plc("fan", 3.0, 12)
     start = time.perf_counter()
-    res = refine_gabriel(plc, split="midpoint", time_limit=0.3)
+    res = refine_gabriel(plc, split="midpoint", time_limit=0.3, min_length=0.0)  # no other stop than time
     elapsed = time.perf_counter() - start
     assert elapsed < 0.3 + 5.0  # slack: building the final Delaunay mesh (not time-limited) on a busy machine
     assert res.status == "budget_exhausted"
@@ -319,8 +320,8 @@ def test_fan_midpoint_does_not_crash(theta):
 def test_split_rules_are_deterministic():
     plc = flat_tetrahedron()
     for split in ("shells", "midpoint"):
-        a = refine_gabriel(plc, max_steiner=60, split=split)
-        b = refine_gabriel(plc, max_steiner=60, split=split)
+        a = refine_gabriel(plc, max_steiner=60, split=split, min_length=0.0)  # spins: min_length would end it
+        b = refine_gabriel(plc, max_steiner=60, split=split, min_length=0.0)
         assert a.stats["steiner_points"] == 60
         np.testing.assert_array_equal(a.mesh.points, b.mesh.points)
         np.testing.assert_array_equal(a.mesh.tets, b.mesh.tets)
@@ -328,8 +329,12 @@ def test_split_rules_are_deterministic():
 
 def test_progress_callback_is_called():
     calls = []
-    refine_gabriel(flat_tetrahedron(), max_steiner=40, progress=lambda *a: calls.append(a), progress_every=10)
-    assert [c[0] for c in calls] == [10, 20, 30, 40]
+    res = refine_gabriel(flat_tetrahedron(), max_steiner=40, progress=lambda *a: calls.append(a),
+                         progress_every=10)
+    # Every 10 insertions up to the budget, then once per exact check of the Delaunay mesh (one here: the
+    # budget stops the run before any repair round), with that check's counts.
+    assert [c[0] for c in calls] == [10, 20, 30, 40, 40]
+    assert calls[-1][1:3] == (res.stats["encroached_segments"], res.stats["encroached_facets"])
 
 
 def test_invalid_plc_is_reported():
@@ -364,3 +369,37 @@ def test_schonhardt_prism():
     assert res.stats["steiner_points"] > 0
     if res.status == "converged":
         assert volume(res.mesh) > 0
+
+
+def test_cospherical_repair_faces_get_one_circumcenter():
+    # gc_spot.ply (a smooth closed surface): the repair rounds split Delaunay faces that are not subfacets.
+    # Two such faces on one facet with the same circumcircle (four cocircular points) both used to be split,
+    # the second rounded circumcenter landing 1 or 2 ulps from the first: 19 point pairs 1e-17 of the bounding
+    # box diagonal apart in the converged mesh. Points that close are never needed: the smallest input feature
+    # (subsegment, vertex distance) of this surface is ~1e-3 of the diagonal.
+    path = DATA / "gc_spot.ply"
+    if not path.exists():
+        pytest.skip("../shared/data not present")
+    plc = load_plc(path)
+    res = refine_gabriel(plc)
+    assert res.status == "converged"
+    p = res.mesh.points
+    diag = np.linalg.norm(p.max(axis=0) - p.min(axis=0))
+    closest = cKDTree(p).query(p, k=2)[0][:, 1].min()
+    assert closest > 1e-9 * diag
+
+
+def test_default_min_length_ends_a_small_angle_cascade():
+    # A segment at 1 degree to a facet it ends on: no split rule terminates there. With min_length=0 the
+    # refinement splits down to subsegments of ~1e-17 of the bounding box diagonal and stalls on rounding
+    # (measured: ~4,700 points, 2 s); the default, 1e-6 of the diagonal (here sqrt(12) * 1e-6: the box is
+    # [-1, 1]^3), stops the cascade there.
+    plc = make_plc("segment_facet", 1.0)
+    diag = np.linalg.norm(plc.points.max(axis=0) - plc.points.min(axis=0))
+    res = refine_gabriel(plc, max_steiner=20_000)
+    assert res.stats["min_length"] == 1e-6 * diag
+    assert res.status == "min_length_reached"
+    assert res.stats["smallest_subsegment"] >= 1e-6 * diag
+    assert_result_consistent(res, plc)
+    off = refine_gabriel(plc, max_steiner=2_000, min_length=0.0)  # the budget ends it, far below 1e-6 diag
+    assert off.status != "min_length_reached" and off.stats["min_length"] == 0.0

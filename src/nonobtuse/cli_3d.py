@@ -31,7 +31,10 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="Steiner point budget (default: refine_gabriel's)")
     p.add_argument("--min-length", type=float, default=None,
                    help="no split may create an edge shorter than this (default: refine_gabriel's)")
-    p.add_argument("--time-limit", type=float, default=None, help="seconds (default: refine_gabriel's)")
+    p.add_argument("--time-limit", type=float, default=None,
+                   help="seconds for loading, refinement and the exact check of the result (default: "
+                        "refine_gabriel's); the final Delaunay tetrahedralization, the control volumes and "
+                        "the writing (near-linear in the output) come on top")
     p.add_argument("--split", choices=("shells", "midpoint"), default="shells")
     p.add_argument("--fix-orientation", action="store_true", help="reorient inconsistently oriented faces")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
@@ -68,7 +71,7 @@ def run_check3d(args: argparse.Namespace) -> int:
 
 
 def run_refine3d(args: argparse.Namespace) -> int:
-    from nonobtuse.mesh3d import check_gabriel, control_volumes3d, load_plc, refine_gabriel, write_tetmesh
+    from nonobtuse.mesh3d import control_volumes3d, load_plc, refine_gabriel, write_tetmesh
 
     t0 = time.perf_counter()
     plc = load_plc(args.input, fix_orientation=args.fix_orientation)
@@ -76,13 +79,15 @@ def run_refine3d(args: argparse.Namespace) -> int:
                                   ("time_limit", args.time_limit)) if v is not None}
     print(f"refine3d: {args.input}: {len(plc.points)} points, {len(plc.triangles)} triangles; refining "
           f"({', '.join(f'{k}={v}' for k, v in limits.items()) or 'default limits'})", file=sys.stderr)
+    if args.time_limit is not None:  # --time-limit covers loading too
+        limits["time_limit"] = max(0.0, args.time_limit - (time.perf_counter() - t0))
     result = refine_gabriel(plc, split=args.split, progress=True, **limits)
-    # Convergence is certified by the exact check of the mesh as written, not taken from the status alone.
-    facets, segments = encroached_counts(check_gabriel(result.mesh))
-    stats = {**result.stats, "status": result.status, "encroached_facets": facets,
-             "encroached_segments": segments, "seconds": time.perf_counter() - t0,
+    # The certificate is refine_gabriel's exact check of result.mesh, the arrays written below unchanged
+    # (float64 coordinates, written exactly); it ran within the time limit, and rows it did not reach make the
+    # status budget_exhausted. A second, unbounded check here would break --time-limit.
+    stats = {**result.stats, "seconds": time.perf_counter() - t0,
              "negative_couplings": control_volumes3d(result.mesh).negative_couplings}
     write_tetmesh(replace(result.mesh, stats={**result.mesh.stats, **stats}), args.output)
     print(f"refine3d: {result.status} after {stats['seconds']:.2f} s; wrote {args.output}", file=sys.stderr)
     _print({"input": args.input, "output": args.output, **stats}, args.json)
-    return EXIT_OK if facets == 0 and segments == 0 else EXIT_NOT_CONVERGED
+    return EXIT_OK if result.status == "converged" else EXIT_NOT_CONVERGED

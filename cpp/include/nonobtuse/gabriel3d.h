@@ -54,7 +54,7 @@ enum class Refine3Status : std::int8_t { Converged = 0, BudgetExhausted = 1, Min
 
 struct Refine3Progress {
   long steiner_points = 0;
-  long encroached_segments = 0;  // found by the last scan
+  long encroached_segments = 0;  // found by the last scan (or exact check of the Delaunay mesh)
   long encroached_facets = 0;
   double seconds = 0.0;
 };
@@ -64,7 +64,7 @@ struct Refine3Options {
   double min_length = 0.0;   // no split may create a subsegment (or an edge to a facet Steiner point) shorter
   double time_limit = 60.0;  // seconds
   SplitRule split = SplitRule::Shells;
-  long progress_every = 1000;  // insertions between progress calls
+  long progress_every = 1000;  // insertions between progress calls; one more after each exact check of the mesh
   std::function<void(const Refine3Progress&)> progress;
 };
 
