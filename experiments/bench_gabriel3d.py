@@ -59,7 +59,8 @@ def run_backend(name: str, plc, method: str, backend: str, **options) -> dict[st
     try:
         mesh = tetrahedralize(plc, backend, **options)
     except InvalidInputError as e:
-        return {"input": name, "method": method, "status": f"failed: {str(e)[:40]}"}
+        reason = str(e).replace(f"on {plc.source} ", "")  # no machine paths in the csv
+        return {"input": name, "method": method, "status": f"failed: {reason[:60]}"}
     return measure(name, method, plc, mesh, "ok", time.perf_counter() - t0)
 
 
