@@ -10,19 +10,6 @@ namespace {
 using refine2d::Side;
 using refine2d::State;
 
-// Exact certificate of a mesh as returned (check2d's classifier): the sides of boundary edges (a triangle on one
-// side) and of interfaces (a constrained segment or a region jump with triangles on both sides, each side
-// checked on its own: issue 4) whose triangle is obtuse at the apex opposite the edge.
-long long count_obtuse_boundary(const Mesh2& mesh) {
-  long long bad = 0;
-  for (const EdgeReport& r : classify_edges(mesh)) {
-    if (r.kind == EdgeKind::Interior) continue;
-    for (const EdgeSide* side : {&r.left, &r.right})
-      if (side->triangle >= 0 && side->angle == AngleClass::Obtuse) ++bad;
-  }
-  return bad;
-}
-
 }  // namespace
 
 long long default_steiner_budget(std::size_t n_points) { return 10 * static_cast<long long>(n_points) + 1000; }
@@ -98,7 +85,9 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
 
   RefineResult2 r;
   r.mesh = cdt::to_mesh(st.cdt);
-  r.obtuse_boundary_triangles = count_obtuse_boundary(r.mesh);
+  // The exact certificate of the mesh as returned: the obtuse sides of boundary edges and of interfaces (each side
+  // of a constrained segment or region jump checked on its own: issue 4).
+  r.obtuse_boundary_triangles = count_obtuse_boundary_sides(r.mesh);
   r.steiner_points = st.placed;
   for (const auto& e : st.edges) r.lower_bound += e.lower_bound;
   r.edges = st.edges;
