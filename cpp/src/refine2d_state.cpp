@@ -27,16 +27,17 @@ State::State(const Domain2& d, long long b) : domain(d), n_input(static_cast<int
   cdt::build(cdt, domain);
   if (std::none_of(cdt.finite_faces_begin(), cdt.finite_faces_end(), [](const auto& f) { return f.info().in_domain; }))
     throw InvalidInput("the domain contains no triangle (are all points collinear, or is everything a hole?)");
-  for (const Side& side : boundary_sides()) {
+  const std::vector<Side> sides = boundary_sides();
+  for (const Side& side : sides) {
     int a = side.s->info(), c = side.e->info();
     if (edge_index_.emplace(std::make_pair(std::min(a, c), std::max(a, c)), static_cast<int>(edges.size())).second)
       edges.push_back({{a, c}, 0, 0});  // an interface appears once, as (min, max)
   }
-  convex_polygon = is_convex_polygon();
+  convex_polygon = is_convex_polygon(sides);
 }
 
-bool State::is_convex_polygon() const {
-  for (const Side& side : boundary_sides()) {
+bool State::is_convex_polygon(const std::vector<Side>& sides) const {
+  for (const Side& side : sides) {
     Face_handle f = left_face(side);
     if (!cdt.is_infinite(f->neighbor(f->index(apex(side))))) return false;
   }
@@ -117,8 +118,9 @@ void State::walk_disk(const std::vector<Face_handle>& start, const Point& a, con
   double cx = 0.5 * (a.x() + b.x()), cy = 0.5 * (a.y() + b.y());
   double r2 = 0.25 * CGAL::to_double(CGAL::squared_distance(a, b));
   double reach = r2 * (1 + 1e-9) + 1e-300;  // pruning slack: walk a little too far rather than too little
+  const unsigned walk = new_walk();
   std::vector<Face_handle> stack(start);
-  std::unordered_set<Face_handle> seen(start.begin(), start.end());
+  for (Face_handle f : start) f->info().visit = walk;
   while (!stack.empty()) {
     Face_handle f = stack.back();
     stack.pop_back();
@@ -126,12 +128,12 @@ void State::walk_disk(const std::vector<Face_handle>& start, const Point& a, con
     for (int i = 0; i < 3; ++i) {
       if (f->is_constrained(i)) continue;
       Face_handle g = f->neighbor(i);
-      if (seen.count(g) || cdt.is_infinite(g)) continue;
+      if (g->info().visit == walk || cdt.is_infinite(g)) continue;
       // The union of (face ∩ disk) along the walk stays connected: consecutive faces share a piece of the
       // crossed edge inside the disk.
       if (distance2_to_segment(cx, cy, f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point()) > reach)
         continue;
-      seen.insert(g);
+      g->info().visit = walk;
       stack.push_back(g);
     }
   }
@@ -140,22 +142,18 @@ void State::walk_disk(const std::vector<Face_handle>& start, const Point& a, con
 DiskWalk State::walk_diametral_disk(const Side& side) const {
   DiskWalk out;
   const Point &s = side.s->point(), &e = side.e->point();
-  std::unordered_set<Vertex_handle> found;
   const bool left = is_boundary_side(side), right = is_boundary_side({side.e, side.s});
   auto on_domain_side = [&](const Point& q) { return (left && encroaches(s, e, q)) || (right && encroaches(e, s, q)); };
+  std::vector<Vertex_handle> reached;  // the vertices of the faces reached, with repeats (walks skip infinite faces)
   walk_disk(domain_faces(side), s, e, [&](Face_handle f) {
-    for (int i = 0; i < 3; ++i) {
-      Vertex_handle v = f->vertex(i);
-      if (v != side.s && v != side.e && !cdt.is_infinite(v) && !found.count(v) && on_domain_side(v->point())) {
-        found.insert(v);
-        out.encroachers.push_back(v);
-      }
-    }
+    for (int i = 0; i < 3; ++i) reached.push_back(f->vertex(i));
     return false;
   });
   // Deterministic order (the walk order depends on face handles): by vertex index.
-  std::sort(out.encroachers.begin(), out.encroachers.end(),
-            [](Vertex_handle a, Vertex_handle b) { return a->info() < b->info(); });
+  std::sort(reached.begin(), reached.end(), [](Vertex_handle a, Vertex_handle b) { return a->info() < b->info(); });
+  reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
+  for (Vertex_handle v : reached)
+    if (v != side.s && v != side.e && on_domain_side(v->point())) out.encroachers.push_back(v);
   return out;
 }
 
@@ -163,7 +161,8 @@ std::vector<Side> State::sides_broken_by(const Side& side, const Point& p) const
   std::vector<Side> out;
   const Side reverse{side.e, side.s};
   std::vector<Face_handle> stack = domain_faces(side);
-  std::unordered_set<Face_handle> seen(stack.begin(), stack.end());
+  const unsigned walk = new_walk();
+  for (Face_handle f : stack) f->info().visit = walk;
   while (!stack.empty()) {
     Face_handle f = stack.back();
     stack.pop_back();
@@ -176,8 +175,8 @@ std::vector<Side> State::sides_broken_by(const Side& side, const Point& p) const
         continue;
       }
       Face_handle g = f->neighbor(i);
-      if (seen.count(g) || cdt.is_infinite(g)) continue;
-      seen.insert(g);
+      if (g->info().visit == walk || cdt.is_infinite(g)) continue;
+      g->info().visit = walk;
       if (CGAL::side_of_bounded_circle(g->vertex(0)->point(), g->vertex(1)->point(), g->vertex(2)->point(), p) ==
           CGAL::ON_BOUNDED_SIDE)
         stack.push_back(g);
@@ -269,16 +268,23 @@ std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
             out.end());
   // Collinear first, then outside (right of s -> e), then inside by ulps; each by distance from the target along
   // the line (nearest first; ties: the one nearer s).
+  // Each rank computed once (the orientation is exact); ties keep the order above.
   const double target = t * (dx * dx + dy * dy);
-  auto rank = [&](const Point& q) {
+  std::vector<std::tuple<int, double, double, std::size_t>> ranked;
+  ranked.reserve(out.size());
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const Point& q = out[k];
     auto o = CGAL::orientation(s, e, q);
     int group = o == CGAL::COLLINEAR ? 0 : o == CGAL::RIGHT_TURN ? 1 : 2;
     double along = (q.x() - s.x()) * dx + (q.y() - s.y()) * dy;
-    return std::make_tuple(group, std::abs(along - target), along);
-  };
-  std::stable_sort(out.begin(), out.end(), [&](const Point& a, const Point& b) { return rank(a) < rank(b); });
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+    ranked.emplace_back(group, std::abs(along - target), along, k);
+  }
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<Point> sorted;
+  sorted.reserve(out.size());
+  for (const auto& r : ranked) sorted.push_back(out[std::get<3>(r)]);
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  return sorted;
 }
 
 bool State::keeps_triangles_valid(const Side& side, const Point& p) const {
@@ -418,9 +424,18 @@ void keep_encroaching(const Point& s, const Point& e, std::vector<Vertex_handle>
 
 bool State::subsegment_is_empty(const Side& start, const Point& s, const Point& p,
                                 const std::vector<Vertex_handle>& q) const {
-  return std::none_of(q.begin(), q.end(), [&](Vertex_handle v) {
-    return inside_diametral_disk(s, p, v->point()) && reachable_within(start, s, p, v);
+  std::vector<Vertex_handle> inside;
+  for (Vertex_handle v : q)
+    if (inside_diametral_disk(s, p, v->point())) inside.push_back(v);
+  if (inside.empty()) return true;
+  // One walk for all of them: v is reachable_within iff some face of the whole walk has it.
+  std::sort(inside.begin(), inside.end());
+  bool seen = false;
+  walk_disk(domain_faces(start), s, p, [&](Face_handle f) {
+    for (int i = 0; i < 3; ++i) seen = seen || std::binary_search(inside.begin(), inside.end(), f->vertex(i));
+    return seen;
   });
+  return !seen;
 }
 
 int State::greedy_count(const Side& side, std::vector<Vertex_handle> q) const {

@@ -123,7 +123,8 @@ class State {
   int greedy_count(const Side& side, std::vector<Vertex_handle> q) const;
 
  private:
-  bool is_convex_polygon() const;  // every boundary side on the hull, no interface, every vertex on a constraint
+  // Every side of `sides` (the boundary sides) on the hull, no interface, every vertex on a constraint.
+  bool is_convex_polygon(const std::vector<Side>& sides) const;
   // The neighbour of `from` along the constraint toward `end` (`end`, or a vertex the constraint passes through).
   Vertex_handle next_on_constraint(Vertex_handle from, Vertex_handle end) const;
   // Domain marks of the faces changed by inserting v between to_s and to_e (see split); queues their sides.
@@ -133,6 +134,10 @@ class State {
   // diametral disk of [a, b]; visit(face) returns true to stop.
   template <class Visit>
   void walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit) const;
+  // A fresh stamp for a walk over faces: the walk has reached a face iff its info().visit equals the stamp
+  // (cheaper than a set of face handles). Walks must not nest.
+  unsigned new_walk() const { return ++walks_; }
+  mutable unsigned walks_ = 0;
   std::map<std::pair<int, int>, int> edge_index_;  // input boundary edge (min, max) -> index in edges
   std::vector<int> steiner_edge_;                   // Steiner point (index - n_input) -> index in edges
 };
