@@ -129,6 +129,7 @@ void mark_domain(CDT& cdt, const Domain2& domain) {
       g->info().in_domain = true;
     });
   }
+  if (domain.regions.empty()) return;  // every region attribute stays 0
   std::vector<double> attribute(next, 0.0);
   for (const auto& r : domain.regions) {
     Face_handle f = cdt.locate(to_cgal(r.at));

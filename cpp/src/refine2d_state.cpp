@@ -149,11 +149,13 @@ DiskWalk State::walk_diametral_disk(const Side& side) const {
     for (int i = 0; i < 3; ++i) reached.push_back(f->vertex(i));
     return false;
   });
-  // Deterministic order (the walk order depends on face handles): by vertex index.
-  std::sort(reached.begin(), reached.end(), [](Vertex_handle a, Vertex_handle b) { return a->info() < b->info(); });
+  std::sort(reached.begin(), reached.end());
   reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
   for (Vertex_handle v : reached)
     if (v != side.s && v != side.e && on_domain_side(v->point())) out.encroachers.push_back(v);
+  // Deterministic order (the walk order depends on face handles): by vertex index.
+  std::sort(out.encroachers.begin(), out.encroachers.end(),
+            [](Vertex_handle a, Vertex_handle b) { return a->info() < b->info(); });
   return out;
 }
 
