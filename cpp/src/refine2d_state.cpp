@@ -113,11 +113,8 @@ void State::enqueue_all() {
   for (const Side& side : boundary_sides()) queue.push_back(side);
 }
 
-template <class Visit>
-void State::walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit) const {
-  double cx = 0.5 * (a.x() + b.x()), cy = 0.5 * (a.y() + b.y());
-  double r2 = 0.25 * CGAL::to_double(CGAL::squared_distance(a, b));
-  double reach = r2 * (1 + 1e-9) + 1e-300;  // pruning slack: walk a little too far rather than too little
+template <class Crosses, class Visit>
+void State::walk(const std::vector<Face_handle>& start, Crosses&& crosses, Visit&& visit) const {
   const unsigned walk = new_walk();
   std::vector<Face_handle> stack(start);
   for (Face_handle f : start) f->info().visit = walk;
@@ -129,14 +126,21 @@ void State::walk_disk(const std::vector<Face_handle>& start, const Point& a, con
       if (f->is_constrained(i)) continue;
       Face_handle g = f->neighbor(i);
       if (g->info().visit == walk || cdt.is_infinite(g)) continue;
-      // The union of (face ∩ disk) along the walk stays connected: consecutive faces share a piece of the
-      // crossed edge inside the disk.
-      if (distance2_to_segment(cx, cy, f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point()) > reach)
-        continue;
+      if (!crosses(f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point())) continue;
       g->info().visit = walk;
       stack.push_back(g);
     }
   }
+}
+
+template <class Visit>
+void State::walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit) const {
+  double cx = 0.5 * (a.x() + b.x()), cy = 0.5 * (a.y() + b.y());
+  double r2 = 0.25 * CGAL::to_double(CGAL::squared_distance(a, b));
+  double reach = r2 * (1 + 1e-9) + 1e-300;  // pruning slack: walk a little too far rather than too little
+  // The union of (face ∩ disk) along the walk stays connected: consecutive faces share a piece of the crossed
+  // edge inside the disk.
+  walk(start, [&](const Point& u, const Point& w) { return distance2_to_segment(cx, cy, u, w) <= reach; }, visit);
 }
 
 DiskWalk State::walk_diametral_disk(const Side& side) const {
@@ -146,7 +150,12 @@ DiskWalk State::walk_diametral_disk(const Side& side) const {
   auto on_domain_side = [&](const Point& q) { return (left && encroaches(s, e, q)) || (right && encroaches(e, s, q)); };
   std::vector<Vertex_handle> reached;  // the vertices of the faces reached, with repeats (walks skip infinite faces)
   walk_disk(domain_faces(side), s, e, [&](Face_handle f) {
-    for (int i = 0; i < 3; ++i) reached.push_back(f->vertex(i));
+    for (int i = 0; i < 3; ++i) {
+      reached.push_back(f->vertex(i));
+      Vertex_handle u = f->vertex(CDT::ccw(i)), w = f->vertex(CDT::cw(i));
+      if (f->is_constrained(i) && !((u == side.s && w == side.e) || (u == side.e && w == side.s)))
+        out.obstacles.emplace_back(u->point(), w->point());
+    }
     return false;
   });
   std::sort(reached.begin(), reached.end());
@@ -187,14 +196,15 @@ std::vector<Side> State::sides_broken_by(const Side& side, const Point& p) const
   return out;
 }
 
-bool State::reachable_within(const Side& start, const Point& a, const Point& b, Vertex_handle q) const {
+bool State::sees(const Side& start, const Point& a, const Point& b, Vertex_handle v, Sight sight) const {
+  if (sight.obstacles != nullptr) return !covered_from(v->point(), a, b, *sight.obstacles);
   bool found = false;
-  walk_disk(domain_faces(start), a, b, [&](Face_handle f) { return found = f->has_vertex(q); });
+  walk_disk(domain_faces(start), a, b, [&](Face_handle f) { return found = f->has_vertex(v); });
   return found;
 }
 
 double State::greedy_parameter(const Side& start, const Point& s, const Point& e, const std::vector<Vertex_handle>& q,
-                               Vertex_handle* blocker) const {
+                               Sight sight, Vertex_handle* blocker) const {
   double dx = e.x() - s.x(), dy = e.y() - s.y();
   std::vector<std::pair<double, Vertex_handle>> order;
   for (Vertex_handle v : q) {
@@ -205,20 +215,18 @@ double State::greedy_parameter(const Side& start, const Point& s, const Point& e
   std::sort(order.begin(), order.end(),
             [](const auto& a, const auto& b) { return std::make_pair(a.first, a.second->info()) <
                                                       std::make_pair(b.first, b.second->info()); });
-  // q blocks at the first t >= t_q where [s, s + t d] sees it: reachable inside that subsegment's disk without
-  // crossing a constraint (paper 4.4: only visible vertices encroach). Disks grow with t, so reachability is
-  // monotone in t: bisect when q is hidden at t_q (behind a reflex spike, it may come into view later).
-  auto sees = [&](double t, Vertex_handle v) {
-    return reachable_within(start, s, Point(s.x() + t * dx, s.y() + t * dy), v);
-  };
+  // q blocks at the first t >= t_q where [s, s + t d] sees it (paper 4.4: only visible vertices encroach).
+  // Subsegments and their disks grow with t, so seeing (either sight) is monotone in t: bisect when q is hidden at
+  // t_q (behind a reflex spike, it may come into view later).
+  auto seen = [&](double t, Vertex_handle v) { return sees(start, s, Point(s.x() + t * dx, s.y() + t * dy), v, sight); };
   double best = 1.0;
   for (const auto& [tq, v] : order) {
     if (tq >= best) break;
     double t = tq;
-    if (!sees(tq, v)) {
-      if (!sees(best, v)) continue;
+    if (!seen(tq, v)) {
+      if (!seen(best, v)) continue;
       double lo = tq, hi = best;  // hidden at lo, seen at hi
-      for (int k = 0; k < 48 && lo < hi * (1 - 0x1p-40); ++k) (sees(0.5 * (lo + hi), v) ? hi : lo) = 0.5 * (lo + hi);
+      for (int k = 0; k < 48 && lo < hi * (1 - 0x1p-40); ++k) (seen(0.5 * (lo + hi), v) ? hi : lo) = 0.5 * (lo + hi);
       t = hi;
     }
     if (t < best) {
@@ -419,18 +427,55 @@ int State::edge_of(const Side& side) const {
   return it->second;
 }
 
+// The closed angular intervals the obstacles shade, seen from v, cover the open wedge from a to b. An obstacle
+// shades the directions of its part in front of (a, b), inside the triangle (v, a, b): a constraint meets the line
+// ab inside [a, b] at most at a or b (constraints do not cross the edge; a or b may be its vertices), so one ending
+// at a or b is in front iff its other end is strictly on v's side, and any other iff it meets the triangle; then
+// its own angular span clipped to the wedge is in front.
+bool covered_from(const Point& v, const Point& a, const Point& b, const std::vector<Segment2>& obstacles) {
+  const bool ccw = CGAL::orientation(v, a, b) == CGAL::LEFT_TURN;
+  const Point &lo = ccw ? a : b, &hi = ccw ? b : a;  // the wedge, counter-clockwise from lo to hi (< 180 degrees)
+  // Counter-clockwise order of directions from v; valid for directions less than 180 degrees apart, which holds
+  // for every pair compared below (each obstacle kept meets the wedge and spans less than 180 degrees).
+  auto before = [&v](const Point& p, const Point& q) { return CGAL::orientation(v, p, q) == CGAL::LEFT_TURN; };
+  const K::Triangle_2 tri(v, a, b);
+  std::vector<Segment2> shades;
+  const auto v_side = CGAL::orientation(a, b, v);
+  auto in_front = [&](const Point& c1, const Point& c2) {
+    if (c1 == a || c1 == b) return CGAL::orientation(a, b, c2) == v_side;
+    if (c2 == a || c2 == b) return CGAL::orientation(a, b, c1) == v_side;
+    return CGAL::do_intersect(K::Segment_2(c1, c2), tri);
+  };
+  for (const auto& [c1, c2] : obstacles) {
+    auto o = CGAL::orientation(v, c1, c2);
+    if (c1 == v || c2 == v || o == CGAL::COLLINEAR || !in_front(c1, c2)) continue;
+    const Point &from = o == CGAL::LEFT_TURN ? c1 : c2, &to = o == CGAL::LEFT_TURN ? c2 : c1;
+    const Point &first = before(from, lo) ? lo : from, &last = before(hi, to) ? hi : to;
+    if (before(first, last)) shades.emplace_back(first, last);
+  }
+  std::sort(shades.begin(), shades.end(), [&](const auto& x, const auto& y) { return before(x.first, y.first); });
+  const Point* reach = &lo;  // the directions from lo up to *reach are shaded (none strictly inside yet)
+  for (const auto& [first, last] : shades) {
+    if (before(*reach, first)) return false;  // an open gap of directions between *reach and first
+    if (before(*reach, last)) reach = &last;
+  }
+  return !before(*reach, hi);
+}
+
 void keep_encroaching(const Point& s, const Point& e, std::vector<Vertex_handle>& q) {
   q.erase(std::remove_if(q.begin(), q.end(), [&](Vertex_handle v) { return !inside_diametral_disk(s, e, v->point()); }),
           q.end());
 }
 
-bool State::subsegment_is_empty(const Side& start, const Point& s, const Point& p,
-                                const std::vector<Vertex_handle>& q) const {
+bool State::subsegment_is_empty(const Side& start, const Point& s, const Point& p, const std::vector<Vertex_handle>& q,
+                                Sight sight) const {
   std::vector<Vertex_handle> inside;
   for (Vertex_handle v : q)
     if (inside_diametral_disk(s, p, v->point())) inside.push_back(v);
   if (inside.empty()) return true;
-  // One walk for all of them: v is reachable_within iff some face of the whole walk has it.
+  if (sight.obstacles != nullptr)
+    return std::none_of(inside.begin(), inside.end(), [&](Vertex_handle v) { return sees(start, s, p, v, sight); });
+  // Reach: one walk for all of them (v is reachable iff some face of the whole walk has it).
   std::sort(inside.begin(), inside.end());
   bool seen = false;
   walk_disk(domain_faces(start), s, p, [&](Face_handle f) {
@@ -440,7 +485,9 @@ bool State::subsegment_is_empty(const Side& start, const Point& s, const Point& 
   return !seen;
 }
 
-int State::greedy_count(const Side& side, std::vector<Vertex_handle> q) const {
+int State::greedy_count(const Side& side, const DiskWalk& walk) const {
+  std::vector<Vertex_handle> q = walk.encroachers;
+  const Sight sight{&walk.obstacles};
   Point x = side.s->point();
   const Point& e = side.e->point();
   int count = 0;
@@ -449,10 +496,10 @@ int State::greedy_count(const Side& side, std::vector<Vertex_handle> q) const {
   for (std::size_t step = 0; step < 2 * q.size() + 8; ++step) {
     keep_encroaching(x, e, q);
     if (q.empty()) break;
-    double t = greedy_parameter(side, x, e, q);
+    double t = greedy_parameter(side, x, e, q, sight);
     if (t >= 1) break;
     Point p;
-    auto empty = [&](const Point& c) { return subsegment_is_empty(side, x, c, q); };
+    auto empty = [&](const Point& c) { return subsegment_is_empty(side, x, c, q, sight); };
     if (!pick_point_at_or_before(x, e, t, empty, p)) break;
     x = p;
     ++count;
