@@ -59,7 +59,8 @@ void require_counter_clockwise(const Mesh2& mesh) {
 class HalfEdges {
  public:
   struct HalfEdge {
-    int b, triangle, corner;
+    int b, triangle, apex;  // the edge (a, b), a < b, of `triangle`, whose vertex opposite it is `apex`
+    bool left;              // the triangle traverses the edge as (a, b): it lies on the edge's left
   };
 
   explicit HalfEdges(const Mesh2& mesh) : start_(mesh.points.size() + 1, 0), half_(3 * mesh.triangles.size()) {
@@ -73,8 +74,9 @@ class HalfEdges {
     std::vector<std::size_t> next(start_.begin(), start_.end() - 1);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
       for (int k = 0; k < 3; ++k) {
+        const auto& tri = mesh.triangles[t];
         auto [a, b] = ends(t, k);
-        half_[next[a]++] = {b, static_cast<int>(t), k};
+        half_[next[a]++] = {b, static_cast<int>(t), tri[k], tri[(k + 1) % 3] == a};
       }
     for (std::size_t a = 0; a + 1 < start_.size(); ++a)
       std::sort(half_.begin() + start_[a], half_.begin() + start_[a + 1], [](const HalfEdge& x, const HalfEdge& y) {
@@ -137,16 +139,14 @@ EdgeReport edge_report(const Mesh2& mesh, const HalfEdges& h, int a, std::size_t
                        bool constrained) {
   EdgeReport r{Segment{a, h.half(first).b}, EdgeKind::Interior, {}, {}, true};
   for (std::size_t i = first; i < last; ++i) {
-    const auto& tri = mesh.triangles[h.half(i).triangle];
-    const int corner = h.half(i).corner;
-    EdgeSide& side = tri[(corner + 1) % 3] < tri[(corner + 2) % 3] ? r.left : r.right;
+    EdgeSide& side = h.half(i).left ? r.left : r.right;
     if (side.triangle >= 0)
       throw InvalidInput("edge (" + std::to_string(r.edge[0]) + ", " + std::to_string(r.edge[1]) + ") has " +
                          describe_triangle(mesh, side.triangle) + " and " +
                          describe_triangle(mesh, h.half(i).triangle) +
                          " on the same side: the mesh is not a consistently oriented manifold");
     side.triangle = h.half(i).triangle;
-    side.apex = tri[corner];
+    side.apex = h.half(i).apex;
   }
   r.kind = kind_of(mesh, r, constrained);
   return r;
