@@ -148,6 +148,8 @@ Mesh2 to_mesh(const CDT& cdt) {
     if (v->info() < 0) throw InternalError("cdt::to_mesh: a vertex has no index");
     mesh.points[v->info()] = from_cgal(v->point());
   }
+  mesh.triangles.reserve(cdt.number_of_faces());
+  mesh.triangle_region.reserve(cdt.number_of_faces());
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!f->info().in_domain) continue;
     mesh.triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
