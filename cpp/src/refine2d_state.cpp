@@ -95,14 +95,11 @@ bool State::is_violated(const Side& side) const {
 }
 
 std::vector<Side> State::boundary_sides() const {
+  // A boundary side is a constrained edge of a domain face, oriented with the face on its left.
   std::vector<Side> out;
-  for (auto e = cdt.constrained_edges_begin(); e != cdt.constrained_edges_end(); ++e) {
-    Face_handle f = e->first;
-    int i = e->second;
-    Side left{f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))}, right{left.e, left.s};
-    if (is_boundary_side(left)) out.push_back(left);
-    if (is_boundary_side(right)) out.push_back(right);
-  }
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    for (int i = 0; i < 3; ++i)
+      if (f->is_constrained(i) && f->info().in_domain) out.push_back({f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
   std::sort(out.begin(), out.end(), [](const Side& a, const Side& b) {
     return std::make_pair(a.s->info(), a.e->info()) < std::make_pair(b.s->info(), b.e->info());
   });
@@ -148,18 +145,22 @@ DiskWalk State::walk_diametral_disk(const Side& side) const {
   const Point &s = side.s->point(), &e = side.e->point();
   const bool left = is_boundary_side(side), right = is_boundary_side({side.e, side.s});
   auto on_domain_side = [&](const Point& q) { return (left && encroaches(s, e, q)) || (right && encroaches(e, s, q)); };
-  std::vector<Vertex_handle> reached;  // the vertices of the faces reached, with repeats (walks skip infinite faces)
+  std::vector<Vertex_handle> reached;  // the vertices of the faces reached (walks skip infinite faces), once each
+  const unsigned stamp = ++vertex_lists_;
   walk_disk(domain_faces(side), s, e, [&](Face_handle f) {
     for (int i = 0; i < 3; ++i) {
-      reached.push_back(f->vertex(i));
+      const auto index = static_cast<std::size_t>(f->vertex(i)->info());
+      if (index >= vertex_walk_.size()) vertex_walk_.resize(index + 1, 0);
+      if (vertex_walk_[index] != stamp) {
+        vertex_walk_[index] = stamp;
+        reached.push_back(f->vertex(i));
+      }
       Vertex_handle u = f->vertex(CDT::ccw(i)), w = f->vertex(CDT::cw(i));
       if (f->is_constrained(i) && !((u == side.s && w == side.e) || (u == side.e && w == side.s)))
         out.obstacles.emplace_back(u->point(), w->point());
     }
     return false;
   });
-  std::sort(reached.begin(), reached.end());
-  reached.erase(std::unique(reached.begin(), reached.end()), reached.end());
   for (Vertex_handle v : reached)
     if (v != side.s && v != side.e && on_domain_side(v->point())) out.encroachers.push_back(v);
   // Deterministic order (the walk order depends on face handles): by vertex index.

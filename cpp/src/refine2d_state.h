@@ -162,6 +162,9 @@ class State {
   // (cheaper than a set of face handles). Walks must not nest.
   unsigned new_walk() const { return ++walks_; }
   mutable unsigned walks_ = 0;
+  // walk_diametral_disk lists each vertex once: vertex_walk_[index] is the stamp of the last walk that listed it.
+  mutable unsigned vertex_lists_ = 0;
+  mutable std::vector<unsigned> vertex_walk_;
   std::map<std::pair<int, int>, int> edge_index_;  // input boundary edge (min, max) -> index in edges
   std::vector<int> steiner_edge_;                   // Steiner point (index - n_input) -> index in edges
 };
