@@ -169,9 +169,24 @@ class State {
   std::vector<int> steiner_edge_;                   // Steiner point (index - n_input) -> index in edges
 };
 
+// Exact CGAL::angle(a, apex, b) == OBTUSE, i.e. (a - apex) . (b - apex) < 0, with a static filter (Epick's Angle_2
+// has none, and the disk walks evaluate it for every vertex they meet): the dot product in doubles decides when
+// its magnitude exceeds 2^-50 times the sum of the absolute products, which bounds its rounding error (four
+// roundings per product term, each relative 2^-53: under 4 * 2^-53 < 2^-50 of their sum); otherwise (near zero,
+// or magnitudes where underflow or overflow void the bound) CGAL decides.
+inline bool obtuse(const Point& a, const Point& apex, const Point& b) {
+  const double ux = a.x() - apex.x(), uy = a.y() - apex.y(), vx = b.x() - apex.x(), vy = b.y() - apex.y();
+  const double dot = ux * vx + uy * vy, bound = (std::abs(ux * vx) + std::abs(uy * vy)) * 0x1p-50;
+  if (bound > 0x1p-900 && bound < 0x1p+900) {
+    if (dot < -bound) return true;
+    if (dot > bound) return false;
+  }
+  return CGAL::angle(a, apex, b) == CGAL::OBTUSE;
+}
+
 // Exact encroachment of q on side (s, e): q strictly left of s -> e and strictly inside the diametral disk.
 inline bool encroaches(const Point& s, const Point& e, const Point& q) {
-  return CGAL::orientation(s, e, q) == CGAL::LEFT_TURN && CGAL::angle(s, q, e) == CGAL::OBTUSE;
+  return CGAL::orientation(s, e, q) == CGAL::LEFT_TURN && obtuse(s, q, e);
 }
 
 // Double points near s + t (e - s), t in (0, 1), that may stand for it on the subsegment, most preferred first:
@@ -210,7 +225,7 @@ bool pick_point_at_or_before(const Point& s, const Point& e, double t, Valid&& v
 // lists come from walk_diametral_disk, which only collects vertices on domain sides, so for a boundary edge this
 // is `encroaches`, and for an interface it treats both sides at once (t* = min over both sides' encroachers).
 inline bool inside_diametral_disk(const Point& s, const Point& e, const Point& q) {
-  return CGAL::orientation(s, e, q) != CGAL::COLLINEAR && CGAL::angle(s, q, e) == CGAL::OBTUSE;
+  return CGAL::orientation(s, e, q) != CGAL::COLLINEAR && obtuse(s, q, e);
 }
 
 // Keeps the vertices of q still encroaching [s, e] (disks of subsegments that share e shrink as s advances).
