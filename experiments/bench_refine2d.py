@@ -12,8 +12,8 @@ interior points).
 
 Writes experiments/results/bench_refine2d.csv and .png and prints a table. --quick: generated sizes up to 1e4.
 --pslg: only the PSLG inputs, with the CG:SHOP best known counts beside; writes
-experiments/results/bench_refine2d_pslg.csv. --ratio: only wall time against Triangle -pD on the convex polygon and
-the thin layer at 1e6 vertices (seed 0), runs interleaved, best of 3 each (for a machine shared with other jobs).
+experiments/results/bench_refine2d_pslg.csv. --ratio: only wall time against Triangle -pD on the convex
+polygon and the thin layer at 1e6 vertices (seed 0), runs interleaved, best of 3 each (for a shared machine).
 """
 
 from __future__ import annotations

@@ -166,13 +166,13 @@ def test_dangling_well_segment_both_sides():
 
 
 def test_lower_bound_counts_only_vertices_the_edge_sees():
-    # A dangling segment E = (17, 14)-(14, 3) in the box [0, 20]^2: its disk has center (15.5, 8.5) and r^2 =
-    # 130 / 4 = 32.5. Inside: q = (10, 8) only (5.5^2 + 0.5^2 = 30.5; every other vertex is farther: (9, 14) 72.5,
-    # (20, 0) 92.5). q is hidden from E by the dangling segment (9, 14)-(12, 4): the sight line from q through
-    # its end (12, 4) is y = 8 - 2 (x - 10), which meets x = 14 at y = 0, below E's lowest point (14, 3), so
-    # every sight line from E to q crosses it. Its free end (12, 4) lies on E's circle (3.5^2 + 4.5^2 = 32.5):
-    # not inside, but a walk inside the closed disk wraps around it to q. No subsegment of E sees a vertex
-    # inside its disk, so E's bound is 0 (a walk-based count gave 1).
+    # A dangling segment E = (17, 14)-(14, 3) in the box [0, 20]^2: its disk has center (15.5, 8.5) and
+    # r^2 = 130 / 4 = 32.5. Inside: q = (10, 8) only (5.5^2 + 0.5^2 = 30.5; every other vertex is farther:
+    # (9, 14) 72.5, (20, 0) 92.5). q is hidden from E by the dangling segment (9, 14)-(12, 4): the sight
+    # line from q through its end (12, 4) is y = 8 - 2 (x - 10), which meets x = 14 at y = 0, below E's
+    # lowest point (14, 3), so every sight line from E to q crosses it. Its free end (12, 4) lies on E's
+    # circle (3.5^2 + 4.5^2 = 32.5): not inside, but a walk inside the closed disk wraps around it to q. No
+    # subsegment of E sees a vertex inside its disk, so E's bound is 0 (a walk-based count gave 1).
     pts = [(0, 0), (20, 0), (20, 20), (0, 20), (17, 14), (14, 3), (9, 14), (12, 4), (10, 8)]
     d = Domain(points=np.array(pts, dtype=float), segments=loop(4) + [(4, 5), (6, 7)])
     res = nonobtuse.refine(d)
