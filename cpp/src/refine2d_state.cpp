@@ -275,7 +275,7 @@ std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
   for (int i = -2; i <= 2; ++i)
     for (int j = 1; j <= 8; ++j) out.emplace_back(x0 + u * (i * tx + j * ty), y0 + u * (i * ty - j * tx));
   out.erase(std::remove_if(out.begin(), out.end(),
-                           [&](const Point& q) { return q == s || q == e || CGAL::angle(s, q, e) != CGAL::OBTUSE; }),
+                           [&](const Point& q) { return q == s || q == e || !obtuse(s, q, e); }),
             out.end());
   // Collinear first, then outside (right of s -> e), then inside by ulps; each by distance from the target along
   // the line (nearest first; ties: the one nearer s).
@@ -445,6 +445,11 @@ bool covered_from(const Point& v, const Point& a, const Point& b, const std::vec
   auto in_front = [&](const Point& c1, const Point& c2) {
     if (c1 == a || c1 == b) return CGAL::orientation(a, b, c2) == v_side;
     if (c2 == a || c2 == b) return CGAL::orientation(a, b, c1) == v_side;
+    // Both ends strictly beyond one side's line: it misses the triangle (a cheap exact test first).
+    for (const auto& [p, q, r] : {std::tie(v, a, b), std::tie(a, b, v), std::tie(b, v, a)}) {
+      const auto inside = CGAL::orientation(p, q, r);
+      if (CGAL::orientation(p, q, c1) == -inside && CGAL::orientation(p, q, c2) == -inside) return false;
+    }
     return CGAL::do_intersect(K::Segment_2(c1, c2), tri);
   };
   for (const auto& [c1, c2] : obstacles) {
