@@ -150,18 +150,19 @@ Mesh2 to_mesh(const CDT& cdt) {
   }
   mesh.triangles.reserve(cdt.number_of_faces());
   mesh.triangle_region.reserve(cdt.number_of_faces());
+  // Constrained edges bordering the domain, from the domain faces beside them (twice for an interface).
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!f->info().in_domain) continue;
     mesh.triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
     mesh.triangle_region.push_back(f->info().region);
-  }
-  for (auto e = cdt.constrained_edges_begin(); e != cdt.constrained_edges_end(); ++e) {
-    Face_handle f = e->first, g = f->neighbor(e->second);
-    if (!f->info().in_domain && !g->info().in_domain) continue;
-    int a = f->vertex(CDT::cw(e->second))->info(), b = f->vertex(CDT::ccw(e->second))->info();
-    mesh.segments.push_back({std::min(a, b), std::max(a, b)});
+    for (int i = 0; i < 3; ++i)
+      if (f->is_constrained(i)) {
+        int a = f->vertex(CDT::cw(i))->info(), b = f->vertex(CDT::ccw(i))->info();
+        mesh.segments.push_back({std::min(a, b), std::max(a, b)});
+      }
   }
   std::sort(mesh.segments.begin(), mesh.segments.end());
+  mesh.segments.erase(std::unique(mesh.segments.begin(), mesh.segments.end()), mesh.segments.end());
   return mesh;
 }
 
