@@ -8,11 +8,12 @@ domains of 1e3 .. 1e6 vertices: convex polygons with interior points, star-shape
 with interior points, and thin layers (a 1000 m x 1 m strip whose top and bottom are polylines, with
 interior points).
 
-    PYTHONPATH=src .venv/bin/python experiments/bench_refine2d.py [--quick] [--pslg]
+    PYTHONPATH=src .venv/bin/python experiments/bench_refine2d.py [--quick] [--pslg] [--ratio]
 
 Writes experiments/results/bench_refine2d.csv and .png and prints a table. --quick: generated sizes up to 1e4.
 --pslg: only the PSLG inputs, with the CG:SHOP best known counts beside; writes
-experiments/results/bench_refine2d_pslg.csv.
+experiments/results/bench_refine2d_pslg.csv. --ratio: only wall time against Triangle -pD on the convex
+polygon and the thin layer at 1e6 vertices (seed 0), runs interleaved, best of 3 each (for a shared machine).
 """
 
 from __future__ import annotations
@@ -110,11 +111,33 @@ def run(name: str, category: str, domain: Domain, rows: list, best: bool = False
     )
 
 
+def ratio(repeats: int = 3) -> None:
+    """Wall seconds of nonobtuse.refine (greedy) and Triangle -pD on the 1e6 inputs, interleaved, best of
+    `repeats` each, and their ratio."""
+    for gen in (convex, thin_layer):
+        domain = gen(10**6, np.random.default_rng(0))
+        ours, peer = [], []
+        for _ in range(repeats):
+            t0 = time.perf_counter()
+            nonobtuse.refine(domain)
+            ours.append(time.perf_counter() - t0)
+            peer.append(triangle_pd(domain)[1])
+        print(
+            f"{gen.__name__:10s} n={len(domain.points)} greedy={min(ours):.2f}s triangle-pD={min(peer):.2f}s "
+            f"ratio={min(ours) / min(peer):.2f}",
+            flush=True,
+        )
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="generated inputs up to 1e4 vertices")
     ap.add_argument("--pslg", action="store_true", help="only the PSLG inputs (CG:SHOP *-exterior*, la.poly)")
+    ap.add_argument("--ratio", action="store_true", help="wall time against Triangle -pD at 1e6, best of 3")
     args = ap.parse_args()
+    if args.ratio:
+        ratio()
+        return
     rows: list[dict] = []
     cg = SHARED / "cgshop25"
     if cg.exists():

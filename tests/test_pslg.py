@@ -165,6 +165,23 @@ def test_dangling_well_segment_both_sides():
     assert obtuse_constraint_sides(nonobtuse.triangulate(d)) == 2
 
 
+def test_lower_bound_counts_only_vertices_the_edge_sees():
+    # A dangling segment E = (17, 14)-(14, 3) in the box [0, 20]^2: its disk has center (15.5, 8.5) and
+    # r^2 = 130 / 4 = 32.5. Inside: q = (10, 8) only (5.5^2 + 0.5^2 = 30.5; every other vertex is farther:
+    # (9, 14) 72.5, (20, 0) 92.5). q is hidden from E by the dangling segment (9, 14)-(12, 4): the sight
+    # line from q through its end (12, 4) is y = 8 - 2 (x - 10), which meets x = 14 at y = 0, below E's
+    # lowest point (14, 3), so every sight line from E to q crosses it. Its free end (12, 4) lies on E's
+    # circle (3.5^2 + 4.5^2 = 32.5): not inside, but a walk inside the closed disk wraps around it to q. No
+    # subsegment of E sees a vertex inside its disk, so E's bound is 0 (a walk-based count gave 1).
+    pts = [(0, 0), (20, 0), (20, 20), (0, 20), (17, 14), (14, 3), (9, 14), (12, 4), (10, 8)]
+    d = Domain(points=np.array(pts, dtype=float), segments=loop(4) + [(4, 5), (6, 7)])
+    res = nonobtuse.refine(d)
+    assert_refined(d, res)
+    bound = {tuple(e["edge"]): e["lower_bound"] for e in res.stats["edges"]}
+    assert bound[(4, 5)] == 0
+    assert all(e["steiner_points"] >= e["lower_bound"] for e in res.stats["edges"])
+
+
 def test_acute_junction_of_ten_degrees_terminates_with_the_junction_diagnosed():
     # Two interfaces leave v = (0, 0) at 0 and 10 degrees (length 6), inside a 16-gon of radius 10; points in
     # the wedge near v (angles 2.9 .. 7 degrees, radii 1 .. 3) encroach both constraints, so each split on one

@@ -1,12 +1,13 @@
 #include "cdt.h"
 
+#include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/spatial_sort.h>
 
 #include <algorithm>
-#include <numeric>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "nonobtuse/triangulate.h"
 
@@ -32,30 +33,54 @@ void insert_hull_constraints(CDT& cdt) {
   for (auto& [a, b] : hull) cdt.insert_constraint(a, b);
 }
 
+// The domain's points, each with its input index, in insertion order: CGAL's spatial sort (a Hilbert curve over
+// median cuts, in randomized rounds) of each of k near-square slabs cut across the bounding box's long side,
+// slabs in order. The Hilbert sort alternates x and y cuts, so on a long thin box (a layer, 1000:1) its cells
+// keep that aspect, consecutive points lie far apart along the layer and every point location walks across many
+// triangles. Sorting (point, index) pairs rather than indices into the points keeps the sort cache-friendly.
+// The order only affects speed: the Delaunay flips break cocircular ties by CGAL's symbolic perturbation.
+std::vector<std::pair<Point, int>> insertion_order(const std::vector<Point2>& pts) {
+  std::vector<std::pair<Point, int>> out(pts.size());
+  if (pts.empty()) return out;
+  auto [xlo, xhi] = std::minmax_element(pts.begin(), pts.end(), [](const Point2& a, const Point2& b) { return a.x < b.x; });
+  auto [ylo, yhi] = std::minmax_element(pts.begin(), pts.end(), [](const Point2& a, const Point2& b) { return a.y < b.y; });
+  const bool along_x = xhi->x - xlo->x >= yhi->y - ylo->y;
+  const double lo = along_x ? xlo->x : ylo->y, length = along_x ? xhi->x - xlo->x : yhi->y - ylo->y;
+  const double width = along_x ? yhi->y - ylo->y : xhi->x - xlo->x;
+  const std::size_t k = width > 0 ? std::clamp<double>(std::floor(length / width), 1.0, pts.size()) : 1;
+  auto slab = [&](const Point2& p) {
+    return k == 1 ? 0 : std::min(k - 1, static_cast<std::size_t>(((along_x ? p.x : p.y) - lo) / length * k));
+  };
+  std::vector<std::size_t> start(k + 1, 0);  // slab j: out[start[j], start[j + 1])
+  for (const Point2& p : pts) ++start[slab(p) + 1];
+  for (std::size_t j = 0; j < k; ++j) start[j + 1] += start[j];
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (std::size_t i = 0; i < pts.size(); ++i) out[next[slab(pts[i])]++] = {to_cgal(pts[i]), static_cast<int>(i)};
+  using Traits = CGAL::Spatial_sort_traits_adapter_2<K, CGAL::First_of_pair_property_map<std::pair<Point, int>>>;
+  for (std::size_t j = 0; j < k; ++j) CGAL::spatial_sort(out.begin() + start[j], out.begin() + start[j + 1], Traits());
+  return out;
+}
+
 }  // namespace
 
 std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain) {
-  const auto& pts = domain.points;
-  std::vector<Point> cpts;
-  cpts.reserve(pts.size());
-  for (const auto& p : pts) cpts.push_back(to_cgal(p));
-  std::vector<std::size_t> order(pts.size());
-  std::iota(order.begin(), order.end(), 0);
-  using Pmap = CGAL::Pointer_property_map<Point>::type;
-  using Traits = CGAL::Spatial_sort_traits_adapter_2<K, Pmap>;
-  CGAL::spatial_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(cpts)));
-
-  std::vector<Vertex_handle> vh(pts.size());
+  if (cdt.number_of_vertices() != 0) throw InternalError("cdt::build: the triangulation is not empty");
+  // The points go into a Delaunay triangulation over the same data structure, which is then swapped in:
+  // Delaunay_triangulation_2 inserts without the constraint bookkeeping, and both break cocircular ties by the
+  // same symbolic perturbation, so this is the CDT of the points without constraints.
+  CGAL::Delaunay_triangulation_2<K, Tds> dt;
+  std::vector<Vertex_handle> vh(domain.points.size());
   Face_handle hint;
-  for (std::size_t i : order) {
-    std::size_t before = cdt.number_of_vertices();
-    vh[i] = cdt.insert(cpts[i], hint);
-    if (cdt.number_of_vertices() == before)
-      throw InvalidInput("duplicate points: point " + std::to_string(i) + " equals point " +
-                         std::to_string(vh[i]->info()) + " at " + describe(cpts[i]));
-    vh[i]->info() = static_cast<int>(i);
+  for (const auto& [p, i] : insertion_order(domain.points)) {
+    std::size_t before = dt.number_of_vertices();
+    vh[i] = dt.insert(p, hint);
+    if (dt.number_of_vertices() == before)
+      throw InvalidInput("duplicate points: point " + std::to_string(std::max(i, vh[i]->info())) + " equals point " +
+                         std::to_string(std::min(i, vh[i]->info())) + " at " + describe(p));
+    vh[i]->info() = i;
     hint = vh[i]->face();
   }
+  static_cast<CGAL::Triangulation_2<K, Tds>&>(cdt).swap(dt);
   for (std::size_t s = 0; s < domain.segments.size(); ++s) {
     auto [a, b] = domain.segments[s];
     try {
@@ -104,6 +129,7 @@ void mark_domain(CDT& cdt, const Domain2& domain) {
       g->info().in_domain = true;
     });
   }
+  if (domain.regions.empty()) return;  // every region attribute stays 0
   std::vector<double> attribute(next, 0.0);
   for (const auto& r : domain.regions) {
     Face_handle f = cdt.locate(to_cgal(r.at));
@@ -122,18 +148,21 @@ Mesh2 to_mesh(const CDT& cdt) {
     if (v->info() < 0) throw InternalError("cdt::to_mesh: a vertex has no index");
     mesh.points[v->info()] = from_cgal(v->point());
   }
+  mesh.triangles.reserve(cdt.number_of_faces());
+  mesh.triangle_region.reserve(cdt.number_of_faces());
+  // Constrained edges bordering the domain, from the domain faces beside them (twice for an interface).
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!f->info().in_domain) continue;
     mesh.triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
     mesh.triangle_region.push_back(f->info().region);
-  }
-  for (auto e = cdt.constrained_edges_begin(); e != cdt.constrained_edges_end(); ++e) {
-    Face_handle f = e->first, g = f->neighbor(e->second);
-    if (!f->info().in_domain && !g->info().in_domain) continue;
-    int a = f->vertex(CDT::cw(e->second))->info(), b = f->vertex(CDT::ccw(e->second))->info();
-    mesh.segments.push_back({std::min(a, b), std::max(a, b)});
+    for (int i = 0; i < 3; ++i)
+      if (f->is_constrained(i)) {
+        int a = f->vertex(CDT::cw(i))->info(), b = f->vertex(CDT::ccw(i))->info();
+        mesh.segments.push_back({std::min(a, b), std::max(a, b)});
+      }
   }
   std::sort(mesh.segments.begin(), mesh.segments.end());
+  mesh.segments.erase(std::unique(mesh.segments.begin(), mesh.segments.end()), mesh.segments.end());
   return mesh;
 }
 

@@ -18,6 +18,7 @@ struct FaceInfo {
   bool in_domain = false;
   int component = -1;   // connected component of domain faces across unconstrained edges
   double region = 0.0;  // region attribute of the component
+  unsigned visit = 0;   // the last walk over faces that reached this face (refine2d::State::new_walk)
 };
 
 // Vertex info: the vertex's index in the output point list (input points keep their input index).

@@ -10,19 +10,6 @@ namespace {
 using refine2d::Side;
 using refine2d::State;
 
-// Exact certificate of a mesh as returned (check2d's classifier): the sides of boundary edges (a triangle on one
-// side) and of interfaces (a constrained segment or a region jump with triangles on both sides, each side
-// checked on its own: issue 4) whose triangle is obtuse at the apex opposite the edge.
-long long count_obtuse_boundary(const Mesh2& mesh) {
-  long long bad = 0;
-  for (const EdgeReport& r : classify_edges(mesh)) {
-    if (r.kind == EdgeKind::Interior) continue;
-    for (const EdgeSide* side : {&r.left, &r.right})
-      if (side->triangle >= 0 && side->angle == AngleClass::Obtuse) ++bad;
-  }
-  return bad;
-}
-
 }  // namespace
 
 long long default_steiner_budget(std::size_t n_points) { return 10 * static_cast<long long>(n_points) + 1000; }
@@ -53,20 +40,21 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   // Lower bound. For each input boundary edge E, every subsegment of E in any valid refinement has an open
   // half-disk free of the vertices it sees, in particular of the input vertices. Greedy-Refine of E against the
   // input vertices alone is optimal for that weaker single-edge problem (Theorem 2: the greedy end is as far as
-  // any solution's first point can be, by the exchange argument), and more vertices only add constraints, so no
+  // any solution's first point can be, by the exchange argument, which holds because a piece of a valid
+  // subsegment is valid: its disk lies in the subsegment's and it sees no more), and more vertices only add constraints, so no
   // refinement placing Steiner points on E uses fewer. Edges are disjoint, so the bounds add.
-  // Visibility: a vertex counts for a subsegment when it is reachable from E inside the subsegment's disk
-  // without crossing a constraint. With closed boundary loops only (polygons, holes, point sets), reachable
-  // inside the disk implies that some vertex there is visible, hence that the subsegment is encroached, so the
-  // count is exact. Dangling interior constraints (issue 4) could hide a reachable vertex (a pinwheel of
-  // segments); the bound could then overcount.
+  // Visibility: a vertex counts for a subsegment only when some point of the open subsegment sees it, tested
+  // exactly against the constraints the walk over E's disk meets (Sight, covered_from: the first constraint on
+  // every sight line from E inside the disk is one of them). A vertex that the walk merely reaches, around the
+  // free end of a dangling segment or an end on the circle, does not count: the bound never counts a vertex that
+  // a valid refinement could leave in the disk, which is what makes it a lower bound.
   // An interface edge is one single-edge problem with the encroachers of both sides (the walk collects both).
   std::vector<bool> bounded(st.edges.size(), false);
   for (const Side& side : st.boundary_sides()) {
     int k = st.edge_of(side);
     if (bounded[k]) continue;
     bounded[k] = true;
-    st.edges[k].lower_bound = st.greedy_count(side, st.walk_diametral_disk(side).encroachers);
+    st.edges[k].lower_bound = st.greedy_count(side, st.walk_diametral_disk(side));
   }
 
   auto run = [&] {
@@ -98,7 +86,9 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
 
   RefineResult2 r;
   r.mesh = cdt::to_mesh(st.cdt);
-  r.obtuse_boundary_triangles = count_obtuse_boundary(r.mesh);
+  // The exact certificate of the mesh as returned: the obtuse sides of boundary edges and of interfaces (each side
+  // of a constrained segment or region jump checked on its own: issue 4).
+  r.obtuse_boundary_triangles = count_obtuse_boundary_sides(r.mesh);
   r.steiner_points = st.placed;
   for (const auto& e : st.edges) r.lower_bound += e.lower_bound;
   r.edges = st.edges;

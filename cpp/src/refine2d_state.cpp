@@ -27,16 +27,17 @@ State::State(const Domain2& d, long long b) : domain(d), n_input(static_cast<int
   cdt::build(cdt, domain);
   if (std::none_of(cdt.finite_faces_begin(), cdt.finite_faces_end(), [](const auto& f) { return f.info().in_domain; }))
     throw InvalidInput("the domain contains no triangle (are all points collinear, or is everything a hole?)");
-  for (const Side& side : boundary_sides()) {
+  const std::vector<Side> sides = boundary_sides();
+  for (const Side& side : sides) {
     int a = side.s->info(), c = side.e->info();
     if (edge_index_.emplace(std::make_pair(std::min(a, c), std::max(a, c)), static_cast<int>(edges.size())).second)
       edges.push_back({{a, c}, 0, 0});  // an interface appears once, as (min, max)
   }
-  convex_polygon = is_convex_polygon();
+  convex_polygon = is_convex_polygon(sides);
 }
 
-bool State::is_convex_polygon() const {
-  for (const Side& side : boundary_sides()) {
+bool State::is_convex_polygon(const std::vector<Side>& sides) const {
+  for (const Side& side : sides) {
     Face_handle f = left_face(side);
     if (!cdt.is_infinite(f->neighbor(f->index(apex(side))))) return false;
   }
@@ -94,14 +95,11 @@ bool State::is_violated(const Side& side) const {
 }
 
 std::vector<Side> State::boundary_sides() const {
+  // A boundary side is a constrained edge of a domain face, oriented with the face on its left.
   std::vector<Side> out;
-  for (auto e = cdt.constrained_edges_begin(); e != cdt.constrained_edges_end(); ++e) {
-    Face_handle f = e->first;
-    int i = e->second;
-    Side left{f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))}, right{left.e, left.s};
-    if (is_boundary_side(left)) out.push_back(left);
-    if (is_boundary_side(right)) out.push_back(right);
-  }
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    for (int i = 0; i < 3; ++i)
+      if (f->is_constrained(i) && f->info().in_domain) out.push_back({f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
   std::sort(out.begin(), out.end(), [](const Side& a, const Side& b) {
     return std::make_pair(a.s->info(), a.e->info()) < std::make_pair(b.s->info(), b.e->info());
   });
@@ -112,13 +110,11 @@ void State::enqueue_all() {
   for (const Side& side : boundary_sides()) queue.push_back(side);
 }
 
-template <class Visit>
-void State::walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit) const {
-  double cx = 0.5 * (a.x() + b.x()), cy = 0.5 * (a.y() + b.y());
-  double r2 = 0.25 * CGAL::to_double(CGAL::squared_distance(a, b));
-  double reach = r2 * (1 + 1e-9) + 1e-300;  // pruning slack: walk a little too far rather than too little
+template <class Crosses, class Visit>
+void State::walk(const std::vector<Face_handle>& start, Crosses&& crosses, Visit&& visit) const {
+  const unsigned walk = new_walk();
   std::vector<Face_handle> stack(start);
-  std::unordered_set<Face_handle> seen(start.begin(), start.end());
+  for (Face_handle f : start) f->info().visit = walk;
   while (!stack.empty()) {
     Face_handle f = stack.back();
     stack.pop_back();
@@ -126,33 +122,47 @@ void State::walk_disk(const std::vector<Face_handle>& start, const Point& a, con
     for (int i = 0; i < 3; ++i) {
       if (f->is_constrained(i)) continue;
       Face_handle g = f->neighbor(i);
-      if (seen.count(g) || cdt.is_infinite(g)) continue;
-      // The union of (face ∩ disk) along the walk stays connected: consecutive faces share a piece of the
-      // crossed edge inside the disk.
-      if (distance2_to_segment(cx, cy, f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point()) > reach)
-        continue;
-      seen.insert(g);
+      if (g->info().visit == walk || cdt.is_infinite(g)) continue;
+      if (!crosses(f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point())) continue;
+      g->info().visit = walk;
       stack.push_back(g);
     }
   }
 }
 
+template <class Visit>
+void State::walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit) const {
+  double cx = 0.5 * (a.x() + b.x()), cy = 0.5 * (a.y() + b.y());
+  double r2 = 0.25 * CGAL::to_double(CGAL::squared_distance(a, b));
+  double reach = r2 * (1 + 1e-9) + 1e-300;  // pruning slack: walk a little too far rather than too little
+  // The union of (face ∩ disk) along the walk stays connected: consecutive faces share a piece of the crossed
+  // edge inside the disk.
+  walk(start, [&](const Point& u, const Point& w) { return distance2_to_segment(cx, cy, u, w) <= reach; }, visit);
+}
+
 DiskWalk State::walk_diametral_disk(const Side& side) const {
   DiskWalk out;
   const Point &s = side.s->point(), &e = side.e->point();
-  std::unordered_set<Vertex_handle> found;
   const bool left = is_boundary_side(side), right = is_boundary_side({side.e, side.s});
   auto on_domain_side = [&](const Point& q) { return (left && encroaches(s, e, q)) || (right && encroaches(e, s, q)); };
+  std::vector<Vertex_handle> reached;  // the vertices of the faces reached (walks skip infinite faces), once each
+  const unsigned stamp = ++vertex_lists_;
   walk_disk(domain_faces(side), s, e, [&](Face_handle f) {
     for (int i = 0; i < 3; ++i) {
-      Vertex_handle v = f->vertex(i);
-      if (v != side.s && v != side.e && !cdt.is_infinite(v) && !found.count(v) && on_domain_side(v->point())) {
-        found.insert(v);
-        out.encroachers.push_back(v);
+      const auto index = static_cast<std::size_t>(f->vertex(i)->info());
+      if (index >= vertex_walk_.size()) vertex_walk_.resize(index + 1, 0);
+      if (vertex_walk_[index] != stamp) {
+        vertex_walk_[index] = stamp;
+        reached.push_back(f->vertex(i));
       }
+      Vertex_handle u = f->vertex(CDT::ccw(i)), w = f->vertex(CDT::cw(i));
+      if (f->is_constrained(i) && !((u == side.s && w == side.e) || (u == side.e && w == side.s)))
+        out.obstacles.emplace_back(u->point(), w->point());
     }
     return false;
   });
+  for (Vertex_handle v : reached)
+    if (v != side.s && v != side.e && on_domain_side(v->point())) out.encroachers.push_back(v);
   // Deterministic order (the walk order depends on face handles): by vertex index.
   std::sort(out.encroachers.begin(), out.encroachers.end(),
             [](Vertex_handle a, Vertex_handle b) { return a->info() < b->info(); });
@@ -163,7 +173,8 @@ std::vector<Side> State::sides_broken_by(const Side& side, const Point& p) const
   std::vector<Side> out;
   const Side reverse{side.e, side.s};
   std::vector<Face_handle> stack = domain_faces(side);
-  std::unordered_set<Face_handle> seen(stack.begin(), stack.end());
+  const unsigned walk = new_walk();
+  for (Face_handle f : stack) f->info().visit = walk;
   while (!stack.empty()) {
     Face_handle f = stack.back();
     stack.pop_back();
@@ -176,8 +187,8 @@ std::vector<Side> State::sides_broken_by(const Side& side, const Point& p) const
         continue;
       }
       Face_handle g = f->neighbor(i);
-      if (seen.count(g) || cdt.is_infinite(g)) continue;
-      seen.insert(g);
+      if (g->info().visit == walk || cdt.is_infinite(g)) continue;
+      g->info().visit = walk;
       if (CGAL::side_of_bounded_circle(g->vertex(0)->point(), g->vertex(1)->point(), g->vertex(2)->point(), p) ==
           CGAL::ON_BOUNDED_SIDE)
         stack.push_back(g);
@@ -186,14 +197,15 @@ std::vector<Side> State::sides_broken_by(const Side& side, const Point& p) const
   return out;
 }
 
-bool State::reachable_within(const Side& start, const Point& a, const Point& b, Vertex_handle q) const {
+bool State::sees(const Side& start, const Point& a, const Point& b, Vertex_handle v, Sight sight) const {
+  if (sight.obstacles != nullptr) return !covered_from(v->point(), a, b, *sight.obstacles);
   bool found = false;
-  walk_disk(domain_faces(start), a, b, [&](Face_handle f) { return found = f->has_vertex(q); });
+  walk_disk(domain_faces(start), a, b, [&](Face_handle f) { return found = f->has_vertex(v); });
   return found;
 }
 
 double State::greedy_parameter(const Side& start, const Point& s, const Point& e, const std::vector<Vertex_handle>& q,
-                               Vertex_handle* blocker) const {
+                               Sight sight, Vertex_handle* blocker) const {
   double dx = e.x() - s.x(), dy = e.y() - s.y();
   std::vector<std::pair<double, Vertex_handle>> order;
   for (Vertex_handle v : q) {
@@ -204,20 +216,18 @@ double State::greedy_parameter(const Side& start, const Point& s, const Point& e
   std::sort(order.begin(), order.end(),
             [](const auto& a, const auto& b) { return std::make_pair(a.first, a.second->info()) <
                                                       std::make_pair(b.first, b.second->info()); });
-  // q blocks at the first t >= t_q where [s, s + t d] sees it: reachable inside that subsegment's disk without
-  // crossing a constraint (paper 4.4: only visible vertices encroach). Disks grow with t, so reachability is
-  // monotone in t: bisect when q is hidden at t_q (behind a reflex spike, it may come into view later).
-  auto sees = [&](double t, Vertex_handle v) {
-    return reachable_within(start, s, Point(s.x() + t * dx, s.y() + t * dy), v);
-  };
+  // q blocks at the first t >= t_q where [s, s + t d] sees it (paper 4.4: only visible vertices encroach).
+  // Subsegments and their disks grow with t, so seeing (either sight) is monotone in t: bisect when q is hidden at
+  // t_q (behind a reflex spike, it may come into view later).
+  auto seen = [&](double t, Vertex_handle v) { return sees(start, s, Point(s.x() + t * dx, s.y() + t * dy), v, sight); };
   double best = 1.0;
   for (const auto& [tq, v] : order) {
     if (tq >= best) break;
     double t = tq;
-    if (!sees(tq, v)) {
-      if (!sees(best, v)) continue;
+    if (!seen(tq, v)) {
+      if (!seen(best, v)) continue;
       double lo = tq, hi = best;  // hidden at lo, seen at hi
-      for (int k = 0; k < 48 && lo < hi * (1 - 0x1p-40); ++k) (sees(0.5 * (lo + hi), v) ? hi : lo) = 0.5 * (lo + hi);
+      for (int k = 0; k < 48 && lo < hi * (1 - 0x1p-40); ++k) (seen(0.5 * (lo + hi), v) ? hi : lo) = 0.5 * (lo + hi);
       t = hi;
     }
     if (t < best) {
@@ -265,20 +275,27 @@ std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
   for (int i = -2; i <= 2; ++i)
     for (int j = 1; j <= 8; ++j) out.emplace_back(x0 + u * (i * tx + j * ty), y0 + u * (i * ty - j * tx));
   out.erase(std::remove_if(out.begin(), out.end(),
-                           [&](const Point& q) { return q == s || q == e || CGAL::angle(s, q, e) != CGAL::OBTUSE; }),
+                           [&](const Point& q) { return q == s || q == e || !obtuse(s, q, e); }),
             out.end());
   // Collinear first, then outside (right of s -> e), then inside by ulps; each by distance from the target along
   // the line (nearest first; ties: the one nearer s).
+  // Each rank computed once (the orientation is exact); ties keep the order above.
   const double target = t * (dx * dx + dy * dy);
-  auto rank = [&](const Point& q) {
+  std::vector<std::tuple<int, double, double, std::size_t>> ranked;
+  ranked.reserve(out.size());
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const Point& q = out[k];
     auto o = CGAL::orientation(s, e, q);
     int group = o == CGAL::COLLINEAR ? 0 : o == CGAL::RIGHT_TURN ? 1 : 2;
     double along = (q.x() - s.x()) * dx + (q.y() - s.y()) * dy;
-    return std::make_tuple(group, std::abs(along - target), along);
-  };
-  std::stable_sort(out.begin(), out.end(), [&](const Point& a, const Point& b) { return rank(a) < rank(b); });
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
+    ranked.emplace_back(group, std::abs(along - target), along, k);
+  }
+  std::sort(ranked.begin(), ranked.end());
+  std::vector<Point> sorted;
+  sorted.reserve(out.size());
+  for (const auto& r : ranked) sorted.push_back(out[std::get<3>(r)]);
+  sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
+  return sorted;
 }
 
 bool State::keeps_triangles_valid(const Side& side, const Point& p) const {
@@ -411,19 +428,72 @@ int State::edge_of(const Side& side) const {
   return it->second;
 }
 
+// The closed angular intervals the obstacles shade, seen from v, cover the open wedge from a to b. An obstacle
+// shades the directions of its part in front of (a, b), inside the triangle (v, a, b): a constraint meets the line
+// ab inside [a, b] at most at a or b (constraints do not cross the edge; a or b may be its vertices), so one ending
+// at a or b is in front iff its other end is strictly on v's side, and any other iff it meets the triangle; then
+// its own angular span clipped to the wedge is in front.
+bool covered_from(const Point& v, const Point& a, const Point& b, const std::vector<Segment2>& obstacles) {
+  const bool ccw = CGAL::orientation(v, a, b) == CGAL::LEFT_TURN;
+  const Point &lo = ccw ? a : b, &hi = ccw ? b : a;  // the wedge, counter-clockwise from lo to hi (< 180 degrees)
+  // Counter-clockwise order of directions from v; valid for directions less than 180 degrees apart, which holds
+  // for every pair compared below (each obstacle kept meets the wedge and spans less than 180 degrees).
+  auto before = [&v](const Point& p, const Point& q) { return CGAL::orientation(v, p, q) == CGAL::LEFT_TURN; };
+  const K::Triangle_2 tri(v, a, b);
+  std::vector<Segment2> shades;
+  const auto v_side = CGAL::orientation(a, b, v);
+  auto in_front = [&](const Point& c1, const Point& c2) {
+    if (c1 == a || c1 == b) return CGAL::orientation(a, b, c2) == v_side;
+    if (c2 == a || c2 == b) return CGAL::orientation(a, b, c1) == v_side;
+    // Both ends strictly beyond one side's line: it misses the triangle (a cheap exact test first).
+    for (const auto& [p, q, r] : {std::tie(v, a, b), std::tie(a, b, v), std::tie(b, v, a)}) {
+      const auto inside = CGAL::orientation(p, q, r);
+      if (CGAL::orientation(p, q, c1) == -inside && CGAL::orientation(p, q, c2) == -inside) return false;
+    }
+    return CGAL::do_intersect(K::Segment_2(c1, c2), tri);
+  };
+  for (const auto& [c1, c2] : obstacles) {
+    auto o = CGAL::orientation(v, c1, c2);
+    if (c1 == v || c2 == v || o == CGAL::COLLINEAR || !in_front(c1, c2)) continue;
+    const Point &from = o == CGAL::LEFT_TURN ? c1 : c2, &to = o == CGAL::LEFT_TURN ? c2 : c1;
+    const Point &first = before(from, lo) ? lo : from, &last = before(hi, to) ? hi : to;
+    if (before(first, last)) shades.emplace_back(first, last);
+  }
+  std::sort(shades.begin(), shades.end(), [&](const auto& x, const auto& y) { return before(x.first, y.first); });
+  const Point* reach = &lo;  // the directions from lo up to *reach are shaded (none strictly inside yet)
+  for (const auto& [first, last] : shades) {
+    if (before(*reach, first)) return false;  // an open gap of directions between *reach and first
+    if (before(*reach, last)) reach = &last;
+  }
+  return !before(*reach, hi);
+}
+
 void keep_encroaching(const Point& s, const Point& e, std::vector<Vertex_handle>& q) {
   q.erase(std::remove_if(q.begin(), q.end(), [&](Vertex_handle v) { return !inside_diametral_disk(s, e, v->point()); }),
           q.end());
 }
 
-bool State::subsegment_is_empty(const Side& start, const Point& s, const Point& p,
-                                const std::vector<Vertex_handle>& q) const {
-  return std::none_of(q.begin(), q.end(), [&](Vertex_handle v) {
-    return inside_diametral_disk(s, p, v->point()) && reachable_within(start, s, p, v);
+bool State::subsegment_is_empty(const Side& start, const Point& s, const Point& p, const std::vector<Vertex_handle>& q,
+                                Sight sight) const {
+  std::vector<Vertex_handle> inside;
+  for (Vertex_handle v : q)
+    if (inside_diametral_disk(s, p, v->point())) inside.push_back(v);
+  if (inside.empty()) return true;
+  if (sight.obstacles != nullptr)
+    return std::none_of(inside.begin(), inside.end(), [&](Vertex_handle v) { return sees(start, s, p, v, sight); });
+  // Reach: one walk for all of them (v is reachable iff some face of the whole walk has it).
+  std::sort(inside.begin(), inside.end());
+  bool seen = false;
+  walk_disk(domain_faces(start), s, p, [&](Face_handle f) {
+    for (int i = 0; i < 3; ++i) seen = seen || std::binary_search(inside.begin(), inside.end(), f->vertex(i));
+    return seen;
   });
+  return !seen;
 }
 
-int State::greedy_count(const Side& side, std::vector<Vertex_handle> q) const {
+int State::greedy_count(const Side& side, const DiskWalk& walk) const {
+  std::vector<Vertex_handle> q = walk.encroachers;
+  const Sight sight{&walk.obstacles};
   Point x = side.s->point();
   const Point& e = side.e->point();
   int count = 0;
@@ -432,10 +502,10 @@ int State::greedy_count(const Side& side, std::vector<Vertex_handle> q) const {
   for (std::size_t step = 0; step < 2 * q.size() + 8; ++step) {
     keep_encroaching(x, e, q);
     if (q.empty()) break;
-    double t = greedy_parameter(side, x, e, q);
+    double t = greedy_parameter(side, x, e, q, sight);
     if (t >= 1) break;
     Point p;
-    auto empty = [&](const Point& c) { return subsegment_is_empty(side, x, c, q); };
+    auto empty = [&](const Point& c) { return subsegment_is_empty(side, x, c, q, sight); };
     if (!pick_point_at_or_before(x, e, t, empty, p)) break;
     x = p;
     ++count;

@@ -16,6 +16,7 @@
 namespace nonobtuse::refine2d {
 
 using cdt::CDT;
+using cdt::K;
 using cdt::Edge;
 using cdt::Face_handle;
 using cdt::Point;
@@ -27,10 +28,30 @@ struct Side {
   Vertex_handle s, e;
 };
 
+using Segment2 = std::pair<Point, Point>;
+
 // What the walk over the diametral disk of a side found.
 struct DiskWalk {
   std::vector<Vertex_handle> encroachers;  // vertices strictly inside the open half-disk, reachable from the side
+  std::vector<Segment2> obstacles;         // the constrained edges of the faces reached, other than the side's own
 };
+
+// How a vertex strictly inside the open diametral disk of a subsegment [a, b] of an edge counts as its encroacher.
+// Reach (obstacles == nullptr): reachable from the edge's domain faces inside the closed disk without crossing a
+// constraint (float pruning with slack, so it errs toward yes): implied by being seen, but a walk can wrap around a
+// constraint's free end (or an end on the circle) to vertices that no point of (a, b) sees; the refinement uses
+// it (its result is certified exactly anyway). Exact: seen from some point y of the open subsegment, the closed
+// segment [y, v] meeting none of *obstacles (covered_from); the lower bound uses it with the obstacles of the walk
+// over the whole edge's disk: the first constraint on every sight line from the edge inside that disk is an edge of
+// a face the walk reached. Closed obstacles are stricter than "no constraint properly crosses [y, v]" only on
+// sight lines grazing a constraint's end, so Exact never counts a vertex that is not seen.
+struct Sight {
+  const std::vector<Segment2>* obstacles = nullptr;
+};
+
+// Exact: the closed segments `obstacles` block every sight line from v to the open segment (a, b) (v off its line;
+// obstacles ending at v are ignored).
+bool covered_from(const Point& v, const Point& a, const Point& b, const std::vector<Segment2>& obstacles);
 
 class State {
  public:
@@ -102,44 +123,70 @@ class State {
   // These are the forbidden intervals of `side` that contain p, visibility included. Cost: the conflict zone.
   std::vector<Side> sides_broken_by(const Side& side, const Point& p) const;
 
-  // The greedy end from s toward e (s on the side `start`, whose left face touches [s, e]): the smallest
-  // t = |q - s|^2 / ((q - s) . d), d = e - s, over the vertices q of `q` that [s, s + t d] would see, i.e. that
-  // are reachable inside its diametral disk from `start`'s triangle without crossing a constraint (paper 4.4:
-  // only visible vertices encroach). At that t, q reaches the circle of [s, s + t d] (paper-notes:
-  // (s - q).(x - q) >= 0 iff t (q - s).d <= |q - s|^2). 1 when nothing blocks; `blocker` receives the vertex.
-  // Cost: one disk walk per candidate tried, in increasing t (usually one).
-  double greedy_parameter(const Side& start, const Point& s, const Point& e, const std::vector<Vertex_handle>& q,
-                          Vertex_handle* blocker = nullptr) const;
-  // True when no vertex of q that [s, p] would see (reachable_within) encroaches it (exact encroachment, on
-  // either side: q only holds vertices of domain sides).
-  bool subsegment_is_empty(const Side& start, const Point& s, const Point& p,
-                           const std::vector<Vertex_handle>& q) const;
-  // Whether q is reachable from `start`'s domain_faces inside the closed diametral disk of [a, b] (float pruning with
-  // slack, so "reachable" errs toward yes) without crossing a constraint.
-  bool reachable_within(const Side& start, const Point& a, const Point& b, Vertex_handle q) const;
+  // Whether v, strictly inside the open diametral disk of [a, b] on `start`'s edge, counts against it (Sight).
+  bool sees(const Side& start, const Point& a, const Point& b, Vertex_handle v, Sight sight) const;
 
-  // Single-edge Greedy-Refine (Theorem 2) of `side` against the vertices `q` only, without inserting anything:
-  // the number of Steiner points it places, each rounded as the refinement rounds them.
-  int greedy_count(const Side& side, std::vector<Vertex_handle> q) const;
+  // The greedy end from s toward e (s on the side `start`, whose left face touches [s, e]): the smallest
+  // t = |q - s|^2 / ((q - s) . d), d = e - s, over the vertices q of `q` that [s, s + t d] would see (`sight`;
+  // paper 4.4: only visible vertices encroach). At that t, q reaches the circle of [s, s + t d] (paper-notes:
+  // (s - q).(x - q) >= 0 iff t (q - s).d <= |q - s|^2). 1 when nothing blocks; `blocker` receives the vertex.
+  // Cost: one walk per candidate tried, in increasing t (usually one).
+  double greedy_parameter(const Side& start, const Point& s, const Point& e, const std::vector<Vertex_handle>& q,
+                          Sight sight, Vertex_handle* blocker = nullptr) const;
+  // True when no vertex of q that [s, p] would see (`sight`) encroaches it (exact encroachment, on either side: q
+  // only holds vertices of domain sides).
+  bool subsegment_is_empty(const Side& start, const Point& s, const Point& p, const std::vector<Vertex_handle>& q,
+                           Sight sight) const;
+
+  // Single-edge Greedy-Refine (Theorem 2) of `side` against the encroachers of its disk walk only, without
+  // inserting anything: the number of Steiner points it places, each rounded as the refinement rounds them; a
+  // vertex counts against a subsegment only when the subsegment sees it (Sight with the walk's obstacles).
+  int greedy_count(const Side& side, const DiskWalk& walk) const;
 
  private:
-  bool is_convex_polygon() const;  // every boundary side on the hull, no interface, every vertex on a constraint
+  // Every side of `sides` (the boundary sides) on the hull, no interface, every vertex on a constraint.
+  bool is_convex_polygon(const std::vector<Side>& sides) const;
   // The neighbour of `from` along the constraint toward `end` (`end`, or a vertex the constraint passes through).
   Vertex_handle next_on_constraint(Vertex_handle from, Vertex_handle end) const;
   // Domain marks of the faces changed by inserting v between to_s and to_e (see split); queues their sides.
   void remark_around(Vertex_handle v, Vertex_handle to_e, Vertex_handle to_s, const cdt::FaceInfo& left,
                      const cdt::FaceInfo& right);
-  // Depth-first walk from the faces `start` across unconstrained edges into the faces meeting the closed
-  // diametral disk of [a, b]; visit(face) returns true to stop.
+  // Depth-first walk from the faces `start` across the unconstrained edges (u, w) for which crosses(u, w) holds;
+  // visit(face) returns true to stop.
+  template <class Crosses, class Visit>
+  void walk(const std::vector<Face_handle>& start, Crosses&& crosses, Visit&& visit) const;
+  // walk into the faces meeting the closed diametral disk of [a, b] (float pruning with slack: a little too far).
   template <class Visit>
   void walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit) const;
+  // A fresh stamp for a walk over faces: the walk has reached a face iff its info().visit equals the stamp
+  // (cheaper than a set of face handles). Walks must not nest.
+  unsigned new_walk() const { return ++walks_; }
+  mutable unsigned walks_ = 0;
+  // walk_diametral_disk lists each vertex once: vertex_walk_[index] is the stamp of the last walk that listed it.
+  mutable unsigned vertex_lists_ = 0;
+  mutable std::vector<unsigned> vertex_walk_;
   std::map<std::pair<int, int>, int> edge_index_;  // input boundary edge (min, max) -> index in edges
   std::vector<int> steiner_edge_;                   // Steiner point (index - n_input) -> index in edges
 };
 
+// Exact CGAL::angle(a, apex, b) == OBTUSE, i.e. (a - apex) . (b - apex) < 0, with a static filter (Epick's Angle_2
+// has none, and the disk walks evaluate it for every vertex they meet): the dot product in doubles decides when
+// its magnitude exceeds 2^-50 times the sum of the absolute products, which bounds its rounding error (four
+// roundings per product term, each relative 2^-53: under 4 * 2^-53 < 2^-50 of their sum); otherwise (near zero,
+// or magnitudes where underflow or overflow void the bound) CGAL decides.
+inline bool obtuse(const Point& a, const Point& apex, const Point& b) {
+  const double ux = a.x() - apex.x(), uy = a.y() - apex.y(), vx = b.x() - apex.x(), vy = b.y() - apex.y();
+  const double dot = ux * vx + uy * vy, bound = (std::abs(ux * vx) + std::abs(uy * vy)) * 0x1p-50;
+  if (bound > 0x1p-900 && bound < 0x1p+900) {
+    if (dot < -bound) return true;
+    if (dot > bound) return false;
+  }
+  return CGAL::angle(a, apex, b) == CGAL::OBTUSE;
+}
+
 // Exact encroachment of q on side (s, e): q strictly left of s -> e and strictly inside the diametral disk.
 inline bool encroaches(const Point& s, const Point& e, const Point& q) {
-  return CGAL::orientation(s, e, q) == CGAL::LEFT_TURN && CGAL::angle(s, q, e) == CGAL::OBTUSE;
+  return CGAL::orientation(s, e, q) == CGAL::LEFT_TURN && obtuse(s, q, e);
 }
 
 // Double points near s + t (e - s), t in (0, 1), that may stand for it on the subsegment, most preferred first:
@@ -178,7 +225,7 @@ bool pick_point_at_or_before(const Point& s, const Point& e, double t, Valid&& v
 // lists come from walk_diametral_disk, which only collects vertices on domain sides, so for a boundary edge this
 // is `encroaches`, and for an interface it treats both sides at once (t* = min over both sides' encroachers).
 inline bool inside_diametral_disk(const Point& s, const Point& e, const Point& q) {
-  return CGAL::orientation(s, e, q) != CGAL::COLLINEAR && CGAL::angle(s, q, e) == CGAL::OBTUSE;
+  return CGAL::orientation(s, e, q) != CGAL::COLLINEAR && obtuse(s, q, e);
 }
 
 // Keeps the vertices of q still encroaching [s, e] (disks of subsegments that share e shrink as s advances).

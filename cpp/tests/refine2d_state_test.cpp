@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 namespace nonobtuse::refine2d {
 namespace {
 
@@ -34,6 +37,36 @@ TEST(Refine2dState, OffLineCandidatesPreferTheOutside) {
   ASSERT_FALSE(c.empty());
   auto o = CGAL::orientation(s, e, c.front());
   EXPECT_NE(o, CGAL::LEFT_TURN);
+}
+
+// The filtered obtuse test agrees with CGAL's exact angle, also where the dot product is zero or within rounding
+// of it: (a - apex) . (b - apex) for apex on the circle with diameter ab is exactly 0 (right angle), and the
+// points nudged by one ulp off it decide by the exact fallback.
+TEST(Refine2dState, ObtuseAgreesWithTheExactAngle) {
+  const Point a(0, 0), b(10, 0);
+  std::vector<Point> apexes = {{5, 5}, {5, 4}, {5, 6}, {3, 4.58257569495584}, {0.1, 0.2}, {1e-300, 1e-300}};
+  apexes.emplace_back(5, std::nextafter(5.0, 0.0));  // inside the circle by one ulp: obtuse
+  apexes.emplace_back(5, std::nextafter(5.0, 9.0));  // outside by one ulp: acute
+  for (const Point& p : apexes) EXPECT_EQ(obtuse(a, p, b), CGAL::angle(a, p, b) == CGAL::OBTUSE) << p;
+  EXPECT_FALSE(obtuse(a, Point(5, 5), b));  // right angle: 25 - 25 = 0
+  EXPECT_TRUE(obtuse(a, Point(5, std::nextafter(5.0, 0.0)), b));
+}
+
+// covered_from, hand-worked: v = (0, 4) above the open segment (-2, 0)-(2, 0); the sight line to (x, 0) crosses
+// y = 2 at x / 2 and y = 1 at 3 x / 4. (-3, 2)-(3, 2) blocks every one; (-3, 2)-(0.9, 2) leaves 1.8 < x < 2 open;
+// (0.5, 1)-(3, 1) blocks x >= 2/3 and closes that gap. Behind the segment, (-3, -1)-(3, -1) shades nothing, nor
+// does one ending at v. From the end a = (-2, 0): to (-1, -3), behind, it shades nothing (counted, it would
+// shade x <= -4/7 and close the gap x < -1 left by (-0.5, 2)-(3, 2)); to (3, 3), in front, every line crosses it.
+TEST(Refine2dState, CoveredFromShadesOnlyInFront) {
+  const Point v(0, 4), a(-2, 0), b(2, 0);
+  EXPECT_FALSE(covered_from(v, a, b, {}));
+  EXPECT_TRUE(covered_from(v, a, b, {{Point(-3, 2), Point(3, 2)}}));
+  EXPECT_FALSE(covered_from(v, a, b, {{Point(-3, 2), Point(0.9, 2)}}));
+  EXPECT_TRUE(covered_from(v, a, b, {{Point(-3, 2), Point(0.9, 2)}, {Point(0.5, 1), Point(3, 1)}}));
+  EXPECT_FALSE(covered_from(v, a, b, {{Point(-3, -1), Point(3, -1)}, {v, Point(5, 0)}}));
+  // Ending at the segment's end a: shades only when it enters v's side.
+  EXPECT_FALSE(covered_from(v, a, b, {{a, Point(-1, -3)}, {Point(-0.5, 2), Point(3, 2)}}));
+  EXPECT_TRUE(covered_from(v, a, b, {{a, Point(3, 3)}}));
 }
 
 }  // namespace

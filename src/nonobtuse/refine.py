@@ -69,8 +69,9 @@ def refine(domain: Domain, strategy: str = "greedy", max_steiner: int | None = N
     exists, else a few ulps off it); the returned mesh is checked exactly on every side of every constraint
     (``stats["obtuse_boundary_triangles"]`` counts the obtuse sides: 0 whenever the status is
     ``"converged"``). ``lower_bound`` is the sum over input constraint edges of the single-edge greedy count
-    against the input vertices visible from the edge (from both sides of an interface): no refinement
-    placing Steiner points on the constraints uses fewer. ``optimal`` is True when
+    against the input vertices each subsegment sees (from both sides of an interface; exact visibility, so
+    a vertex hidden behind a dangling segment does not count): no refinement placing Steiner points on the
+    constraints uses fewer. ``optimal`` is True when
     the count equals the bound, or for the greedy strategy on a convex polygon without interior points
     (Theorem 3), None otherwise.
     Deterministic. Cost: O(n log n) to triangulate plus, per Steiner point, the triangles meeting the
