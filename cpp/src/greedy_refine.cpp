@@ -75,7 +75,9 @@ enum class Step { Place, Defer, Stuck };
 // Chooses the next Steiner point on `cur` (violated) given the walk's encroachers.
 Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& deferred, Point& p) {
   const Point &s = cur.s->point(), &e = cur.e->point();
-  auto empty = [&](const Point& c) { return st.subsegment_is_empty(cur, s, c, w.encroachers, Sight{}); };
+  auto empty = [&](const Point& c) {
+    return st.splittable(cur, c) && st.subsegment_is_empty(cur, s, c, w.encroachers, Sight{});
+  };
   auto allowed = [&](const Point& c) { return empty(c) && !forbidder(st, cur, c); };
   Vertex_handle blocker;
   const double t_greedy = st.greedy_parameter(cur, s, e, w.encroachers, Sight{}, &blocker);

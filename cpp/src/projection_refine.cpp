@@ -20,7 +20,7 @@ double foot_parameter(const Point& s, const Point& e, const Point& q) {
 Vertex_handle split_at_foot(State& st, const Side& side, const Point& q) {
   Point p;
   const Point &s = side.s->point(), &e = side.e->point();
-  if (!pick_point(s, e, foot_parameter(s, e, q), [](const Point&) { return true; }, p)) return nullptr;
+  if (!pick_point(s, e, foot_parameter(s, e, q), [&](const Point& c) { return st.splittable(side, c); }, p)) return nullptr;
   return st.split(side, p);
 }
 

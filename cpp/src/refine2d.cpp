@@ -76,7 +76,7 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
     st.fallback_used = true;
     for (const Side& side : stuck) {
       refine2d::Point p;
-      auto valid = [](const refine2d::Point&) { return true; };
+      auto valid = [&](const refine2d::Point& c) { return st.splittable(side, c); };
       if (st.budget_left() && st.is_violated(side) &&
           refine2d::pick_point(side.s->point(), side.e->point(), 0.5, valid, p))
         st.split(side, p);

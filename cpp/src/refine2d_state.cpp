@@ -275,7 +275,11 @@ std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
   for (int i = -2; i <= 2; ++i)
     for (int j = 1; j <= 8; ++j) out.emplace_back(x0 + u * (i * tx + j * ty), y0 + u * (i * ty - j * tx));
   out.erase(std::remove_if(out.begin(), out.end(),
-                           [&](const Point& q) { return q == s || q == e || !obtuse(s, q, e); }),
+                           [&](const Point& q) {
+                             // A coordinate over a subnormal slope can overflow: no infinities into predicates.
+                             return !std::isfinite(q.x()) || !std::isfinite(q.y()) || q == s || q == e ||
+                                    !obtuse(s, q, e);
+                           }),
             out.end());
   // Collinear first, then outside (right of s -> e), then inside by ulps; each by distance from the target along
   // the line (nearest first; ties: the one nearer s).
@@ -313,6 +317,21 @@ bool State::keeps_triangles_valid(const Side& side, const Point& p) const {
       return false;
   }
   return true;
+}
+
+bool State::splittable(const Side& side, const Point& p) const {
+  if (keeps_triangles_valid(side, p) && keeps_hull_convex(side, p)) return true;
+  Face_handle fl = left_face(side);
+  int i = fl->index(apex(side));
+  Face_handle fr = fl->neighbor(i);
+  const Point &s = side.s->point(), &e = side.e->point();
+  const Vertex_handle cl = fl->vertex(i), cr = fr->vertex(fr->index(fl));
+  const auto o = CGAL::orientation(s, e, p);  // not COLLINEAR: a point on the line splits in place
+  // The apex on p's side; the infinite vertex (p outside the hull) means the polyline meets nothing there.
+  const auto side_of_cl = cdt.is_infinite(cl) ? -CGAL::orientation(s, e, cr->point()) : CGAL::orientation(s, e, cl->point());
+  const Vertex_handle c = side_of_cl == o ? cl : cr;
+  if (cdt.is_infinite(c)) return true;
+  return CGAL::orientation(e, c->point(), p) == o && CGAL::orientation(c->point(), s, p) == o;
 }
 
 Vertex_handle State::split(const Side& side, const Point& p) {

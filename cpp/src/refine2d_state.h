@@ -104,6 +104,10 @@ class State {
   // p would keep the two triangles next to the side counter-clockwise when inserted into the edge (exact; p may
   // be ulps off the line, and a neighbouring apex nearly on it).
   bool keeps_triangles_valid(const Side& side, const Point& p) const;
+  // split(side, p) is safe: p splits the edge in place (the two checks above), or the polyline s-p-e that replaces
+  // it stays inside the triangle next to the edge on p's side (p strictly inside it, exact) or outside the hull,
+  // so that it crosses no constraint and passes over no vertex. Every point given to split must pass this.
+  bool splittable(const Side& side, const Point& p) const;
 
   bool budget_left() const { return placed < budget; }
   // Debug builds (NONOBTUSE_CHECK_INVARIANTS), after every split: CGAL's is_valid, and the maintained domain marks
