@@ -104,7 +104,15 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
     if (!in_closed_disk(s, *f) && t_start > 0x1p-20) {
       // Theorem 3: move back to the start of the forbidden interval. Where two intervals touch (the single-point
       // gap of Lemma 2, e.g. the foot of an obtuse apex), the exact gap point is among the candidates.
-      if (pick_point(s, e, t_start, allowed, p)) return Step::Place;
+      if (pick_point(s, e, t_start, allowed, p)) {
+        // The move back pays only when the next step can then clear f's interval: [p, end of the interval]
+        // empty. Otherwise a later point lands in f's disk anyway (f is then refined in turn), and the greedy
+        // point, farther along, covers more (the layers of experiments/figure6_propagation.py: 2n - 1 -> n).
+        const double te = std::min(t_end, 1.0);
+        const Point end = te < 1 ? Point(s.x() + te * (e.x() - s.x()), s.y() + te * (e.y() - s.y())) : e;
+        if (st.subsegment_is_empty(cur, p, end, w.encroachers, Sight{})) return Step::Place;
+        break;
+      }
       t = std::min(t_start, t * (1 - 0x1p-40));
       continue;
     }
