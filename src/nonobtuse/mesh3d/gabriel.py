@@ -155,7 +155,7 @@ def refine_gabriel(
     max_steiner: int | None = None,
     min_length: float | None = None,
     time_limit: float = 60.0,
-    split: Literal["shells", "midpoint"] = "shells",
+    split: Literal["shells", "midpoint", "greedy"] = "shells",
     progress: Callable[[int, int, int, float], None] | bool | None = None,
     progress_every: int = 1000,
 ) -> Gabriel3DResult:
@@ -202,6 +202,7 @@ def refine_gabriel(
         "status": d["status"],
         "steiner_points": d["steiner_on_segments"] + d["steiner_on_facets"],
         "steiner_on_segments": d["steiner_on_segments"],
+        "greedy_splits": d["greedy_splits"],
         "steiner_on_facets": d["steiner_on_facets"],
         "encroached_facets": len(report.faces),
         "encroached_segments": len(report.segments),
