@@ -192,10 +192,10 @@ double shell_parameter(const P3& pa, const P3& pb, bool a_input, bool b_input) {
 // prefix below that), or when the rounded point is an existing vertex. In exact arithmetic a vertex v of E never
 // encroaches the rest [x, e] either: x lies at or beyond the foot of v on the segment (t* >= ((v - s)·(e - s)) /
 // |e - s|^2 since |v - s|^2 >= that dot squared over |e - s|^2), so v sees [x, e] at an angle of at most 90°.
-// The guard, measured on the corpus (experiments/README.md): without a bound on the rest, a greedy point lands
-// next to the far end (an encroacher near it) and the tiny rest starts a cascade (every input ended at
-// min_length after 0-1700 points); bounding both pieces by 1/8, 1/4 or 3/8 converges on 6, 6 and 5 of the 7
-// inputs shells converges on, with the fewest points in total at 1/4 among the converged.
+// The guard, measured on the 7 corpus inputs shells converges on (experiments/README.md): bounding only the prefix,
+// a greedy point lands next to the far end (an encroacher near it) and the tiny rest starts a cascade (6 of the 7
+// ended at min_length); bounding both pieces by 1/8, 1/4 or 3/8 converges on 7, 7 and 6 of them, with 40266 and
+// 40345 points in total at 1/8 and 1/4 (shells: 45403); 1/4 keeps the larger smallest subsegment.
 constexpr double kGreedyMinPiece = 0.25;
 
 std::optional<double> Refiner::greedy_parameter(int a, int b, const P3* pending) const {
@@ -245,7 +245,8 @@ std::optional<Stop> Refiner::split(const Key& sub, bool always, bool* inserted_p
   // Greedy keeps the shells rule on subsegments with an end at an input vertex e where two input segments meet at
   // an acute angle: a greedy point x placed beyond the foot of an encroacher v on the other segment [e, v] sees
   // [e, v] at an obtuse angle (it encroaches it) and starts the ping-pong that shells end. Measured on the corpus
-  // (experiments/README.md): greedy there too ended at min_length on 5 of the 7 inputs shells converges on.
+  // (experiments/README.md): greedy there too converged on 2 of the 7 inputs shells converges on; shells only on
+  // subsegments with exactly one end at an acute input vertex, on 6 (rotor.off ran out of budget).
   const bool acute_end = (a_input && acute_[a]) || (b_input && acute_[b]);
   if (o_.split == SplitRule::Greedy && !acute_end) greedy = greedy_parameter(a, b, pending);
   const double t = greedy ? *greedy : o_.split == SplitRule::Midpoint ? 0.5 : shell_parameter(pa, pb, a_input, b_input);
