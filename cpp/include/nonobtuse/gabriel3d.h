@@ -112,7 +112,7 @@ struct Refine3Result {
   Refine3Diagnosis diagnosis;
 };
 
-// Ruppert-like repair: splits encroached subsegments (midpoint, or concentric shells around input vertices) and
+// Ruppert-like repair: splits encroached subsegments (midpoint, concentric shells around input vertices, or greedy) and
 // encroached subfacets (at their circumcenter, or the subsegment that point encroaches or lies beyond) until every
 // subsegment and subfacet has an empty open diametral sphere, then returns the Delaunay tetrahedralization of all
 // vertices restricted to the PLC's interior (flood fill from outside across boundary faces; hole seeds removed).
