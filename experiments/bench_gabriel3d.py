@@ -7,7 +7,9 @@ diametral sphere) is run on the mesh produced:
 - tetgen-pq: TetGen ``-pq1.414`` (quality; splits the boundary as it likes);
 - tetgen-pY: TetGen ``-pY`` (keeps the boundary: no boundary Steiner point);
 - ftetwild:  fTetWild (remeshes the surface within an envelope);
-- ours:      refine_gabriel (boundary Steiner points until no boundary facet or segment is encroached).
+- ours:      refine_gabriel (boundary Steiner points until no boundary facet or segment is encroached),
+             with its default split rule (concentric shells);
+- ours-greedy: the same with split="greedy" (Greedy-Refine along subsegments; shells at acute input vertices).
 
 Columns: input, method, status, points, boundary_steiner (boundary-face vertices that are not input points),
 steiner (all output points that are not input points), boundary_faces, encroached_facets, encroached_segments
@@ -64,10 +66,12 @@ def run_backend(name: str, plc, method: str, backend: str, **options) -> dict[st
     return measure(name, method, plc, mesh, "ok", time.perf_counter() - t0)
 
 
-def run_ours(name: str, plc, max_steiner: int | None, time_limit: float) -> dict[str, Any]:
+def run_ours(name: str, plc, max_steiner: int | None, time_limit: float,
+             split: str = "shells") -> dict[str, Any]:
     t0 = time.perf_counter()
-    result = refine_gabriel(plc, max_steiner=max_steiner, time_limit=time_limit)
-    return measure(name, "ours", plc, result.mesh, result.status, time.perf_counter() - t0)
+    result = refine_gabriel(plc, max_steiner=max_steiner, time_limit=time_limit, split=split)
+    method = "ours" if split == "shells" else f"ours-{split}"
+    return measure(name, method, plc, result.mesh, result.status, time.perf_counter() - t0)
 
 
 def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
@@ -85,6 +89,7 @@ def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
     else:
         rows.append({"input": name, "method": "ftetwild", "status": "skipped (size)"})
     rows.append(run_ours(name, plc, args.max_steiner, args.time_limit))
+    rows.append(run_ours(name, plc, args.max_steiner, args.time_limit, split="greedy"))
     return rows
 
 

@@ -1,4 +1,7 @@
 // 3D Gabriel certificate and refinement: conversion only.
+#include <map>
+#include <string>
+
 #include <pybind11/functional.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
@@ -54,6 +57,7 @@ py::dict result_to_dict(const Refine3Result& r) {
   d["tet_regions"] = from_vector(r.tet_regions);
   d["status"] = to_string(r.status);
   d["steiner_on_segments"] = r.steiner_on_segments;
+  d["greedy_splits"] = r.greedy_splits;
   d["steiner_on_facets"] = r.steiner_on_facets;
   d["seconds"] = r.seconds;
   d["smallest_subsegment"] = r.smallest_subsegment;
@@ -99,13 +103,15 @@ void bind_gabriel3d(py::module_& m) {
         auto* r = regions.data();
         for (py::ssize_t i = 0; regions.ndim() == 2 && i < regions.shape(0); ++i)
           plc.regions.push_back({r[4 * i], r[4 * i + 1], r[4 * i + 2], r[4 * i + 3]});
-        if (split != "shells" && split != "midpoint")
-          throw InvalidInput("split must be 'shells' or 'midpoint', not '" + split + "'");
+        const std::map<std::string, SplitRule> rules = {
+            {"shells", SplitRule::Shells}, {"midpoint", SplitRule::Midpoint}, {"greedy", SplitRule::Greedy}};
+        if (!rules.count(split))
+          throw InvalidInput("split must be 'shells', 'midpoint' or 'greedy', not '" + split + "'");
         Refine3Options o;
         o.max_steiner = max_steiner;
         o.min_length = min_length;
         o.time_limit = time_limit;
-        o.split = split == "shells" ? SplitRule::Shells : SplitRule::Midpoint;
+        o.split = rules.at(split);
         o.progress_every = progress_every;
         if (progress)
           o.progress = [progress](const Refine3Progress& p) {

@@ -241,3 +241,81 @@ TEST(Gabriel3DRefine, FlatTetrahedronRunsToItsBudgetConsistently) {
 
 }  // namespace
 }  // namespace nonobtuse
+
+namespace nonobtuse {
+namespace {
+
+// A dangling segment from (0, 0, 0) to (10, 0, 0) with one vertex v off it; (5, 5, 5) is far outside every sphere
+// (distance sqrt(50) = 7.07 > 5 from the center of [0, 10]).
+PLC3 segment_with_one_encroacher(const Point3& v) {
+  PLC3 plc;
+  plc.points = {{0, 0, 0}, {10, 0, 0}, v, {5, 5, 5}};
+  plc.segments = {{0, 1}};
+  return plc;
+}
+
+TEST(Gabriel3DGreedy, OnePointWhereMidpointNeedsFour) {
+  // v = (3, 0.5, 0) encroaches [0, 10] (distance 2.05 from the center 5 < radius 5).
+  // Greedy: from 0 the free prefix ends at t = |v|^2 / (v·(10, 0, 0)) = 9.25 / 30 = 0.308; from 10 with
+  // w = v - (10, 0, 0) = (-7, 0.5, 0): t = |w|^2 / (w·(-10, 0, 0)) = 49.25 / 70 = 0.7036, the longer one, and the
+  // rest 0.296 is above the 1/4 guard. So x = 10 - 7.0357 = 2.9643, with v on the sphere of [x, 10] (right angle
+  // at v); [0, x] (center 1.482, radius 1.482) has v at distance sqrt(1.518^2 + 0.25) = 1.598: outside. One point.
+  // Midpoint: 5; [0, 5] (center 2.5, radius 2.5, v at 0.707): 2.5; [2.5, 5] (center 3.75, radius 1.25, v at
+  // 0.901): 3.75; [2.5, 3.75] (center 3.125, radius 0.625, v at 0.515): 3.125; then [2.5, 3.125] (v at 0.534 from
+  // 2.8125 > 0.3125) and [3.125, 3.75] (v at 0.664 from 3.4375) are free. Four points.
+  PLC3 plc = segment_with_one_encroacher({3, 0.5, 0});
+  Refine3Options o;
+  o.split = SplitRule::Greedy;
+  auto g = refine_gabriel(plc, o);
+  EXPECT_EQ(g.status, Refine3Status::Converged) << g.diagnosis.stop_reason;
+  ASSERT_EQ(g.steiner_on_segments, 1);
+  EXPECT_EQ(g.greedy_splits, 1);
+  EXPECT_NEAR(g.points[4].x, 10.0 - 49.25 / 7.0, 1e-12);
+  EXPECT_EQ(g.points[4].y, 0.0);
+  o.split = SplitRule::Midpoint;
+  auto m = refine_gabriel(plc, o);
+  EXPECT_EQ(m.status, Refine3Status::Converged) << m.diagnosis.stop_reason;
+  EXPECT_EQ(m.steiner_on_segments, 4);
+  EXPECT_EQ(m.greedy_splits, 0);
+}
+
+TEST(Gabriel3DGreedy, ShortRestFallsBackToTheShellsRule) {
+  // v = (9, 0.5, 0): from 0 the free prefix is 81.25 / 90 = 0.903 of the segment, leaving a rest of 0.097 < 1/4;
+  // from 10 it is 1.25 / 10 = 0.125 < 1/4. The guard refuses both: the shells rule splits at the midpoint (both
+  // ends are input vertices), (5, 0, 0).
+  auto r = refine_gabriel(segment_with_one_encroacher({9, 0.5, 0}), {.split = SplitRule::Greedy});
+  ASSERT_GE(r.points.size(), 5u);
+  EXPECT_EQ(r.points[4].x, 5.0);
+}
+
+TEST(Gabriel3DGreedy, AcuteInputVertexKeepsShells) {
+  // Segments from the origin to (10, 0, 0) and to (10, 2, 0) meet at atan(0.2) = 11.3 degrees (acute), with the
+  // free vertex (3, 0.5, 0) between them encroaching both. A subsegment ending at the origin only arises from
+  // splitting one that ends there, which the shells rule splits (the midpoint when both ends are input vertices):
+  // so the other end of every final subsegment at the origin is an input vertex, the midpoint of an input segment
+  // (distance 5 or sqrt(26)), or at a power-of-two distance (up to the rounding of the point). Away from the
+  // origin the greedy rule is used: [2, 5] on the first segment (after the midpoint 5 and the shell at 2) still
+  // has (3, 0.5, 0) inside (center 3.5, radius 1.5, distance 0.707).
+  PLC3 plc;
+  plc.points = {{0, 0, 0}, {10, 0, 0}, {10, 2, 0}, {3, 0.5, 0}};
+  plc.segments = {{0, 1}, {0, 2}};
+  auto g = refine_gabriel(plc, {.split = SplitRule::Greedy});
+  EXPECT_EQ(g.status, Refine3Status::Converged) << g.diagnosis.stop_reason;
+  EXPECT_GT(g.greedy_splits, 0);
+  int at_origin = 0;
+  for (auto [a, b] : g.segments) {
+    if (a != 0 && b != 0) continue;
+    ++at_origin;
+    int e = a == 0 ? b : a;
+    if (e < 4) continue;
+    const Point3& p = g.points[e];
+    double d = std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z);
+    bool midpoint = std::abs(d - 5.0) < 1e-12 || std::abs(d - std::sqrt(26.0)) < 1e-12;
+    double k = std::round(std::log2(d));
+    EXPECT_TRUE(midpoint || std::abs(d - std::exp2(k)) < 1e-12 * d) << "distance " << d;
+  }
+  EXPECT_EQ(at_origin, 2);
+}
+
+}  // namespace
+}  // namespace nonobtuse

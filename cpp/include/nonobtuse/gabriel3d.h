@@ -49,7 +49,11 @@ struct PLC3 {
   std::vector<std::array<double, 4>> regions;  // x, y, z, attribute
 };
 
-enum class SplitRule : std::int8_t { Midpoint = 0, Shells = 1 };
+// How an encroached subsegment is split: at its midpoint; by concentric shells (a power-of-two distance from its
+// one input-vertex end, else the midpoint); or Greedy: the end of the longest prefix from one end whose diametral
+// sphere holds none of the subsegment's current encroachers (the 2D paper's Greedy-Refine), with the shells rule
+// where that prefix is short (see refine_gabriel).
+enum class SplitRule : std::int8_t { Midpoint = 0, Shells = 1, Greedy = 2 };
 enum class Refine3Status : std::int8_t { Converged = 0, BudgetExhausted = 1, MinLengthReached = 2, Stalled = 3 };
 
 struct Refine3Progress {
@@ -97,6 +101,7 @@ struct Refine3Result {
   std::vector<double> tet_regions;
   Refine3Status status = Refine3Status::Stalled;
   long steiner_on_segments = 0;
+  long greedy_splits = 0;  // of steiner_on_segments, placed by the greedy rule (split == Greedy)
   long steiner_on_facets = 0;
   double seconds = 0.0;
   double smallest_subsegment = 0.0;
@@ -107,7 +112,7 @@ struct Refine3Result {
   Refine3Diagnosis diagnosis;
 };
 
-// Ruppert-like repair: splits encroached subsegments (midpoint, or concentric shells around input vertices) and
+// Ruppert-like repair: splits encroached subsegments (midpoint, concentric shells around input vertices, or greedy) and
 // encroached subfacets (at their circumcenter, or the subsegment that point encroaches or lies beyond) until every
 // subsegment and subfacet has an empty open diametral sphere, then returns the Delaunay tetrahedralization of all
 // vertices restricted to the PLC's interior (flood fill from outside across boundary faces; hole seeds removed).

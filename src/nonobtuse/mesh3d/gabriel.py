@@ -155,7 +155,7 @@ def refine_gabriel(
     max_steiner: int | None = None,
     min_length: float | None = None,
     time_limit: float = 60.0,
-    split: Literal["shells", "midpoint"] = "shells",
+    split: Literal["shells", "midpoint", "greedy"] = "shells",
     progress: Callable[[int, int, int, float], None] | bool | None = None,
     progress_every: int = 1000,
 ) -> Gabriel3DResult:
@@ -164,8 +164,13 @@ def refine_gabriel(
     plc: points (n, 3) float64; triangles (m, 3) int64 with facet_ids (m,) (triangles of one planar facet
     share an id); segments (k, 2); holes (h, 3) volume-hole seeds; regions (r, 4) x, y, z, attribute.
     Encroached subsegments are split first (midpoint, or split="shells": at a power-of-two distance from an
-    input vertex end), then encroached subfacets at their circumcenter, unless it encroaches a subsegment of
-    the facet or lies outside the facet, in which case that subsegment is split. The facets' boundary edges
+    input vertex end, or split="greedy": the 2D paper's Greedy-Refine along the subsegment, the end of the
+    longest piece from one end whose diametral sphere holds none of its current encroachers, checked exactly
+    after rounding; the shells rule where an end is an input vertex with an acute angle between input
+    segments, or where the greedy piece or the rest would be under 1/4 of the subsegment;
+    stats["greedy_splits"] counts the greedy points), then encroached subfacets at their circumcenter, unless
+    it encroaches a subsegment of the facet or lies outside the facet, in which case that subsegment is
+    split. The facets' boundary edges
     count as segments. Stops at max_steiner (default_steiner_budget(n) when None: 10 n + 10,000 for n input
     points; real CAD parts need about 2-5 n), time_limit (seconds), min_length (no split may create a shorter
     edge; default_min_length(points) when None: 1e-6 of the bounding box diagonal; 0 turns it off) or when
@@ -202,6 +207,7 @@ def refine_gabriel(
         "status": d["status"],
         "steiner_points": d["steiner_on_segments"] + d["steiner_on_facets"],
         "steiner_on_segments": d["steiner_on_segments"],
+        "greedy_splits": d["greedy_splits"],
         "steiner_on_facets": d["steiner_on_facets"],
         "encroached_facets": len(report.faces),
         "encroached_segments": len(report.segments),
