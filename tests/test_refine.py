@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -123,3 +125,25 @@ def test_exact_checkers_detect_violations():
     assert non_delaunay_edges(both) == 1
     one = Mesh(pts, np.array([[0, 1, 2]]), np.array([[0, 2]]), pts, no_segments)
     assert obtuse_boundary_sides(one) == 1
+
+
+UNIT_SQUARE = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+SQUARE_LOOP = [(0, 1), (1, 2), (2, 3), (3, 0)]
+
+
+@pytest.mark.parametrize(
+    ("points", "segments", "message"),
+    [
+        (UNIT_SQUARE, [*SQUARE_LOOP, (2, 2)], "segment 4 (2, 2) has zero length"),  # crashed the process
+        ([*UNIT_SQUARE, (np.nan, 0.5)], SQUARE_LOOP, "point 4 has a coordinate that is not finite"),
+        ([*UNIT_SQUARE, (0.5, np.inf)], SQUARE_LOOP, "point 4 has a coordinate that is not finite"),
+        ([*UNIT_SQUARE, (1.0, 0.0)], SQUARE_LOOP, "duplicate points"),
+        (UNIT_SQUARE, [*SQUARE_LOOP, (0, 2), (1, 3)], "crosses another segment"),
+    ],
+)
+@pytest.mark.parametrize("strategy", ["greedy", "project-flip", "projection"])
+def test_unvalidated_bad_domains_raise_instead_of_crashing(points, segments, message, strategy):
+    # refine expects a validated domain; the C++ core still refuses what would corrupt its triangulation.
+    d = Domain(points=np.array(points, dtype=float), segments=np.array(segments))
+    with pytest.raises(InvalidInputError, match=re.escape(message)):
+        nonobtuse.refine(d, strategy=strategy)

@@ -5,6 +5,7 @@
 #include <CGAL/spatial_sort.h>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -61,10 +62,30 @@ std::vector<std::pair<Point, int>> insertion_order(const std::vector<Point2>& pt
   return out;
 }
 
+// Backstops for a domain that skipped nonobtuse.validate (which names problems with more context): predicates on
+// non-finite coordinates are undefined, and a constraint from a vertex to itself corrupts the triangulation.
+void require_finite_and_proper(const Domain2& domain) {
+  auto finite = [](double x, double y) { return std::isfinite(x) && std::isfinite(y); };
+  for (std::size_t i = 0; i < domain.points.size(); ++i)
+    if (!finite(domain.points[i].x, domain.points[i].y))
+      throw InvalidInput("point " + std::to_string(i) + " has a coordinate that is not finite");
+  for (std::size_t i = 0; i < domain.holes.size(); ++i)
+    if (!finite(domain.holes[i].x, domain.holes[i].y))
+      throw InvalidInput("hole " + std::to_string(i) + " has a coordinate that is not finite");
+  for (std::size_t i = 0; i < domain.regions.size(); ++i)
+    if (!finite(domain.regions[i].at.x, domain.regions[i].at.y) || !std::isfinite(domain.regions[i].attribute))
+      throw InvalidInput("region " + std::to_string(i) + " has a coordinate or attribute that is not finite");
+  for (std::size_t s = 0; s < domain.segments.size(); ++s)
+    if (domain.segments[s][0] == domain.segments[s][1])
+      throw InvalidInput("segment " + std::to_string(s) + " (" + std::to_string(domain.segments[s][0]) + ", " +
+                         std::to_string(domain.segments[s][1]) + ") has zero length");
+}
+
 }  // namespace
 
 std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain) {
   if (cdt.number_of_vertices() != 0) throw InternalError("cdt::build: the triangulation is not empty");
+  require_finite_and_proper(domain);
   // The points go into a Delaunay triangulation over the same data structure, which is then swapped in:
   // Delaunay_triangulation_2 inserts without the constraint bookkeeping, and both break cocircular ties by the
   // same symbolic perturbation, so this is the CDT of the points without constraints.
