@@ -2,10 +2,10 @@
 
 Found by a hypothesis search over the fans of tests/test_pslg.py with float (not 0.1-grid, not whole-degree)
 coordinates and angles, then shrunk by hand to the inputs below. Before the fixes, the first raised
-InternalError("the refined boundary s-p-e crosses a constraint": a rounded Steiner point off one arm's line lay
-beyond the other arm) and the second killed the interpreter with SIGFPE (an infinite candidate coordinate, from a
-subnormal slope, reached GMP). Greedy converges on both (its shells handle the junction); the baselines have no
-shells and may exhaust their budget at a 1e-50 rad junction, but end with a status.
+InternalError("the refined boundary s-p-e crosses a constraint": a rounded Steiner point off one arm's line
+lay beyond the other arm) and the second killed the interpreter with SIGFPE (an infinite candidate
+coordinate, from a subnormal slope, reached GMP). Greedy converges on both (its shells handle the junction);
+the baselines have no shells and may exhaust their budget at a 1e-50 rad junction, but end with a status.
 """
 
 from __future__ import annotations
