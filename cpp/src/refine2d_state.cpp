@@ -21,6 +21,36 @@ double distance2_to_segment(double cx, double cy, const Point& u, const Point& w
   return px * px + py * py;
 }
 
+// A face with the edge (a, b) and the index of the edge in it, circulating around a and b in lockstep: O(the
+// smaller degree). CGAL's is_edge circulates around a only, which at a junction of k constraints (shells put
+// many points around it) made every lookup there O(k).
+bool find_edge(const CDT& cdt, Vertex_handle a, Vertex_handle b, Face_handle& f, int& i) {
+  if (cdt.dimension() < 2) return cdt.is_edge(a, b, f, i);
+  auto ca = cdt.incident_faces(a), cb = cdt.incident_faces(b);
+  const auto end_a = ca, end_b = cb;
+  bool more_a = true, more_b = true;
+  int ia, ib;
+  while (more_a || more_b) {
+    if (more_a) {
+      if (ca->has_vertex(b, ib)) {
+        f = ca;
+        i = 3 - ca->index(a) - ib;
+        return true;
+      }
+      more_a = ++ca != end_a;
+    }
+    if (more_b) {
+      if (cb->has_vertex(a, ia)) {
+        f = cb;
+        i = 3 - ia - cb->index(b);
+        return true;
+      }
+      more_b = ++cb != end_b;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 State::State(const Domain2& d, long long b) : domain(d), n_input(static_cast<int>(d.points.size())), budget(b) {
@@ -64,7 +94,7 @@ bool State::keeps_hull_convex(const Side& side, const Point& p) const {
 Face_handle State::left_face(const Side& side) const {
   Face_handle f;
   int i;
-  if (!cdt.is_edge(side.s, side.e, f, i) || !f->is_constrained(i)) return nullptr;
+  if (!find_edge(cdt, side.s, side.e, f, i) || !f->is_constrained(i)) return nullptr;
   // Face f lies on the left of f->vertex(ccw(i)) -> f->vertex(cw(i)) (faces are counter-clockwise).
   return f->vertex(CDT::ccw(i)) == side.s ? f : f->neighbor(i);
 }
