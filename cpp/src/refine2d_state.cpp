@@ -78,19 +78,6 @@ bool State::is_convex_polygon(const std::vector<Side>& sides) const {
   return true;
 }
 
-bool State::keeps_hull_convex(const Side& side, const Point& p) const {
-  Face_handle fl = left_face(side);
-  Face_handle fr = fl->neighbor(fl->index(apex(side)));
-  if (!cdt.is_infinite(fr)) return true;
-  // An edge of CGAL's convex hull, which must stay convex: r, s, p, e, n (the hull counter-clockwise, r before s
-  // and n after e) must never turn right.
-  Face_handle before = fr->neighbor(fr->index(side.e)), after = fr->neighbor(fr->index(side.s));
-  const Point &r = before->vertex(before->index(fr))->point(), &n = after->vertex(after->index(fr))->point();
-  const Point &s = side.s->point(), &e = side.e->point();
-  return CGAL::orientation(r, s, p) != CGAL::RIGHT_TURN && CGAL::orientation(s, p, e) != CGAL::RIGHT_TURN &&
-         CGAL::orientation(p, e, n) != CGAL::RIGHT_TURN;
-}
-
 Face_handle State::left_face(const Side& side) const {
   Face_handle f;
   int i;
@@ -332,30 +319,36 @@ std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
   return sorted;
 }
 
-bool State::keeps_triangles_valid(const Side& side, const Point& p) const {
+State::Wings State::wings(const Side& side) const {
   Face_handle fl = left_face(side);
   if (fl == nullptr) throw InternalError("refine2d: split of an edge that is not a constraint");
-  int i = fl->index(apex(side));
+  int i = 0;
+  while (fl->vertex(i) == side.s || fl->vertex(i) == side.e) ++i;
   Face_handle fr = fl->neighbor(i);
-  // p (possibly off the line by ulps) must keep both triangles next to the edge counter-clockwise once split.
-  for (Face_handle f : {fl, fr}) {
-    Vertex_handle c = f->vertex(f == fl ? i : fr->index(fl));
+  return {fl, fr, i, fr->vertex(fr->index(fl))};
+}
+
+bool State::splits_in_place(const Side& side, const Wings& w, const Point& p) const {
+  const Point &s = side.s->point(), &e = side.e->point();
+  for (Vertex_handle c : {w.left->vertex(w.i), w.right_apex}) {
     if (cdt.is_infinite(c)) continue;
-    auto o = CGAL::orientation(side.s->point(), side.e->point(), c->point());
-    if (CGAL::orientation(side.s->point(), p, c->point()) != o ||
-        CGAL::orientation(p, side.e->point(), c->point()) != o)
-      return false;
+    auto o = CGAL::orientation(s, e, c->point());
+    if (CGAL::orientation(s, p, c->point()) != o || CGAL::orientation(p, e, c->point()) != o) return false;
   }
-  return true;
+  if (!cdt.is_infinite(w.right)) return true;
+  // An edge of CGAL's convex hull, which must stay convex: r, s, p, e, n (the hull counter-clockwise, r before s
+  // and n after e) must never turn right.
+  Face_handle before = w.right->neighbor(w.right->index(side.e)), after = w.right->neighbor(w.right->index(side.s));
+  const Point &r = before->vertex(before->index(w.right))->point(), &n = after->vertex(after->index(w.right))->point();
+  return CGAL::orientation(r, s, p) != CGAL::RIGHT_TURN && CGAL::orientation(s, p, e) != CGAL::RIGHT_TURN &&
+         CGAL::orientation(p, e, n) != CGAL::RIGHT_TURN;
 }
 
 bool State::splittable(const Side& side, const Point& p) const {
-  if (keeps_triangles_valid(side, p) && keeps_hull_convex(side, p)) return true;
-  Face_handle fl = left_face(side);
-  int i = fl->index(apex(side));
-  Face_handle fr = fl->neighbor(i);
+  const Wings w = wings(side);
+  if (splits_in_place(side, w, p)) return true;
   const Point &s = side.s->point(), &e = side.e->point();
-  const Vertex_handle cl = fl->vertex(i), cr = fr->vertex(fr->index(fl));
+  const Vertex_handle cl = w.left->vertex(w.i), cr = w.right_apex;
   const auto o = CGAL::orientation(s, e, p);  // not COLLINEAR: a point on the line splits in place
   // The apex on p's side; the infinite vertex (p outside the hull) means the polyline meets nothing there.
   const auto side_of_cl = cdt.is_infinite(cl) ? -CGAL::orientation(s, e, cr->point()) : CGAL::orientation(s, e, cl->point());
@@ -365,20 +358,18 @@ bool State::splittable(const Side& side, const Point& p) const {
 }
 
 Vertex_handle State::split(const Side& side, const Point& p) {
-  Face_handle fl = left_face(side);
-  if (fl == nullptr) throw InternalError("refine2d: split of an edge that is not a constraint");
-  int i = fl->index(apex(side));
-  const cdt::FaceInfo left = fl->info(), right = fl->neighbor(i)->info();
+  const Wings w = wings(side);
+  const cdt::FaceInfo left = w.left->info(), right = w.right->info();
   const int edge = edge_of(side);
   Vertex_handle v;
-  if (keeps_triangles_valid(side, p) && keeps_hull_convex(side, p)) {
-    v = cdt.insert(p, CDT::EDGE, fl, i);  // splits the constraint and both triangles, then flips
+  if (splits_in_place(side, w, p)) {
+    v = cdt.insert(p, CDT::EDGE, w.left, w.i);  // splits the constraint and both triangles, then flips
   } else {
     // p is off the line and a neighbouring apex lies nearly on it (a sliver), or p bends a convex hull edge
     // inward: splitting in place would invert a triangle or the hull. Replace the constraint (s, e) by the
     // polyline s-p-e instead; CGAL inserts p (inside or outside the hull) and retriangulates exactly.
     std::size_t before = cdt.number_of_vertices();
-    cdt.remove_constrained_edge(fl, i);
+    cdt.remove_constrained_edge(w.left, w.i);
     v = cdt.insert(p, side.s->face());
     if (cdt.number_of_vertices() == before) {  // p coincides with a vertex: give up on this point
       cdt.insert_constraint(side.s, side.e);

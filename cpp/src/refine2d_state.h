@@ -98,15 +98,9 @@ class State {
   // changed faces are queued. Returns nullptr only when p coincides with an existing vertex.
   // Cost: O(degree of p) plus the flips.
   Vertex_handle split(const Side& side, const Point& p);
-  // Inserting p into the edge keeps CGAL's convex hull convex (always, unless the side is a hull edge and p bends
-  // it inward; exact).
-  bool keeps_hull_convex(const Side& side, const Point& p) const;
-  // p would keep the two triangles next to the side counter-clockwise when inserted into the edge (exact; p may
-  // be ulps off the line, and a neighbouring apex nearly on it).
-  bool keeps_triangles_valid(const Side& side, const Point& p) const;
-  // split(side, p) is safe: p splits the edge in place (the two checks above), or the polyline s-p-e that replaces
-  // it stays inside the triangle next to the edge on p's side (p strictly inside it, exact) or outside the hull,
-  // so that it crosses no constraint and passes over no vertex. Every point given to split must pass this.
+  // split(side, p) is safe: p splits the edge in place (splits_in_place), or the polyline s-p-e that replaces it
+  // stays inside the triangle next to the edge on p's side (p strictly inside it, exact) or outside the hull, so
+  // that it crosses no constraint and passes over no vertex. Every point given to split must pass this.
   bool splittable(const Side& side, const Point& p) const;
 
   bool budget_left() const { return placed < budget; }
@@ -148,6 +142,17 @@ class State {
   int greedy_count(const Side& side, const DiskWalk& walk) const;
 
  private:
+  // The two faces beside a constrained edge: left of s -> e (its apex at index i) and right (apex right_apex).
+  struct Wings {
+    Face_handle left, right;
+    int i;
+    Vertex_handle right_apex;
+  };
+  // One edge lookup; InternalError when the side is not a constrained edge.
+  Wings wings(const Side& side) const;
+  // Inserting p into the edge keeps both triangles beside it counter-clockwise (p may be ulps off the line, a
+  // neighbouring apex nearly on it) and CGAL's convex hull convex (p must not bend a hull edge inward). Exact.
+  bool splits_in_place(const Side& side, const Wings& w, const Point& p) const;
   // Every side of `sides` (the boundary sides) on the hull, no interface, every vertex on a constraint.
   bool is_convex_polygon(const std::vector<Side>& sides) const;
   // The neighbour of `from` along the constraint toward `end` (`end`, or a vertex the constraint passes through).
