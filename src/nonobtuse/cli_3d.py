@@ -42,11 +42,6 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.set_defaults(func=run_refine3d)
 
 
-def encroached_counts(report: Any) -> tuple[int, int]:
-    """(encroached boundary facets, encroached segments) of a GabrielReport."""
-    return len(report.faces), len(report.segments)
-
-
 def _print(summary: dict[str, Any], as_json: bool) -> None:
     if as_json:
         print(json.dumps(jsonable(summary)))
@@ -61,7 +56,7 @@ def run_check3d(args: argparse.Namespace) -> int:
     plc = load_plc(args.input, fix_orientation=args.fix_orientation)
     mesh = tetrahedralize(plc, args.backend)
     report = check_gabriel(mesh)
-    facets, segments = encroached_counts(report)
+    facets, segments = len(report.faces), len(report.segments)
     summary = {"input": args.input, "backend": args.backend, "points": len(mesh.points),
                "tets": len(mesh.tets),
                "boundary_faces": len(mesh.boundary_faces), "steiner_points": mesh.stats["steiner_points"],
