@@ -16,7 +16,8 @@ using Point = K::Point_2;
 
 struct FaceInfo {
   bool in_domain = false;
-  int component = -1;   // connected component of domain faces across unconstrained edges
+  int component = -1;   // domain faces: connected component across unconstrained edges when the domain has
+                        // regions, else 0; -2 exterior, -3 hole (mark_domain)
   double region = 0.0;  // region attribute of the component
   unsigned visit = 0;   // the last walk over faces that reached this face (refine2d::State::new_walk)
 };
@@ -42,8 +43,8 @@ inline Point2 from_cgal(const Point& p) { return {p.x(), p.y()}; }
 std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain);
 
 // Recomputes FaceInfo for every face: the exterior (flood fill from the infinite faces across unconstrained
-// edges) and hole seeds are out, the rest in; components and region attributes by flood fill across
-// unconstrained edges. Call again after inserting points.
+// edges) and hole seeds are out, the rest in; when the domain has regions, components and their attributes by
+// flood fill across unconstrained edges. Call again after inserting points.
 void mark_domain(CDT& cdt, const Domain2& domain);
 
 // Domain triangles, every constrained subsegment bordering the domain, points indexed by vertex info.

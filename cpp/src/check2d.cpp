@@ -5,6 +5,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -54,63 +55,92 @@ void require_counter_clockwise(const Mesh2& mesh) {
 }
 
 // The half-edges of the mesh's triangles (indices checked valid), bucketed by their smaller vertex a with a
-// counting sort (linear; comparison-sorting 3m keys dominated refine's certificate at 1e6 triangles), each
-// bucket, a handful of half-edges, sorted by (b, triangle): the sides of edge (a, b) are adjacent.
+// counting sort (linear), so that both sides of an edge (a, b) share a bucket. A half-edge is one 64-bit word: b,
+// a bit set when its triangle lies on the edge's left (runs counter-clockwise through a then b), and 3 triangle
+// + the corner opposite the edge: the arrays stay small, as the certificate is a pass over memory. Buckets hold
+// about six half-edges and are paired by a short scan, unsorted (sorting a million small buckets was most of the
+// certificate's time); a bucket of a high-degree vertex is sorted first, so that pairing stays O(d log d).
 class HalfEdges {
  public:
-  struct HalfEdge {
-    int b, triangle, apex;  // the edge (a, b), a < b, of `triangle`, whose vertex opposite it is `apex`
-    bool left;              // the triangle traverses the edge as (a, b): it lies on the edge's left
-  };
-
-  explicit HalfEdges(const Mesh2& mesh) : start_(mesh.points.size() + 1, 0), half_(3 * mesh.triangles.size()) {
-    auto ends = [&mesh](std::size_t t, int k) {
-      int u = mesh.triangles[t][(k + 1) % 3], v = mesh.triangles[t][(k + 2) % 3];
-      return std::make_pair(std::min(u, v), std::max(u, v));
-    };
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-      for (int k = 0; k < 3; ++k) ++start_[ends(t, k).first + 1];
+  explicit HalfEdges(const Mesh2& mesh)
+      : mesh_(mesh), start_(mesh.points.size() + 1, 0), half_(3 * mesh.triangles.size()) {
+    if (mesh.triangles.size() > kMaxTriangles)
+      throw InvalidInput("the mesh has " + std::to_string(mesh.triangles.size()) + " triangles; at most " +
+                         std::to_string(kMaxTriangles) + " are supported");
+    for (const auto& tri : mesh.triangles)
+      for (int k = 0; k < 3; ++k) ++start_[std::min(tri[(k + 1) % 3], tri[(k + 2) % 3]) + 1];
     for (std::size_t a = 0; a + 1 < start_.size(); ++a) start_[a + 1] += start_[a];
     std::vector<std::size_t> next(start_.begin(), start_.end() - 1);
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
       for (int k = 0; k < 3; ++k) {
-        const auto& tri = mesh.triangles[t];
-        auto [a, b] = ends(t, k);
-        half_[next[a]++] = {b, static_cast<int>(t), tri[k], tri[(k + 1) % 3] == a};
+        int u = mesh.triangles[t][(k + 1) % 3], v = mesh.triangles[t][(k + 2) % 3];
+        half_[next[std::min(u, v)]++] =
+            static_cast<std::uint64_t>(std::max(u, v)) << 32 | (u < v ? kLeft : 0) | (3 * t + k);
       }
     for (std::size_t a = 0; a + 1 < start_.size(); ++a)
-      std::sort(half_.begin() + start_[a], half_.begin() + start_[a + 1], [](const HalfEdge& x, const HalfEdge& y) {
-        return std::make_pair(x.b, x.triangle) < std::make_pair(y.b, y.triangle);
-      });
+      if (start_[a + 1] - start_[a] > kShort) std::sort(half_.begin() + start_[a], half_.begin() + start_[a + 1]);
   }
 
-  // Calls f(a, first, last) for every edge (a, half(first).b), in increasing (a, b) order; [first, last) are its
-  // half-edges.
+  // Calls f(a, b, left, right) once for every edge (a, b), a < b, that some triangle has, with its half-edges
+  // whose triangle lies on the left and on the right (npos where there is none), in increasing a. Throws
+  // InvalidInput when two triangles lie on the same side of an edge.
   template <class F>
-  void for_each_edge(F&& f) const {
-    for (std::size_t a = 0; a + 1 < start_.size(); ++a)
-      for (std::size_t first = start_[a], last; first < start_[a + 1]; first = last) {
-        for (last = first + 1; last < start_[a + 1] && half_[last].b == half_[first].b;) ++last;
-        f(static_cast<int>(a), first, last);
+  void for_each_edge(F&& f) {
+    for (std::size_t a = 0; a + 1 < start_.size(); ++a) {
+      const std::size_t first = start_[a], last = start_[a + 1];
+      for (std::size_t i = first; i < last; ++i) {
+        if (half_[i] & kPaired) continue;
+        std::size_t side[2] = {npos, npos};  // [left, right]
+        side[left(i) ? 0 : 1] = i;
+        for (std::size_t j = i + 1; j < last; ++j) {
+          if (head(j) != head(i)) {
+            if (last - first > kShort) break;  // sorted: the edge's half-edges are adjacent
+            continue;
+          }
+          std::size_t& s = side[left(j) ? 0 : 1];
+          if (s != npos) throw same_side(static_cast<int>(a), head(i), s, j);
+          s = j;
+          half_[j] |= kPaired;
+        }
+        f(static_cast<int>(a), head(i), side[0], side[1]);
       }
+    }
   }
 
-  // The first half-edge of edge (a, b), a < b, or npos when no triangle has it.
+  // A half-edge of edge (a, b), a < b, or npos when no triangle has the edge.
   std::size_t find(int a, int b) const {
     for (std::size_t i = start_[a]; i < start_[a + 1]; ++i)
-      if (half_[i].b == b) return i;
+      if (head(i) == b) return i;
     return npos;
   }
 
-  const HalfEdge& half(std::size_t i) const { return half_[i]; }
+  // Of half-edge i: its triangle and the triangle's vertex opposite it.
+  int triangle(std::size_t i) const { return static_cast<int>(code(i) / 3); }
+  int apex(std::size_t i) const { return mesh_.triangles[triangle(i)][code(i) % 3]; }
+
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 
  private:
+  static constexpr std::uint64_t kLeft = std::uint64_t{1} << 31, kPaired = std::uint64_t{1} << 30;
+  static constexpr std::size_t kShort = 16;  // buckets up to this long are paired by a scan, longer ones sorted
+  static constexpr std::size_t kMaxTriangles = (std::size_t{1} << 30) / 3;  // 3 t + k below both flag bits
+
+  int head(std::size_t i) const { return static_cast<int>(half_[i] >> 32); }
+  bool left(std::size_t i) const { return (half_[i] & kLeft) != 0; }
+  std::uint32_t code(std::size_t i) const { return static_cast<std::uint32_t>(half_[i] & (kPaired - 1)); }
+
+  InvalidInput same_side(int a, int b, std::size_t i, std::size_t j) const {
+    return InvalidInput("edge (" + std::to_string(a) + ", " + std::to_string(b) + ") has " +
+                        describe_triangle(mesh_, triangle(i)) + " and " + describe_triangle(mesh_, triangle(j)) +
+                        " on the same side: the mesh is not a consistently oriented manifold");
+  }
+
+  const Mesh2& mesh_;
   std::vector<std::size_t> start_;  // bucket a: half_[start_[a], start_[a + 1])
-  std::vector<HalfEdge> half_;
+  std::vector<std::uint64_t> half_;
 };
 
-// constrained[i] for the first half-edge i of every edge listed in mesh.segments.
+// constrained[i] for a half-edge i of every edge listed in mesh.segments (kind_of reads the first side it gets).
 std::vector<char> constrained_edges(const Mesh2& mesh, const HalfEdges& h, std::size_t n_half) {
   std::vector<char> constrained(n_half, 0);
   for (std::size_t s = 0; s < mesh.segments.size(); ++s) {
@@ -124,31 +154,22 @@ std::vector<char> constrained_edges(const Mesh2& mesh, const HalfEdges& h, std::
   return constrained;
 }
 
-EdgeKind kind_of(const Mesh2& mesh, const EdgeReport& e, bool constrained) {
-  if (e.left.triangle < 0 || e.right.triangle < 0) return EdgeKind::Boundary;
-  if (constrained) return EdgeKind::Interface;
+// The kind of edge (a, b) from its half-edges with the triangle on the left and on the right (npos where none).
+EdgeKind kind_of(const Mesh2& mesh, const HalfEdges& h, std::size_t left, std::size_t right,
+                 const std::vector<char>& constrained) {
+  if (left == HalfEdges::npos || right == HalfEdges::npos) return EdgeKind::Boundary;
+  if (constrained[left] || constrained[right]) return EdgeKind::Interface;
   const auto& region = mesh.triangle_region;
-  if (!region.empty() && region[e.left.triangle] != region[e.right.triangle]) return EdgeKind::Interface;
+  if (!region.empty() && region[h.triangle(left)] != region[h.triangle(right)]) return EdgeKind::Interface;
   return EdgeKind::Interior;
 }
 
-// The report of edge (a, b) from its half-edges [first, last): sides (triangle, apex) and kind; angles stay
-// Acute and locally_delaunay true (classify_angles, locally_delaunay). Invariant: at most one triangle per side;
-// the triangle traversing the edge as (a, b), a < b, lies on the left.
-EdgeReport edge_report(const Mesh2& mesh, const HalfEdges& h, int a, std::size_t first, std::size_t last,
-                       bool constrained) {
-  EdgeReport r{Segment{a, h.half(first).b}, EdgeKind::Interior, {}, {}, true};
-  for (std::size_t i = first; i < last; ++i) {
-    EdgeSide& side = h.half(i).left ? r.left : r.right;
-    if (side.triangle >= 0)
-      throw InvalidInput("edge (" + std::to_string(r.edge[0]) + ", " + std::to_string(r.edge[1]) + ") has " +
-                         describe_triangle(mesh, side.triangle) + " and " +
-                         describe_triangle(mesh, h.half(i).triangle) +
-                         " on the same side: the mesh is not a consistently oriented manifold");
-    side.triangle = h.half(i).triangle;
-    side.apex = h.half(i).apex;
-  }
-  r.kind = kind_of(mesh, r, constrained);
+// The report of edge (a, b) of kind `kind`: its sides (triangle, apex); angles stay Acute and locally_delaunay
+// true (classify_angles, locally_delaunay).
+EdgeReport edge_report(const HalfEdges& h, int a, int b, std::size_t left, std::size_t right, EdgeKind kind) {
+  EdgeReport r{Segment{a, b}, kind, {}, {}, true};
+  if (left != HalfEdges::npos) r.left = {h.triangle(left), h.apex(left)};
+  if (right != HalfEdges::npos) r.right = {h.triangle(right), h.apex(right)};
   return r;
 }
 
@@ -159,18 +180,19 @@ void classify_angles(const Mesh2& mesh, EdgeReport& r) {
       side->angle = classify_angle(at(mesh, r.edge[0]), at(mesh, side->apex), at(mesh, r.edge[1]));
 }
 
-// Every edge's report, with f(report) called in increasing (a, b) order, after checking the triangles
+// Calls f(report) for every edge whose kind keep(kind) accepts, in increasing a, after checking the triangles
 // (require_counter_clockwise), the region list's length and the segments.
-template <class F>
-void for_each_edge_report(const Mesh2& mesh, F&& f) {
+template <class Keep, class F>
+void for_each_edge_report(const Mesh2& mesh, Keep&& keep, F&& f) {
   if (!mesh.triangle_region.empty() && mesh.triangle_region.size() != mesh.triangles.size())
     throw InvalidInput("triangle_region has " + std::to_string(mesh.triangle_region.size()) + " entries for " +
                        std::to_string(mesh.triangles.size()) + " triangles");
   require_counter_clockwise(mesh);
-  const HalfEdges h(mesh);
+  HalfEdges h(mesh);
   const std::vector<char> constrained = constrained_edges(mesh, h, 3 * mesh.triangles.size());
-  h.for_each_edge([&](int a, std::size_t first, std::size_t last) {
-    f(edge_report(mesh, h, a, first, last, constrained[first] != 0));
+  h.for_each_edge([&](int a, int b, std::size_t left, std::size_t right) {
+    EdgeKind kind = kind_of(mesh, h, left, right, constrained);
+    if (keep(kind)) f(edge_report(h, a, b, left, right, kind));
   });
 }
 
@@ -187,18 +209,18 @@ bool locally_delaunay(const Mesh2& mesh, const EdgeReport& e) {
 std::vector<EdgeReport> classify_edges(const Mesh2& mesh) {
   std::vector<EdgeReport> edges;
   edges.reserve(3 * mesh.triangles.size() / 2 + mesh.segments.size());  // E = (3 m + boundary edges) / 2
-  for_each_edge_report(mesh, [&](EdgeReport r) {
+  for_each_edge_report(mesh, [](EdgeKind) { return true; }, [&](EdgeReport r) {
     classify_angles(mesh, r);
     r.locally_delaunay = locally_delaunay(mesh, r);
     edges.push_back(r);
   });
+  std::sort(edges.begin(), edges.end(), [](const EdgeReport& x, const EdgeReport& y) { return x.edge < y.edge; });
   return edges;
 }
 
 long long count_obtuse_boundary_sides(const Mesh2& mesh) {
   long long obtuse = 0;
-  for_each_edge_report(mesh, [&](EdgeReport r) {
-    if (r.kind == EdgeKind::Interior) return;
+  for_each_edge_report(mesh, [](EdgeKind kind) { return kind != EdgeKind::Interior; }, [&](EdgeReport r) {
     classify_angles(mesh, r);
     for (const EdgeSide* side : {&r.left, &r.right}) obtuse += side->triangle >= 0 && side->angle == AngleClass::Obtuse;
   });

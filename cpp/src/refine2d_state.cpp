@@ -67,6 +67,9 @@ State::State(const Domain2& d, long long b) : domain(d), n_input(static_cast<int
 }
 
 bool State::is_convex_polygon(const std::vector<Side>& sides) const {
+  // A polygon has as many boundary sides as vertices; inner points or constraints break the count (a cheap test
+  // first: the constrained-edge scan below visits every edge of the triangulation).
+  if (sides.size() != cdt.number_of_vertices()) return false;
   for (const Side& side : sides) {
     Face_handle f = left_face(side);
     if (!cdt.is_infinite(f->neighbor(f->index(apex(side))))) return false;

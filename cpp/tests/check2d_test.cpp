@@ -153,5 +153,37 @@ TEST(Check2d, EveryEdgeOfATriangulationOnceAndDelaunay) {
   EXPECT_EQ(interior, 8);
 }
 
+// A wheel: hub 0 and n rim vertices, the rim and one spoke listed as segments. The hub's half-edges are paired by a
+// scan up to a bucket of 16 and sorted beyond, so both ways are covered: the constrained spoke an interface, every
+// other spoke interior, every rim edge boundary, the edges sorted by (a, b), and a triangle repeated at the hub
+// refused.
+TEST(Check2d, WheelEdgesAtAHubOfAnyDegree) {
+  for (int n : {6, 40}) {
+    Mesh2 m;
+    m.points.push_back({0, 0});
+    for (int i = 0; i < n; ++i) m.points.push_back({std::cos(2 * M_PI * i / n), std::sin(2 * M_PI * i / n)});
+    for (int i = 0; i < n; ++i) {
+      int a = 1 + i, b = 1 + (i + 1) % n;
+      m.triangles.push_back({0, a, b});
+      m.segments.push_back({a, b});
+    }
+    const int spoke = 1 + n / 3;
+    m.segments.push_back({0, spoke});
+    auto edges = classify_edges(m);
+    ASSERT_EQ(edges.size(), 2u * n) << n;
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+      const auto& e = edges[k];
+      EdgeKind expected = e.edge[0] != 0           ? EdgeKind::Boundary
+                          : e.edge[1] == spoke ? EdgeKind::Interface
+                                               : EdgeKind::Interior;
+      EXPECT_EQ(e.kind, expected) << n << " " << e.edge[0] << " " << e.edge[1];
+      if (k > 0) EXPECT_LT(edges[k - 1].edge, e.edge);
+    }
+    EXPECT_EQ(count_obtuse_boundary_sides(m), 0);  // every rim angle at the hub is 360 / n degrees
+    m.triangles.push_back(m.triangles[n / 2]);
+    EXPECT_THROW(classify_edges(m), InvalidInput) << n;
+  }
+}
+
 }  // namespace
 }  // namespace nonobtuse
