@@ -47,24 +47,29 @@ void keep_top(std::vector<T>& rows) {
 RefineDiagnosis2 diagnose(const State& st) {
   const auto& pts = st.domain.points;
   const int n = st.n_input;
-  // Input constraints per input vertex (the refined edges, plus hull edges when the hull is the boundary).
-  std::vector<std::vector<int>> around(n);
-  for (const auto& e : st.edges) {
-    around[e.edge[0]].push_back(e.edge[1]);
-    around[e.edge[1]].push_back(e.edge[0]);
-  }
+  // Input constraints per input vertex (the refined edges, plus hull edges when the hull is the boundary): the
+  // other ends of v's constraints are around[start[v], start[v + 1]).
+  std::vector<int> start(n + 1, 0), around(2 * st.edges.size());
+  for (const auto& e : st.edges) ++start[e.edge[0] + 1], ++start[e.edge[1] + 1];
+  for (int v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<int> next(start.begin(), start.end() - 1);
+  for (const auto& e : st.edges) around[next[e.edge[0]]++] = e.edge[1], around[next[e.edge[1]]++] = e.edge[0];
   // The constraint at v closest in angle to v -> a, and that angle.
   auto neighbour = [&](int v, int a) {
     std::pair<double, int> best{360.0, -1};
-    for (int b : around[v])
-      if (b != a) best = std::min(best, {degrees(pts[v], pts[a], pts[b]), b});
+    for (int i = start[v]; i < start[v + 1]; ++i)
+      if (around[i] != a) best = std::min(best, {degrees(pts[v], pts[a], pts[around[i]]), around[i]});
     return best;
   };
-  std::vector<JunctionStats> junctions(n);
+  // A row for every vertex on a constraint, in vertex order; row[v] its index (inner points have none).
+  std::vector<JunctionStats> junctions;
+  std::vector<int> row(n, -1);
   for (int v = 0; v < n; ++v) {
-    junctions[v] = {v, static_cast<int>(around[v].size()), 360.0, 0};
-    for (int a : around[v])
-      junctions[v].min_angle_degrees = std::min(junctions[v].min_angle_degrees, neighbour(v, a).first);
+    if (start[v] == start[v + 1]) continue;
+    row[v] = static_cast<int>(junctions.size());
+    junctions.push_back({v, start[v + 1] - start[v], 360.0, 0});
+    for (int i = start[v]; i < start[v + 1]; ++i)
+      junctions.back().min_angle_degrees = std::min(junctions.back().min_angle_degrees, neighbour(v, around[i]).first);
   }
   std::map<std::pair<int, int>, InputAngleStats> angles;  // (vertex, a) -> stats
   std::map<int, std::set<int>> edges_of_cause;
@@ -78,8 +83,8 @@ RefineDiagnosis2 diagnose(const State& st) {
     const Point2 p = cdt::from_cgal(v->point());
     auto d2 = [&](int i) { return std::hypot(pts[i].x - p.x, pts[i].y - p.y); };
     int near = d2(a) <= d2(b) ? a : b, far = near == a ? b : a;
-    if (junctions[near].constraints >= 2) {
-      ++junctions[near].steiner_points;
+    if (junctions[row[near]].constraints >= 2) {
+      ++junctions[row[near]].steiner_points;
       auto [deg, other] = neighbour(near, far);
       auto& row = angles[{near, far}];
       row = {near, far, other, deg, row.steiner_points + 1};
@@ -91,7 +96,7 @@ RefineDiagnosis2 diagnose(const State& st) {
     }
   }
   RefineDiagnosis2 d;
-  d.junctions.assign(junctions.begin(), junctions.end());
+  d.junctions = std::move(junctions);
   keep_top(d.junctions);
   for (auto& [key, row] : angles) d.angles.push_back(row);
   keep_top(d.angles);
