@@ -10,6 +10,8 @@
 #include <string>
 #include <utility>
 
+#include "fork_join.h"
+
 namespace nonobtuse {
 namespace {
 
@@ -38,15 +40,20 @@ AngleClass classify_angle(const Point& a, const Point& apex, const Point& b) {
   }
 }
 
-// Every triangle index is a valid point index and every triangle is strictly counter-clockwise (exact
-// orientation): the side assignment below and the cotangent signs in control_volumes2d rely on it.
-void require_counter_clockwise(const Mesh2& mesh) {
+// Every triangle index is a valid point index.
+void require_valid_indices(const Mesh2& mesh) {
   const int n = static_cast<int>(mesh.points.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int v : mesh.triangles[t])
       if (v < 0 || v >= n)
         throw InvalidInput("triangle " + std::to_string(t) + " refers to point " + std::to_string(v) +
                            ", but there are " + std::to_string(n) + " points");
+}
+
+// Every triangle is strictly counter-clockwise (exact orientation; indices checked valid): the side assignment
+// below and the cotangent signs in control_volumes2d rely on it.
+void require_counter_clockwise(const Mesh2& mesh) {
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
     if (CGAL::orientation(at(mesh, tri[0]), at(mesh, tri[1]), at(mesh, tri[2])) != CGAL::LEFT_TURN)
       throw InvalidInput(describe_triangle(mesh, t) + " is degenerate or clockwise; triangles must be "
@@ -62,21 +69,39 @@ void require_counter_clockwise(const Mesh2& mesh) {
 // certificate's time); a bucket of a high-degree vertex is sorted first, so that pairing stays O(d log d).
 class HalfEdges {
  public:
+  // Large meshes are bucketed on two threads, each for half of the triangles; the layout is the sequential one.
   explicit HalfEdges(const Mesh2& mesh)
       : mesh_(mesh), start_(mesh.points.size() + 1, 0), half_(3 * mesh.triangles.size()) {
     if (mesh.triangles.size() > kMaxTriangles)
       throw InvalidInput("the mesh has " + std::to_string(mesh.triangles.size()) + " triangles; at most " +
                          std::to_string(kMaxTriangles) + " are supported");
-    for (const auto& tri : mesh.triangles)
-      for (int k = 0; k < 3; ++k) ++start_[std::min(tri[(k + 1) % 3], tri[(k + 2) % 3]) + 1];
-    for (std::size_t a = 0; a + 1 < start_.size(); ++a) start_[a + 1] += start_[a];
-    std::vector<std::size_t> next(start_.begin(), start_.end() - 1);
-    for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-      for (int k = 0; k < 3; ++k) {
-        int u = mesh.triangles[t][(k + 1) % 3], v = mesh.triangles[t][(k + 2) % 3];
-        half_[next[std::min(u, v)]++] =
-            static_cast<std::uint64_t>(std::max(u, v)) << 32 | (u < v ? kLeft : 0) | (3 * t + k);
-      }
+    const bool parallel = mesh.triangles.size() >= kForkThreshold;
+    const std::size_t middle = mesh.triangles.size() / 2;
+    std::vector<std::size_t> upper(parallel ? start_.size() : 0, 0);  // bucket sizes from the upper half
+    auto count = [&](std::size_t t_begin, std::size_t t_end, std::vector<std::size_t>& size) {
+      for (std::size_t t = t_begin; t < t_end; ++t)
+        for (int k = 0; k < 3; ++k)
+          ++size[std::min(mesh.triangles[t][(k + 1) % 3], mesh.triangles[t][(k + 2) % 3]) + 1];
+    };
+    fork_join(parallel, [&] { count(0, parallel ? middle : mesh.triangles.size(), start_); },
+              [&] { if (parallel) count(middle, mesh.triangles.size(), upper); });
+    std::vector<std::size_t> next(start_.size() - 1);  // where the lower half's next half-edge of bucket a goes
+    for (std::size_t a = 0; a + 1 < start_.size(); ++a) {
+      if (parallel) start_[a + 1] += upper[a + 1];
+      start_[a + 1] += start_[a];
+      next[a] = start_[a];
+      if (parallel) upper[a] = start_[a + 1] - upper[a + 1];  // the upper half's first slot in bucket a
+    }
+    auto fill = [&](std::size_t t_begin, std::size_t t_end, std::vector<std::size_t>& slot) {
+      for (std::size_t t = t_begin; t < t_end; ++t)
+        for (int k = 0; k < 3; ++k) {
+          int u = mesh.triangles[t][(k + 1) % 3], v = mesh.triangles[t][(k + 2) % 3];
+          half_[slot[std::min(u, v)]++] =
+              static_cast<std::uint64_t>(std::max(u, v)) << 32 | (u < v ? kLeft : 0) | (3 * t + k);
+        }
+    };
+    fork_join(parallel, [&] { fill(0, parallel ? middle : mesh.triangles.size(), next); },
+              [&] { if (parallel) fill(middle, mesh.triangles.size(), upper); });
     for (std::size_t a = 0; a + 1 < start_.size(); ++a)
       if (start_[a + 1] - start_[a] > kShort) std::sort(half_.begin() + start_[a], half_.begin() + start_[a + 1]);
   }
@@ -84,9 +109,10 @@ class HalfEdges {
   // Calls f(a, b, left, right) once for every edge (a, b), a < b, that some triangle has, with its half-edges
   // whose triangle lies on the left and on the right (npos where there is none), in increasing a. Throws
   // InvalidInput when two triangles lie on the same side of an edge.
+  // Only edges (a, b) with a in [a_begin, a_end): calls on disjoint ranges may run concurrently.
   template <class F>
-  void for_each_edge(F&& f) {
-    for (std::size_t a = 0; a + 1 < start_.size(); ++a) {
+  void for_each_edge(std::size_t a_begin, std::size_t a_end, F&& f) {
+    for (std::size_t a = a_begin; a < a_end; ++a) {
       const std::size_t first = start_[a], last = start_[a + 1];
       for (std::size_t i = first; i < last; ++i) {
         if (half_[i] & kPaired) continue;
@@ -118,6 +144,7 @@ class HalfEdges {
   int triangle(std::size_t i) const { return static_cast<int>(code(i) / 3); }
   int apex(std::size_t i) const { return mesh_.triangles[triangle(i)][code(i) % 3]; }
 
+  std::size_t vertices() const { return start_.size() - 1; }
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
 
  private:
@@ -180,20 +207,32 @@ void classify_angles(const Mesh2& mesh, EdgeReport& r) {
       side->angle = classify_angle(at(mesh, r.edge[0]), at(mesh, side->apex), at(mesh, r.edge[1]));
 }
 
-// Calls f(report) for every edge whose kind keep(kind) accepts, in increasing a, after checking the triangles
-// (require_counter_clockwise), the region list's length and the segments.
+// Calls f(part, report) for every edge whose kind keep(kind) accepts, after checking the triangles
+// (require_counter_clockwise), the region list's length and the segments. Large meshes are done in two parts,
+// edges (a, b) with a below and above the middle vertex, on two threads (f must keep its parts apart); either way,
+// part 0 gets its edges first, in increasing a, and reports the first error that a sequential pass would.
 template <class Keep, class F>
 void for_each_edge_report(const Mesh2& mesh, Keep&& keep, F&& f) {
   if (!mesh.triangle_region.empty() && mesh.triangle_region.size() != mesh.triangles.size())
     throw InvalidInput("triangle_region has " + std::to_string(mesh.triangle_region.size()) + " entries for " +
                        std::to_string(mesh.triangles.size()) + " triangles");
-  require_counter_clockwise(mesh);
+  require_valid_indices(mesh);
   HalfEdges h(mesh);
   const std::vector<char> constrained = constrained_edges(mesh, h, 3 * mesh.triangles.size());
-  h.for_each_edge([&](int a, int b, std::size_t left, std::size_t right) {
-    EdgeKind kind = kind_of(mesh, h, left, right, constrained);
-    if (keep(kind)) f(edge_report(h, a, b, left, right, kind));
-  });
+  auto part = [&](int p, std::size_t a_begin, std::size_t a_end) {
+    h.for_each_edge(a_begin, a_end, [&](int a, int b, std::size_t left, std::size_t right) {
+      EdgeKind kind = kind_of(mesh, h, left, right, constrained);
+      if (keep(kind)) f(p, edge_report(h, a, b, left, right, kind));
+    });
+  };
+  const std::size_t middle = h.vertices() / 2;
+  fork_join(
+      mesh.triangles.size() >= kForkThreshold,
+      [&] {
+        require_counter_clockwise(mesh);
+        part(0, 0, middle);
+      },
+      [&] { part(1, middle, h.vertices()); });
 }
 
 // Exact local Delaunay test: the right apex is not strictly inside the circumcircle of the left triangle.
@@ -207,24 +246,25 @@ bool locally_delaunay(const Mesh2& mesh, const EdgeReport& e) {
 }  // namespace
 
 std::vector<EdgeReport> classify_edges(const Mesh2& mesh) {
-  std::vector<EdgeReport> edges;
-  edges.reserve(3 * mesh.triangles.size() / 2 + mesh.segments.size());  // E = (3 m + boundary edges) / 2
-  for_each_edge_report(mesh, [](EdgeKind) { return true; }, [&](EdgeReport r) {
+  std::vector<EdgeReport> edges[2];
+  for_each_edge_report(mesh, [](EdgeKind) { return true; }, [&](int part, EdgeReport r) {
     classify_angles(mesh, r);
     r.locally_delaunay = locally_delaunay(mesh, r);
-    edges.push_back(r);
+    edges[part].push_back(r);
   });
-  std::sort(edges.begin(), edges.end(), [](const EdgeReport& x, const EdgeReport& y) { return x.edge < y.edge; });
-  return edges;
+  edges[0].insert(edges[0].end(), edges[1].begin(), edges[1].end());
+  std::sort(edges[0].begin(), edges[0].end(), [](const EdgeReport& x, const EdgeReport& y) { return x.edge < y.edge; });
+  return std::move(edges[0]);
 }
 
 long long count_obtuse_boundary_sides(const Mesh2& mesh) {
-  long long obtuse = 0;
-  for_each_edge_report(mesh, [](EdgeKind kind) { return kind != EdgeKind::Interior; }, [&](EdgeReport r) {
+  long long obtuse[2] = {0, 0};
+  for_each_edge_report(mesh, [](EdgeKind kind) { return kind != EdgeKind::Interior; }, [&](int part, EdgeReport r) {
     classify_angles(mesh, r);
-    for (const EdgeSide* side : {&r.left, &r.right}) obtuse += side->triangle >= 0 && side->angle == AngleClass::Obtuse;
+    for (const EdgeSide* side : {&r.left, &r.right})
+      obtuse[part] += side->triangle >= 0 && side->angle == AngleClass::Obtuse;
   });
-  return obtuse;
+  return obtuse[0] + obtuse[1];
 }
 
 }  // namespace nonobtuse

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <map>
 
 #include "nonobtuse/control_volumes2d.h"
 #include "nonobtuse/triangulate.h"
@@ -182,6 +184,49 @@ TEST(Check2d, WheelEdgesAtAHubOfAnyDegree) {
     EXPECT_EQ(count_obtuse_boundary_sides(m), 0);  // every rim angle at the hub is 360 / n degrees
     m.triangles.push_back(m.triangles[n / 2]);
     EXPECT_THROW(classify_edges(m), InvalidInput) << n;
+  }
+}
+
+// Above kForkThreshold triangles the half-edges are bucketed and paired on two threads: every edge's sides and kind
+// equal a plain map's, the obtuse count is the sum of both parts, and errors planted in either half are found.
+TEST(Check2d, LargeMeshMatchesAPlainEdgeMap) {
+  Domain2 d;
+  d.convex_hull_boundary = true;
+  std::uint64_t state = 12345;  // a 64-bit LCG: the same points on every platform
+  auto uniform = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  for (int i = 0; i < 60000; ++i) d.points.push_back({uniform(), uniform()});
+  Mesh2 m = triangulate(d);
+  ASSERT_GE(m.triangles.size(), 100000u);
+  std::map<std::pair<int, int>, std::pair<int, int>> sides;  // (a, b), a < b -> (left, right) triangle
+  for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
+    for (int k = 0; k < 3; ++k) {
+      int u = m.triangles[t][(k + 1) % 3], v = m.triangles[t][(k + 2) % 3];
+      auto& s = sides.try_emplace({std::min(u, v), std::max(u, v)}, -1, -1).first->second;
+      (u < v ? s.first : s.second) = t;
+    }
+  auto edges = classify_edges(m);
+  ASSERT_EQ(edges.size(), sides.size());
+  long long obtuse = 0;
+  for (const auto& e : edges) {
+    auto [left, right] = sides.at({e.edge[0], e.edge[1]});
+    ASSERT_EQ(e.left.triangle, left);
+    ASSERT_EQ(e.right.triangle, right);
+    ASSERT_EQ(e.kind, left < 0 || right < 0 ? EdgeKind::Boundary : EdgeKind::Interior);
+    for (const EdgeSide* s : {&e.left, &e.right})
+      obtuse += e.kind == EdgeKind::Boundary && s->triangle >= 0 && s->angle == AngleClass::Obtuse;
+  }
+  EXPECT_GT(obtuse, 0);  // random points: some hull triangles are obtuse
+  EXPECT_EQ(count_obtuse_boundary_sides(m), obtuse);
+  for (std::size_t t : {std::size_t{7}, m.triangles.size() - 7}) {  // in the lower and the upper half
+    Mesh2 bad = m;
+    bad.triangles.push_back(bad.triangles[t]);
+    EXPECT_THROW(classify_edges(bad), InvalidInput) << t;
+    bad = m;
+    std::swap(bad.triangles[t][0], bad.triangles[t][1]);
+    EXPECT_THROW(count_obtuse_boundary_sides(bad), InvalidInput) << t;
   }
 }
 
