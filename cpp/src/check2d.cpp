@@ -50,10 +50,10 @@ void require_valid_indices(const Mesh2& mesh) {
                            ", but there are " + std::to_string(n) + " points");
 }
 
-// Every triangle is strictly counter-clockwise (exact orientation; indices checked valid): the side assignment
-// below and the cotangent signs in control_volumes2d rely on it.
-void require_counter_clockwise(const Mesh2& mesh) {
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+// Every triangle in [t_begin, t_end) is strictly counter-clockwise (exact orientation; indices checked valid): the
+// side assignment below and the cotangent signs in control_volumes2d rely on it.
+void require_counter_clockwise(const Mesh2& mesh, std::size_t t_begin, std::size_t t_end) {
+  for (std::size_t t = t_begin; t < t_end; ++t) {
     const auto& tri = mesh.triangles[t];
     if (CGAL::orientation(at(mesh, tri[0]), at(mesh, tri[1]), at(mesh, tri[2])) != CGAL::LEFT_TURN)
       throw InvalidInput(describe_triangle(mesh, t) + " is degenerate or clockwise; triangles must be "
@@ -207,16 +207,21 @@ void classify_angles(const Mesh2& mesh, EdgeReport& r) {
       side->angle = classify_angle(at(mesh, r.edge[0]), at(mesh, side->apex), at(mesh, r.edge[1]));
 }
 
-// Calls f(part, report) for every edge whose kind keep(kind) accepts, after checking the triangles
-// (require_counter_clockwise), the region list's length and the segments. Large meshes are done in two parts,
-// edges (a, b) with a below and above the middle vertex, on two threads (f must keep its parts apart); either way,
-// part 0 gets its edges first, in increasing a, and reports the first error that a sequential pass would.
+// Calls f(part, report) for every edge whose kind keep(kind) accepts, after checking the triangles' indices and
+// orientation (require_counter_clockwise), the region list's length and the segments. Large meshes are done in two
+// halves on two threads: the triangles' orientation, then edges (a, b) with a below and above the middle vertex
+// (part 0 and 1: f must keep its parts apart). Either way part 0 gets its edges in increasing a, and the error
+// reported is the first in that order.
 template <class Keep, class F>
 void for_each_edge_report(const Mesh2& mesh, Keep&& keep, F&& f) {
   if (!mesh.triangle_region.empty() && mesh.triangle_region.size() != mesh.triangles.size())
     throw InvalidInput("triangle_region has " + std::to_string(mesh.triangle_region.size()) + " entries for " +
                        std::to_string(mesh.triangles.size()) + " triangles");
   require_valid_indices(mesh);
+  const bool parallel = mesh.triangles.size() >= kForkThreshold;
+  const std::size_t m = mesh.triangles.size();
+  fork_join(parallel, [&] { require_counter_clockwise(mesh, 0, m / 2); },
+            [&] { require_counter_clockwise(mesh, m / 2, m); });
   HalfEdges h(mesh);
   const std::vector<char> constrained = constrained_edges(mesh, h, 3 * mesh.triangles.size());
   auto part = [&](int p, std::size_t a_begin, std::size_t a_end) {
@@ -225,14 +230,8 @@ void for_each_edge_report(const Mesh2& mesh, Keep&& keep, F&& f) {
       if (keep(kind)) f(p, edge_report(h, a, b, left, right, kind));
     });
   };
-  const std::size_t middle = h.vertices() / 2;
-  fork_join(
-      mesh.triangles.size() >= kForkThreshold,
-      [&] {
-        require_counter_clockwise(mesh);
-        part(0, 0, middle);
-      },
-      [&] { part(1, middle, h.vertices()); });
+  const std::size_t n = h.vertices();
+  fork_join(parallel, [&] { part(0, 0, n / 2); }, [&] { part(1, n / 2, n); });
 }
 
 // Exact local Delaunay test: the right apex is not strictly inside the circumcircle of the left triangle.
