@@ -52,3 +52,12 @@ def test_baselines_from_the_cli(figure5, tmp_path, strategy):
     out = tmp_path / "out.json"
     assert main(["refine", str(figure5), "-o", str(out), "--strategy", strategy]) == 0
     assert len(json.loads(out.read_text())["points"]) == 5
+
+
+def test_threads_option(figure5, tmp_path, capsys):
+    out = tmp_path / "out.json"
+    assert main(["refine", str(figure5), "-o", str(out), "--threads", "1"]) == 0
+    assert len(json.loads(out.read_text())["points"]) == 5
+    assert main(["refine", str(figure5), "-o", str(tmp_path / "bad.json"), "--threads", "0"]) == 2
+    assert "threads must be a positive integer" in capsys.readouterr().err
+    assert not (tmp_path / "bad.json").exists()

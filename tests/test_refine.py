@@ -107,10 +107,38 @@ def test_deterministic():
     np.testing.assert_array_equal(a.mesh.triangles, b.mesh.triangles)
 
 
-@pytest.mark.parametrize("kwargs", [{"strategy": "midpoint"}, {"max_steiner": -1}, {"max_steiner": 1.5}])
+@pytest.mark.parametrize(
+    "kwargs",
+    [{"strategy": "midpoint"}, {"max_steiner": -1}, {"max_steiner": 1.5}, {"threads": 0}, {"threads": 1.5},
+     {"threads": True}],
+)
 def test_bad_options_are_invalid_input(kwargs):
     with pytest.raises(InvalidInputError):
         nonobtuse.refine(convex_point_set(1, 5, 5), **kwargs)
+
+
+def thin_layer(seed: int, k: int, n_inner: int) -> Domain:
+    """A 100 m x 1 m layer (mm): k vertices on a wavy bottom and top each, n_inner integer points between."""
+    rng = np.random.default_rng(seed)
+    x = np.linspace(0, 1e5, k)
+    bottom, top = np.round(100 * np.sin(x / 5e3)), np.round(1000 + 100 * np.sin(x / 7e3))
+    outline = np.r_[np.c_[x, bottom], np.c_[x, top][::-1]]
+    px = np.round(rng.uniform(500, 1e5 - 500, n_inner))
+    lo, hi = 100 * np.sin(px / 5e3) + 150, 1000 + 100 * np.sin(px / 7e3) - 150
+    inner = np.unique(np.c_[px, np.round(lo + rng.uniform(0, 1, n_inner) * (hi - lo))], axis=0)
+    loop = np.c_[np.arange(2 * k), (np.arange(2 * k) + 1) % (2 * k)]
+    return Domain(points=np.r_[outline, inner], segments=loop)
+
+
+@pytest.mark.parametrize("domain", [convex_point_set(3, 200, 40_000), thin_layer(3, 150, 40_000)],
+                         ids=["convex", "thin_layer"])
+def test_two_threads_give_the_same_result(domain):
+    # Over 65,536 triangles the lower bound and the certificate run on two threads (threads=2, the default).
+    one, two = nonobtuse.refine(domain, threads=1), nonobtuse.refine(domain)
+    assert len(two.mesh.triangles) > 70_000 and two.converged and two.stats["lower_bound"] > 0
+    np.testing.assert_array_equal(one.mesh.points, two.mesh.points)
+    np.testing.assert_array_equal(one.mesh.triangles, two.mesh.triangles)
+    assert {**one.stats, "seconds": 0} == {**two.stats, "seconds": 0}
 
 
 def test_exact_checkers_detect_violations():

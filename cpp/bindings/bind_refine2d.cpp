@@ -55,9 +55,9 @@ void bind_refine2d(py::module_& m) {
   m.def(
       "refine",
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,
-         bool convex_hull_boundary, const std::string& strategy, long long max_steiner) {
+         bool convex_hull_boundary, const std::string& strategy, long long max_steiner, int threads) {
         Domain2 d = domain_from_arrays(points, segments, holes, regions, convex_hull_boundary);
-        RefineOptions options{strategy_from(strategy), max_steiner};
+        RefineOptions options{strategy_from(strategy), max_steiner, threads};
         RefineResult2 r;
         {
           py::gil_scoped_release release;
@@ -66,7 +66,7 @@ void bind_refine2d(py::module_& m) {
         return result_to_dict(r);
       },
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("regions"), py::arg("convex_hull_boundary"),
-      py::arg("strategy") = "greedy", py::arg("max_steiner") = -1,
+      py::arg("strategy") = "greedy", py::arg("max_steiner") = -1, py::arg("threads") = 2,
       "Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0: default\n"
       "budget 10 n + 1000. Returns a dict: mesh (as triangulate), status ('converged' | 'budget_exhausted'),\n"
       "steiner_points, lower_bound, optimal (True | None), obtuse_boundary_triangles (exact certificate),\n"

@@ -19,7 +19,7 @@ struct FaceInfo {
   int component = -1;   // domain faces: connected component across unconstrained edges when the domain has
                         // regions, else 0; -2 exterior, -3 hole (mark_domain)
   double region = 0.0;  // region attribute of the component
-  unsigned visit = 0;   // the last walk over faces that reached this face (refine2d::State::new_walk)
+  unsigned visit[2] = {0, 0};  // per walk lane, the last walk that reached this face (refine2d::State::new_walk)
 };
 
 // Vertex info: the vertex's index in the output point list (input points keep their input index).

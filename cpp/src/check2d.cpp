@@ -69,13 +69,12 @@ void require_counter_clockwise(const Mesh2& mesh, std::size_t t_begin, std::size
 // certificate's time); a bucket of a high-degree vertex is sorted first, so that pairing stays O(d log d).
 class HalfEdges {
  public:
-  // Large meshes are bucketed on two threads, each for half of the triangles; the layout is the sequential one.
-  explicit HalfEdges(const Mesh2& mesh)
+  // When `parallel`, the triangles are bucketed on two threads, each for half of them, into the sequential layout.
+  HalfEdges(const Mesh2& mesh, bool parallel)
       : mesh_(mesh), start_(mesh.points.size() + 1, 0), half_(3 * mesh.triangles.size()) {
     if (mesh.triangles.size() > kMaxTriangles)
       throw InvalidInput("the mesh has " + std::to_string(mesh.triangles.size()) + " triangles; at most " +
                          std::to_string(kMaxTriangles) + " are supported");
-    const bool parallel = mesh.triangles.size() >= kForkThreshold;
     const std::size_t middle = mesh.triangles.size() / 2;
     std::vector<std::size_t> upper(parallel ? start_.size() : 0, 0);  // bucket sizes from the upper half
     auto count = [&](std::size_t t_begin, std::size_t t_end, std::vector<std::size_t>& size) {
@@ -211,18 +210,18 @@ void classify_angles(const Mesh2& mesh, EdgeReport& r) {
 // orientation (require_counter_clockwise), the region list's length and the segments. Large meshes are done in two
 // halves on two threads: the triangles' orientation, then edges (a, b) with a below and above the middle vertex
 // (part 0 and 1: f must keep its parts apart). Either way part 0 gets its edges in increasing a, and the error
-// reported is the first in that order.
+// reported is the first in that order. Sequential when threads is 1 or the mesh is small.
 template <class Keep, class F>
-void for_each_edge_report(const Mesh2& mesh, Keep&& keep, F&& f) {
+void for_each_edge_report(const Mesh2& mesh, int threads, Keep&& keep, F&& f) {
   if (!mesh.triangle_region.empty() && mesh.triangle_region.size() != mesh.triangles.size())
     throw InvalidInput("triangle_region has " + std::to_string(mesh.triangle_region.size()) + " entries for " +
                        std::to_string(mesh.triangles.size()) + " triangles");
   require_valid_indices(mesh);
-  const bool parallel = mesh.triangles.size() >= kForkThreshold;
+  const bool parallel = worth_forking(mesh.triangles.size(), threads);
   const std::size_t m = mesh.triangles.size();
   fork_join(parallel, [&] { require_counter_clockwise(mesh, 0, m / 2); },
             [&] { require_counter_clockwise(mesh, m / 2, m); });
-  HalfEdges h(mesh);
+  HalfEdges h(mesh, parallel);
   const std::vector<char> constrained = constrained_edges(mesh, h, 3 * mesh.triangles.size());
   auto part = [&](int p, std::size_t a_begin, std::size_t a_end) {
     h.for_each_edge(a_begin, a_end, [&](int a, int b, std::size_t left, std::size_t right) {
@@ -244,9 +243,9 @@ bool locally_delaunay(const Mesh2& mesh, const EdgeReport& e) {
 
 }  // namespace
 
-std::vector<EdgeReport> classify_edges(const Mesh2& mesh) {
+std::vector<EdgeReport> classify_edges(const Mesh2& mesh, int threads) {
   std::vector<EdgeReport> edges[2];
-  for_each_edge_report(mesh, [](EdgeKind) { return true; }, [&](int part, EdgeReport r) {
+  for_each_edge_report(mesh, threads, [](EdgeKind) { return true; }, [&](int part, EdgeReport r) {
     classify_angles(mesh, r);
     r.locally_delaunay = locally_delaunay(mesh, r);
     edges[part].push_back(r);
@@ -256,9 +255,10 @@ std::vector<EdgeReport> classify_edges(const Mesh2& mesh) {
   return std::move(edges[0]);
 }
 
-long long count_obtuse_boundary_sides(const Mesh2& mesh) {
+long long count_obtuse_boundary_sides(const Mesh2& mesh, int threads) {
   long long obtuse[2] = {0, 0};
-  for_each_edge_report(mesh, [](EdgeKind kind) { return kind != EdgeKind::Interior; }, [&](int part, EdgeReport r) {
+  auto guarded = [](EdgeKind kind) { return kind != EdgeKind::Interior; };
+  for_each_edge_report(mesh, threads, guarded, [&](int part, EdgeReport r) {
     classify_angles(mesh, r);
     for (const EdgeSide* side : {&r.left, &r.right})
       obtuse[part] += side->triangle >= 0 && side->angle == AngleClass::Obtuse;

@@ -7,8 +7,9 @@
 
 namespace nonobtuse {
 
-// Meshes at least this large are worth a second thread (starting one costs tens of microseconds).
-constexpr std::size_t kForkThreshold = 1 << 16;
+// Whether a pass over `size` items (faces, triangles) with `threads` allowed is worth a second thread: starting
+// one costs tens of microseconds, so only from 2^16 items.
+inline bool worth_forking(std::size_t size, int threads) { return threads >= 2 && size >= (std::size_t{1} << 16); }
 
 // Runs a() on a second thread and b() on this one when `parallel` (and a thread can be started), else a() then
 // b(); returns when both are done. An exception is rethrown after both finished, a()'s before b()'s, so the error

@@ -1,6 +1,7 @@
 // nonobtuse::refine: strategy dispatch, the lower bound, the optimality flag and the exact certificate.
 #include <chrono>
 
+#include "fork_join.h"
 #include "nonobtuse/check2d.h"
 #include "refine2d_state.h"
 
@@ -49,13 +50,23 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   // free end of a dangling segment or an end on the circle, does not count: the bound never counts a vertex that
   // a valid refinement could leave in the disk, which is what makes it a lower bound.
   // An interface edge is one single-edge problem with the encroachers of both sides (the walk collects both).
+  // Large inputs (unless options.threads is 1): the edges alternate between two threads, each walking on its own
+  // lane.
+  std::vector<std::pair<int, Side>> first_side;  // (input edge, its first boundary side)
   std::vector<bool> bounded(st.edges.size(), false);
-  for (const Side& side : st.boundary_sides()) {
+  for (const Side& side : st.input_sides) {
     int k = st.edge_of(side);
-    if (bounded[k]) continue;
+    if (!bounded[k]) first_side.emplace_back(k, side);
     bounded[k] = true;
-    st.edges[k].lower_bound = st.greedy_count(side, st.walk_diametral_disk(side));
   }
+  auto lower_bounds = [&](int lane) {
+    for (std::size_t i = lane; i < first_side.size(); i += 2) {
+      const auto& [k, side] = first_side[i];
+      st.edges[k].lower_bound = st.greedy_count(side, st.walk_diametral_disk(side, lane));
+    }
+  };
+  fork_join(worth_forking(st.cdt.number_of_faces(), options.threads), [&] { lower_bounds(0); },
+            [&] { lower_bounds(1); });
 
   auto run = [&] {
     switch (options.strategy) {
@@ -88,7 +99,7 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   r.mesh = cdt::to_mesh(st.cdt);
   // The exact certificate of the mesh as returned: the obtuse sides of boundary edges and of interfaces (each side
   // of a constrained segment or region jump checked on its own: issue 4).
-  r.obtuse_boundary_triangles = count_obtuse_boundary_sides(r.mesh);
+  r.obtuse_boundary_triangles = count_obtuse_boundary_sides(r.mesh, options.threads);
   r.steiner_points = st.placed;
   for (const auto& e : st.edges) r.lower_bound += e.lower_bound;
   r.edges = st.edges;

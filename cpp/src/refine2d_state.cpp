@@ -57,13 +57,13 @@ State::State(const Domain2& d, long long b) : domain(d), n_input(static_cast<int
   cdt::build(cdt, domain);
   if (std::none_of(cdt.finite_faces_begin(), cdt.finite_faces_end(), [](const auto& f) { return f.info().in_domain; }))
     throw InvalidInput("the domain contains no triangle (are all points collinear, or is everything a hole?)");
-  const std::vector<Side> sides = boundary_sides();
-  for (const Side& side : sides) {
+  input_sides = boundary_sides();
+  for (const Side& side : input_sides) {
     int a = side.s->info(), c = side.e->info();
     if (edge_index_.emplace(std::make_pair(std::min(a, c), std::max(a, c)), static_cast<int>(edges.size())).second)
       edges.push_back({{a, c}, 0, 0});  // an interface appears once, as (min, max)
   }
-  convex_polygon = is_convex_polygon(sides);
+  convex_polygon = is_convex_polygon(input_sides);
 }
 
 bool State::is_convex_polygon(const std::vector<Side>& sides) const {
@@ -131,10 +131,10 @@ void State::enqueue_all() {
 }
 
 template <class Crosses, class Visit>
-void State::walk(const std::vector<Face_handle>& start, Crosses&& crosses, Visit&& visit) const {
-  const unsigned walk = new_walk();
+void State::walk(const std::vector<Face_handle>& start, Crosses&& crosses, Visit&& visit, int lane) const {
+  const unsigned walk = new_walk(lane);
   std::vector<Face_handle> stack(start);
-  for (Face_handle f : start) f->info().visit = walk;
+  for (Face_handle f : start) f->info().visit[lane] = walk;
   while (!stack.empty()) {
     Face_handle f = stack.back();
     stack.pop_back();
@@ -142,37 +142,40 @@ void State::walk(const std::vector<Face_handle>& start, Crosses&& crosses, Visit
     for (int i = 0; i < 3; ++i) {
       if (f->is_constrained(i)) continue;
       Face_handle g = f->neighbor(i);
-      if (g->info().visit == walk || cdt.is_infinite(g)) continue;
+      if (g->info().visit[lane] == walk || cdt.is_infinite(g)) continue;
       if (!crosses(f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point())) continue;
-      g->info().visit = walk;
+      g->info().visit[lane] = walk;
       stack.push_back(g);
     }
   }
 }
 
 template <class Visit>
-void State::walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit) const {
+void State::walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit,
+                      int lane) const {
   double cx = 0.5 * (a.x() + b.x()), cy = 0.5 * (a.y() + b.y());
   double r2 = 0.25 * CGAL::to_double(CGAL::squared_distance(a, b));
   double reach = r2 * (1 + 1e-9) + 1e-300;  // pruning slack: walk a little too far rather than too little
   // The union of (face ∩ disk) along the walk stays connected: consecutive faces share a piece of the crossed
   // edge inside the disk.
-  walk(start, [&](const Point& u, const Point& w) { return distance2_to_segment(cx, cy, u, w) <= reach; }, visit);
+  walk(
+      start, [&](const Point& u, const Point& w) { return distance2_to_segment(cx, cy, u, w) <= reach; }, visit, lane);
 }
 
-DiskWalk State::walk_diametral_disk(const Side& side) const {
+DiskWalk State::walk_diametral_disk(const Side& side, int lane) const {
   DiskWalk out;
   const Point &s = side.s->point(), &e = side.e->point();
   const bool left = is_boundary_side(side), right = is_boundary_side({side.e, side.s});
   auto on_domain_side = [&](const Point& q) { return (left && encroaches(s, e, q)) || (right && encroaches(e, s, q)); };
   std::vector<Vertex_handle> reached;  // the vertices of the faces reached (walks skip infinite faces), once each
-  const unsigned stamp = ++vertex_lists_;
+  const unsigned stamp = ++vertex_lists_[lane];
+  std::vector<unsigned>& listed = vertex_walk_[lane];
   walk_disk(domain_faces(side), s, e, [&](Face_handle f) {
     for (int i = 0; i < 3; ++i) {
       const auto index = static_cast<std::size_t>(f->vertex(i)->info());
-      if (index >= vertex_walk_.size()) vertex_walk_.resize(index + 1, 0);
-      if (vertex_walk_[index] != stamp) {
-        vertex_walk_[index] = stamp;
+      if (index >= listed.size()) listed.resize(index + 1, 0);
+      if (listed[index] != stamp) {
+        listed[index] = stamp;
         reached.push_back(f->vertex(i));
       }
       Vertex_handle u = f->vertex(CDT::ccw(i)), w = f->vertex(CDT::cw(i));
@@ -180,7 +183,7 @@ DiskWalk State::walk_diametral_disk(const Side& side) const {
         out.obstacles.emplace_back(u->point(), w->point());
     }
     return false;
-  });
+  }, lane);
   for (Vertex_handle v : reached)
     if (v != side.s && v != side.e && on_domain_side(v->point())) out.encroachers.push_back(v);
   // Deterministic order (the walk order depends on face handles): by vertex index.
@@ -193,8 +196,8 @@ std::vector<Side> State::sides_broken_by(const Side& side, const Point& p) const
   std::vector<Side> out;
   const Side reverse{side.e, side.s};
   std::vector<Face_handle> stack = domain_faces(side);
-  const unsigned walk = new_walk();
-  for (Face_handle f : stack) f->info().visit = walk;
+  const unsigned walk = new_walk(0);
+  for (Face_handle f : stack) f->info().visit[0] = walk;
   while (!stack.empty()) {
     Face_handle f = stack.back();
     stack.pop_back();
@@ -207,8 +210,8 @@ std::vector<Side> State::sides_broken_by(const Side& side, const Point& p) const
         continue;
       }
       Face_handle g = f->neighbor(i);
-      if (g->info().visit == walk || cdt.is_infinite(g)) continue;
-      g->info().visit = walk;
+      if (g->info().visit[0] == walk || cdt.is_infinite(g)) continue;
+      g->info().visit[0] = walk;
       if (CGAL::side_of_bounded_circle(g->vertex(0)->point(), g->vertex(1)->point(), g->vertex(2)->point(), p) ==
           CGAL::ON_BOUNDED_SIDE)
         stack.push_back(g);

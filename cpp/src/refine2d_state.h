@@ -66,6 +66,7 @@ class State {
   bool fallback_used = false;     // a greedy step had to break another subsegment's empty disk
   bool convex_polygon = false;    // the input domain is a convex polygon without holes, inner points or constraints
   std::deque<Side> queue;         // sides to (re)examine
+  std::vector<Side> input_sides;  // the boundary sides before any split
   std::vector<BoundaryEdgeStats> edges;
 
   // The face on the left of s -> e, or nullptr when (s, e) is not a constrained edge of the CDT (anymore).
@@ -89,7 +90,8 @@ class State {
   // closed disk. Constraints stop the walk, which gives visibility; the float distance
   // test only prunes the walk (conservatively, with slack): every decision on a vertex is exact.
   // Cost: the number of triangles meeting the disk.
-  DiskWalk walk_diametral_disk(const Side& side) const;
+  // Walks on different lanes (0 or 1) may run concurrently, each on one thread; lane 0 is the refinement's.
+  DiskWalk walk_diametral_disk(const Side& side, int lane = 0) const;
 
   // Inserts p (from candidates_near) into the constrained edge (s, e): CGAL splits it into (s, p), (p, e) and
   // restores the constrained Delaunay property by flips. When p is off the line and a neighbouring apex lies nearly
@@ -160,20 +162,23 @@ class State {
   // Domain marks of the faces changed by inserting v between to_s and to_e (see split); queues their sides.
   void remark_around(Vertex_handle v, Vertex_handle to_e, Vertex_handle to_s, const cdt::FaceInfo& left,
                      const cdt::FaceInfo& right);
-  // Depth-first walk from the faces `start` across the unconstrained edges (u, w) for which crosses(u, w) holds;
-  // visit(face) returns true to stop.
+  // Depth-first walk on `lane` from the faces `start` across the unconstrained edges (u, w) for which
+  // crosses(u, w) holds; visit(face) returns true to stop.
   template <class Crosses, class Visit>
-  void walk(const std::vector<Face_handle>& start, Crosses&& crosses, Visit&& visit) const;
+  void walk(const std::vector<Face_handle>& start, Crosses&& crosses, Visit&& visit, int lane) const;
   // walk into the faces meeting the closed diametral disk of [a, b] (float pruning with slack: a little too far).
   template <class Visit>
-  void walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit) const;
-  // A fresh stamp for a walk over faces: the walk has reached a face iff its info().visit equals the stamp
-  // (cheaper than a set of face handles). Walks must not nest.
-  unsigned new_walk() const { return ++walks_; }
-  mutable unsigned walks_ = 0;
-  // walk_diametral_disk lists each vertex once: vertex_walk_[index] is the stamp of the last walk that listed it.
-  mutable unsigned vertex_lists_ = 0;
-  mutable std::vector<unsigned> vertex_walk_;
+  void walk_disk(const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit,
+                 int lane = 0) const;
+  // A fresh stamp for a walk over faces on `lane`: the walk has reached a face iff its info().visit[lane] equals
+  // the stamp (cheaper than a set of face handles). Walks on one lane must not nest; each lane has its own stamps,
+  // so that walks on two lanes can run on two threads (the lower bound).
+  unsigned new_walk(int lane) const { return ++walks_[lane]; }
+  mutable unsigned walks_[2] = {0, 0};
+  // walk_diametral_disk lists each vertex once: vertex_walk_[lane][index] is the stamp of the last walk on the
+  // lane that listed it.
+  mutable unsigned vertex_lists_[2] = {0, 0};
+  mutable std::vector<unsigned> vertex_walk_[2];
   std::map<std::pair<int, int>, int> edge_index_;  // input boundary edge (min, max) -> index in edges
   std::vector<int> steiner_edge_;                   // Steiner point (index - n_input) -> index in edges
 };

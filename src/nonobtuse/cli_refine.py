@@ -21,6 +21,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("-o", "--output", required=True, help="mesh file; the format follows the suffix")
     p.add_argument("--strategy", choices=STRATEGIES, default="greedy", help="default: greedy")
     p.add_argument("--max-steiner", type=int, default=None, help="Steiner budget (default: 10 n + 1000)")
+    p.add_argument("--threads", type=int, default=2,
+                   help="threads for the whole-mesh passes of large inputs (default 2; same output)")
     p.add_argument("--json", action="store_true", help="print the statistics as JSON on stdout")
     p.set_defaults(func=run)
 
@@ -30,7 +32,8 @@ def run(args: argparse.Namespace) -> int:
     from nonobtuse.io import load_domain, write_mesh
     from nonobtuse.refine import refine
 
-    result = refine(load_domain(args.input), strategy=args.strategy, max_steiner=args.max_steiner)
+    result = refine(load_domain(args.input), strategy=args.strategy, max_steiner=args.max_steiner,
+                    threads=args.threads)
     write_mesh(result.mesh, args.output)
     s = result.stats
     if args.json:

@@ -49,7 +49,9 @@ class RefineResult:
         return self.status == CONVERGED
 
 
-def refine(domain: Domain, strategy: str = "greedy", max_steiner: int | None = None) -> RefineResult:
+def refine(
+    domain: Domain, strategy: str = "greedy", max_steiner: int | None = None, threads: int = 2
+) -> RefineResult:
     """Adds Steiner points on the constraint edges of ``domain`` until every triangle of its constrained
     Delaunay triangulation is nonobtuse opposite each constrained edge it has (boundary, interface or
     dangling segment).
@@ -64,6 +66,8 @@ def refine(domain: Domain, strategy: str = "greedy", max_steiner: int | None = N
                  ``"project-flip"`` or ``"projection"`` (the paper's baselines).
     max_steiner: Steiner budget; None: ``10 n + 1000`` for n input points. When it is spent the partial
                  mesh is returned with status ``"budget_exhausted"``.
+    threads:     1, or 2 and more: the passes over the whole mesh of large inputs (the lower bound, the
+                 certificate) run on two threads. The result is the same for any value.
 
     Guarantees: Steiner points lie on constraint subsegments (exactly on the line when a double point there
     exists, else a few ulps off it); the returned mesh is checked exactly on every side of every constraint
@@ -76,8 +80,8 @@ def refine(domain: Domain, strategy: str = "greedy", max_steiner: int | None = N
     (Theorem 3), None otherwise.
     Deterministic. Cost: O(n log n) to triangulate plus, per Steiner point, the triangles meeting the
     diametral disk being refined.
-    Raises InvalidInputError for an unknown strategy, a negative budget or a domain that cannot be
-    triangulated.
+    Raises InvalidInputError for an unknown strategy, a negative budget, a thread count below 1 or a domain
+    that cannot be triangulated.
     """
     from nonobtuse import _core
 
@@ -85,6 +89,8 @@ def refine(domain: Domain, strategy: str = "greedy", max_steiner: int | None = N
         raise InvalidInputError(f"unknown strategy {strategy!r}; choose one of {', '.join(STRATEGIES)}")
     if max_steiner is not None and (int(max_steiner) != max_steiner or max_steiner < 0):
         raise InvalidInputError(f"max_steiner must be a non-negative integer, got {max_steiner!r}")
+    if isinstance(threads, bool) or int(threads) != threads or threads < 1:
+        raise InvalidInputError(f"threads must be a positive integer, got {threads!r}")
     r = _core.refine(
         domain.points,
         domain.segments,
@@ -93,6 +99,7 @@ def refine(domain: Domain, strategy: str = "greedy", max_steiner: int | None = N
         bool(domain.convex_hull),
         strategy,
         -1 if max_steiner is None else int(max_steiner),
+        min(int(threads), 2),
     )
     stats: dict[str, Any] = {
         "status": r["status"],

@@ -37,13 +37,13 @@ struct EdgeReport {
 // triangles do not form a consistently oriented manifold mesh (an edge with more than two triangles, or two on
 // the same side), or when a listed segment is not an edge of any triangle.
 // Cost: O(n + m) for n points and m triangles (half-edges bucketed by their smaller vertex), plus O(k) for k
-// segments.
-std::vector<EdgeReport> classify_edges(const Mesh2& mesh);
+// segments; on two threads for large meshes unless threads is 1 (the result is the same).
+std::vector<EdgeReport> classify_edges(const Mesh2& mesh, int threads = 2);
 
 // The exact nonobtuse-boundary certificate: the number of sides of Boundary and Interface edges (as classified by
 // classify_edges) whose triangle is obtuse at the apex opposite the edge; 0 iff every such side is nonobtuse.
 // The same checks and exceptions as classify_edges, but angles only on those sides and no incircle test.
-// Cost: O(n + m) plus O(k) for k segments.
-long long count_obtuse_boundary_sides(const Mesh2& mesh);
+// Cost: O(n + m) plus O(k) for k segments, on threads as classify_edges.
+long long count_obtuse_boundary_sides(const Mesh2& mesh, int threads = 2);
 
 }  // namespace nonobtuse

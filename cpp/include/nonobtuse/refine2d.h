@@ -23,6 +23,9 @@ struct RefineOptions {
   RefineStrategy strategy = RefineStrategy::Greedy;
   // Maximum number of Steiner points; < 0 selects default_steiner_budget(n) for n input points.
   long long max_steiner = -1;
+  // Threads for the passes over the whole mesh of large inputs (the lower bound and the certificate): 1, or 2 and
+  // more (two are used). The result is the same for any value.
+  int threads = 2;
 };
 
 // Per boundary edge of the input: a constrained edge of the input's CDT with the domain on one side (a boundary
