@@ -3,6 +3,7 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <sstream>
@@ -31,22 +32,6 @@ void insert_hull_constraints(CDT& cdt) {
     hull.emplace_back(fc->vertex(CDT::ccw(i)), fc->vertex(CDT::cw(i)));
   } while (++fc != done);
   for (auto& [a, b] : hull) cdt.insert_constraint(a, b);
-}
-
-// Position of (x, y), 0 <= x, y < 2^16, along the Hilbert curve of order 16 from (0, 0) to (2^16 - 1, 0).
-// Branch-free (the quadrant bits are random, so branches would mispredict half the time).
-std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
-  std::uint32_t d = 0;
-  for (int b = 15; b >= 0; --b) {
-    const std::uint32_t rx = (x >> b) & 1, ry = (y >> b) & 1, low = (1u << b) - 1;
-    d += ((3 * rx) ^ ry) << (2 * b);
-    // Rotate the quadrant so that the curve inside it runs the standard way: in the lower quadrants (ry = 0)
-    // reflect (the right one: low bits x -> low - x, y -> low - y) and swap x and y; bits above b are done with.
-    const std::uint32_t reflect = (rx & ~ry) * low, swap = (ry - 1) & (x ^ y);
-    x ^= reflect ^ swap;
-    y ^= reflect ^ swap;
-  }
-  return d;
 }
 
 // Stable LSD radix sort by key, 16 bits a pass; a pass in which every key has the same digit is skipped.
@@ -127,6 +112,37 @@ void require_finite_and_proper(const Domain2& domain) {
 }
 
 }  // namespace
+
+// The Hilbert curve, four levels at a time: kHilbert[state << 8 | x4 << 4 | y4] = (next state) << 8 | (the 8 bits
+// of the curve index for these levels), x4, y4 the next 4 bits of the coordinates. The state is the transform the
+// coarser levels put on the quadrant: coordinates swapped (bit 0) and both reflected (bit 1). One level, from the
+// top: (rx, ry) the transformed bits, digit (3 rx) xor ry; in a lower quadrant (ry = 0) the curve turns, swapped
+// (and reflected too when rx = 1) for the levels below.
+static const std::array<std::uint16_t, 1024> kHilbert = [] {
+  std::array<std::uint16_t, 1024> table{};
+  for (unsigned state = 0; state < 4; ++state)
+    for (unsigned xy = 0; xy < 256; ++xy) {
+      unsigned swapped = state & 1, reflected = state >> 1, digits = 0;
+      for (int b = 3; b >= 0; --b) {
+        const unsigned xb = (xy >> (4 + b)) & 1, yb = (xy >> b) & 1;
+        const unsigned rx = (swapped ? yb : xb) ^ reflected, ry = (swapped ? xb : yb) ^ reflected;
+        digits = digits << 2 | ((3 * rx) ^ ry);
+        if (ry == 0) reflected ^= rx, swapped ^= 1;
+      }
+      table[state << 8 | xy] = static_cast<std::uint16_t>((reflected << 1 | swapped) << 8 | digits);
+    }
+  return table;
+}();
+
+std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
+  std::uint32_t d = 0, state = 0;
+  for (int shift = 12; shift >= 0; shift -= 4) {
+    const std::uint32_t entry = kHilbert[state << 8 | ((x >> shift) & 15) << 4 | ((y >> shift) & 15)];
+    d = d << 8 | (entry & 0xff);
+    state = entry >> 8;
+  }
+  return d;
+}
 
 std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain) {
   if (cdt.number_of_vertices() != 0) throw InternalError("cdt::build: the triangulation is not empty");

@@ -5,6 +5,7 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <cstdint>
 #include <vector>
 
 #include "nonobtuse/types.h"
@@ -36,6 +37,10 @@ using Edge = CDT::Edge;
 
 inline Point to_cgal(const Point2& p) { return Point(p.x, p.y); }
 inline Point2 from_cgal(const Point& p) { return {p.x(), p.y()}; }
+
+// Position of (x, y), 0 <= x, y < 2^16, along the Hilbert curve of order 16 from (0, 0) to (2^16 - 1, 0) (the
+// insertion order of build).
+std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y);
 
 // Inserts the domain's points (spatially sorted, info = input index) and constraints (plus the convex hull edges
 // when domain.convex_hull_boundary, so that every algorithm sees one kind of boundary: constrained edges), then

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -76,22 +77,22 @@ class HalfEdges {
       throw InvalidInput("the mesh has " + std::to_string(mesh.triangles.size()) + " triangles; at most " +
                          std::to_string(kMaxTriangles) + " are supported");
     const std::size_t middle = mesh.triangles.size() / 2;
-    std::vector<std::size_t> upper(parallel ? start_.size() : 0, 0);  // bucket sizes from the upper half
-    auto count = [&](std::size_t t_begin, std::size_t t_end, std::vector<std::size_t>& size) {
+    std::vector<Index> upper(parallel ? start_.size() : 0, 0);  // bucket sizes from the upper half
+    auto count = [&](std::size_t t_begin, std::size_t t_end, std::vector<Index>& size) {
       for (std::size_t t = t_begin; t < t_end; ++t)
         for (int k = 0; k < 3; ++k)
           ++size[std::min(mesh.triangles[t][(k + 1) % 3], mesh.triangles[t][(k + 2) % 3]) + 1];
     };
     fork_join(parallel, [&] { count(0, parallel ? middle : mesh.triangles.size(), start_); },
               [&] { if (parallel) count(middle, mesh.triangles.size(), upper); });
-    std::vector<std::size_t> next(start_.size() - 1);  // where the lower half's next half-edge of bucket a goes
+    std::vector<Index> next(start_.size() - 1);  // where the lower half's next half-edge of bucket a goes
     for (std::size_t a = 0; a + 1 < start_.size(); ++a) {
       if (parallel) start_[a + 1] += upper[a + 1];
       start_[a + 1] += start_[a];
       next[a] = start_[a];
       if (parallel) upper[a] = start_[a + 1] - upper[a + 1];  // the upper half's first slot in bucket a
     }
-    auto fill = [&](std::size_t t_begin, std::size_t t_end, std::vector<std::size_t>& slot) {
+    auto fill = [&](std::size_t t_begin, std::size_t t_end, std::vector<Index>& slot) {
       for (std::size_t t = t_begin; t < t_end; ++t)
         for (int k = 0; k < 3; ++k) {
           int u = mesh.triangles[t][(k + 1) % 3], v = mesh.triangles[t][(k + 2) % 3];
@@ -162,7 +163,8 @@ class HalfEdges {
   }
 
   const Mesh2& mesh_;
-  std::vector<std::size_t> start_;  // bucket a: half_[start_[a], start_[a + 1])
+  using Index = std::uint32_t;  // half-edges number 3 m < 2^30
+  std::vector<Index> start_;  // bucket a: half_[start_[a], start_[a + 1])
   std::vector<std::uint64_t> half_;
 };
 
@@ -181,12 +183,13 @@ std::vector<char> constrained_edges(const Mesh2& mesh, const HalfEdges& h, std::
 }
 
 // The kind of edge (a, b) from its half-edges with the triangle on the left and on the right (npos where none).
-EdgeKind kind_of(const Mesh2& mesh, const HalfEdges& h, std::size_t left, std::size_t right,
+// regions: the triangles' region attributes, or nullptr when they are all equal (no lookups then: they are
+// scattered reads, one pair per interior edge).
+EdgeKind kind_of(const std::vector<double>* regions, const HalfEdges& h, std::size_t left, std::size_t right,
                  const std::vector<char>& constrained) {
   if (left == HalfEdges::npos || right == HalfEdges::npos) return EdgeKind::Boundary;
   if (constrained[left] || constrained[right]) return EdgeKind::Interface;
-  const auto& region = mesh.triangle_region;
-  if (!region.empty() && region[h.triangle(left)] != region[h.triangle(right)]) return EdgeKind::Interface;
+  if (regions && (*regions)[h.triangle(left)] != (*regions)[h.triangle(right)]) return EdgeKind::Interface;
   return EdgeKind::Interior;
 }
 
@@ -223,9 +226,12 @@ void for_each_edge_report(const Mesh2& mesh, int threads, Keep&& keep, F&& f) {
             [&] { require_counter_clockwise(mesh, m / 2, m); });
   HalfEdges h(mesh, parallel);
   const std::vector<char> constrained = constrained_edges(mesh, h, 3 * mesh.triangles.size());
+  const auto& region = mesh.triangle_region;
+  const bool one_region = std::adjacent_find(region.begin(), region.end(), std::not_equal_to<>()) == region.end();
+  const std::vector<double>* regions = one_region ? nullptr : &region;
   auto part = [&](int p, std::size_t a_begin, std::size_t a_end) {
     h.for_each_edge(a_begin, a_end, [&](int a, int b, std::size_t left, std::size_t right) {
-      EdgeKind kind = kind_of(mesh, h, left, right, constrained);
+      EdgeKind kind = kind_of(regions, h, left, right, constrained);
       if (keep(kind)) f(p, edge_report(h, a, b, left, right, kind));
     });
   };

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <utility>
+#include <vector>
+
 #include "nonobtuse/triangulate.h"
 
 namespace nonobtuse {
@@ -13,6 +17,23 @@ Domain2 square_with_hole() {
   d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}};
   d.holes = {{2, 2}};
   return d;
+}
+
+// The curve's first 4^8 cells fill the 256 x 256 corner at the origin, each next to the one before; it ends at
+// (2^16 - 1, 0).
+TEST(HilbertIndex, ConsecutiveCellsAreNeighbours) {
+  std::vector<std::pair<int, int>> cell(1 << 16, {-1, -1});
+  for (int x = 0; x < 256; ++x)
+    for (int y = 0; y < 256; ++y) {
+      std::uint32_t d = cdt::hilbert_index(x, y);
+      ASSERT_LT(d, cell.size()) << x << " " << y;
+      ASSERT_EQ(cell[d].first, -1) << d;
+      cell[d] = {x, y};
+    }
+  for (std::size_t d = 1; d < cell.size(); ++d)
+    ASSERT_EQ(std::abs(cell[d].first - cell[d - 1].first) + std::abs(cell[d].second - cell[d - 1].second), 1) << d;
+  EXPECT_EQ(cdt::hilbert_index(0, 0), 0u);
+  EXPECT_EQ(cdt::hilbert_index(65535, 0), 0xffffffffu);
 }
 
 TEST(Triangulate, SquareWithHoleKeepsOnlyTheRing) {
