@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "fork_join.h"
 #include "nonobtuse/triangulate.h"
 
 namespace nonobtuse::cdt {
@@ -228,8 +229,10 @@ void mark_domain(CDT& cdt, const Domain2& domain) {
     if (f->info().in_domain) f->info().region = attribute[f->info().component];
 }
 
-Mesh2 to_mesh(const CDT& cdt) {
-  Mesh2 mesh;
+namespace {
+
+// Mesh points indexed by vertex info.
+void write_points(const CDT& cdt, Mesh2& mesh) {
   int n = 0;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) n = std::max(n, v->info() + 1);
   mesh.points.resize(n);
@@ -237,9 +240,13 @@ Mesh2 to_mesh(const CDT& cdt) {
     if (v->info() < 0) throw InternalError("cdt::to_mesh: a vertex has no index");
     mesh.points[v->info()] = from_cgal(v->point());
   }
+}
+
+// Domain triangles with their regions, and the constrained edges bordering the domain, from the domain faces
+// beside them (twice for an interface; unsorted).
+void write_triangles(const CDT& cdt, Mesh2& mesh) {
   mesh.triangles.reserve(cdt.number_of_faces());
   mesh.triangle_region.reserve(cdt.number_of_faces());
-  // Constrained edges bordering the domain, from the domain faces beside them (twice for an interface).
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!f->info().in_domain) continue;
     mesh.triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
@@ -250,6 +257,14 @@ Mesh2 to_mesh(const CDT& cdt) {
         mesh.segments.push_back({std::min(a, b), std::max(a, b)});
       }
   }
+}
+
+}  // namespace
+
+Mesh2 to_mesh(const CDT& cdt, int threads) {
+  Mesh2 mesh;
+  fork_join(worth_forking(cdt.number_of_faces(), threads), [&] { write_points(cdt, mesh); },
+            [&] { write_triangles(cdt, mesh); });
   std::sort(mesh.segments.begin(), mesh.segments.end());
   mesh.segments.erase(std::unique(mesh.segments.begin(), mesh.segments.end()), mesh.segments.end());
   return mesh;

@@ -52,7 +52,8 @@ std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain);
 // flood fill across unconstrained edges. Call again after inserting points.
 void mark_domain(CDT& cdt, const Domain2& domain);
 
-// Domain triangles, every constrained subsegment bordering the domain, points indexed by vertex info.
-Mesh2 to_mesh(const CDT& cdt);
+// Domain triangles, every constrained subsegment bordering the domain, points indexed by vertex info. Points and
+// triangles on two threads for large triangulations unless threads is 1 (the same mesh).
+Mesh2 to_mesh(const CDT& cdt, int threads = 2);
 
 }  // namespace nonobtuse::cdt

@@ -54,7 +54,7 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   // lane.
   std::vector<std::pair<int, Side>> first_side;  // (input edge, its first boundary side)
   std::vector<bool> bounded(st.edges.size(), false);
-  for (const Side& side : st.input_sides) {
+  for (const Side& side : st.boundary_sides()) {
     int k = st.edge_of(side);
     if (!bounded[k]) first_side.emplace_back(k, side);
     bounded[k] = true;
@@ -96,7 +96,7 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
   }
 
   RefineResult2 r;
-  r.mesh = cdt::to_mesh(st.cdt);
+  r.mesh = cdt::to_mesh(st.cdt, options.threads);
   // The exact certificate of the mesh as returned: the obtuse sides of boundary edges and of interfaces (each side
   // of a constrained segment or region jump checked on its own: issue 4).
   r.obtuse_boundary_triangles = count_obtuse_boundary_sides(r.mesh, options.threads);

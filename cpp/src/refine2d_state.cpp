@@ -57,13 +57,13 @@ State::State(const Domain2& d, long long b) : domain(d), n_input(static_cast<int
   cdt::build(cdt, domain);
   if (std::none_of(cdt.finite_faces_begin(), cdt.finite_faces_end(), [](const auto& f) { return f.info().in_domain; }))
     throw InvalidInput("the domain contains no triangle (are all points collinear, or is everything a hole?)");
-  input_sides = boundary_sides();
-  for (const Side& side : input_sides) {
+  const std::vector<Side> sides = boundary_sides();
+  for (const Side& side : sides) {
     int a = side.s->info(), c = side.e->info();
     if (edge_index_.emplace(std::make_pair(std::min(a, c), std::max(a, c)), static_cast<int>(edges.size())).second)
       edges.push_back({{a, c}, 0, 0});  // an interface appears once, as (min, max)
   }
-  convex_polygon = is_convex_polygon(input_sides);
+  convex_polygon = is_convex_polygon(sides);
 }
 
 bool State::is_convex_polygon(const std::vector<Side>& sides) const {
@@ -115,14 +115,17 @@ bool State::is_violated(const Side& side) const {
 }
 
 std::vector<Side> State::boundary_sides() const {
+  if (sides_of_ == splits_) return sides_;
   // A boundary side is a constrained edge of a domain face, oriented with the face on its left.
-  std::vector<Side> out;
+  std::vector<Side>& out = sides_;
+  out.clear();
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
     for (int i = 0; i < 3; ++i)
       if (f->is_constrained(i) && f->info().in_domain) out.push_back({f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
   std::sort(out.begin(), out.end(), [](const Side& a, const Side& b) {
     return std::make_pair(a.s->info(), a.e->info()) < std::make_pair(b.s->info(), b.e->info());
   });
+  sides_of_ = splits_;
   return out;
 }
 
@@ -364,6 +367,7 @@ bool State::splittable(const Side& side, const Point& p) const {
 }
 
 Vertex_handle State::split(const Side& side, const Point& p) {
+  ++splits_;
   const Wings w = wings(side);
   const cdt::FaceInfo left = w.left->info(), right = w.right->info();
   const int edge = edge_of(side);

@@ -66,7 +66,6 @@ class State {
   bool fallback_used = false;     // a greedy step had to break another subsegment's empty disk
   bool convex_polygon = false;    // the input domain is a convex polygon without holes, inner points or constraints
   std::deque<Side> queue;         // sides to (re)examine
-  std::vector<Side> input_sides;  // the boundary sides before any split
   std::vector<BoundaryEdgeStats> edges;
 
   // The face on the left of s -> e, or nullptr when (s, e) is not a constrained edge of the CDT (anymore).
@@ -81,7 +80,8 @@ class State {
   bool is_violated(const Side& side) const;
   // The apex of the side's triangle (call only on a boundary side).
   Vertex_handle apex(const Side& side) const;
-  // Every boundary side of the current CDT.
+  // Every boundary side of the current CDT, sorted by vertex indices. A scan of every face, repeated only after a
+  // split.
   std::vector<Side> boundary_sides() const;
 
   // Vertices strictly inside the open diametral disk of the subsegment on a domain side of it (exact: strictly
@@ -181,6 +181,9 @@ class State {
   mutable std::vector<unsigned> vertex_walk_[2];
   std::map<std::pair<int, int>, int> edge_index_;  // input boundary edge (min, max) -> index in edges
   std::vector<int> steiner_edge_;                   // Steiner point (index - n_input) -> index in edges
+  long long splits_ = 0;                            // calls to split: the CDT changes only there
+  mutable std::vector<Side> sides_;                 // boundary_sides() as of split number sides_of_
+  mutable long long sides_of_ = -1;
 };
 
 // Exact CGAL::angle(a, apex, b) == OBTUSE, i.e. (a - apex) . (b - apex) < 0, with a static filter (Epick's Angle_2
