@@ -180,6 +180,7 @@ std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain) {
 
 void mark_domain(CDT& cdt, const Domain2& domain) {
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = FaceInfo{};
+  cdt.region_attribute.assign(1, 0.0);
   if (cdt.dimension() < 2) return;  // collinear points: no face, nothing inside
   // Fill from `stack` across unconstrained edges; set(face) marks each face reached.
   auto fill = [&](std::vector<Face_handle> stack, auto&& reached, auto&& set) {
@@ -207,7 +208,7 @@ void mark_domain(CDT& cdt, const Domain2& domain) {
   }
   if (domain.regions.empty()) {  // one class of domain faces: component 0, region attribute 0
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-      if (f->info().component == -1) f->info() = FaceInfo{true, 0};
+      if (f->info().component == -1) f->info().component = 0;
     return;
   }
   // Regions: domain components 0, 1, ... by flood fill, each with the attribute of a region seed inside it.
@@ -215,18 +216,13 @@ void mark_domain(CDT& cdt, const Domain2& domain) {
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (f->info().component != -1) continue;
     int c = next++;
-    fill({f}, marked, [c](Face_handle g) {
-      g->info().component = c;
-      g->info().in_domain = true;
-    });
+    fill({f}, marked, [c](Face_handle g) { g->info().component = c; });
   }
-  std::vector<double> attribute(next, 0.0);
+  cdt.region_attribute.assign(std::max(next, 1), 0.0);
   for (const auto& r : domain.regions) {
     Face_handle f = cdt.locate(to_cgal(r.at));
-    if (f != nullptr && f->info().in_domain) attribute[f->info().component] = r.attribute;
+    if (f != nullptr && f->info().in_domain()) cdt.region_attribute[f->info().component] = r.attribute;
   }
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-    if (f->info().in_domain) f->info().region = attribute[f->info().component];
 }
 
 namespace {
@@ -248,9 +244,9 @@ void write_triangles(const CDT& cdt, Mesh2& mesh) {
   mesh.triangles.reserve(cdt.number_of_faces());
   mesh.triangle_region.reserve(cdt.number_of_faces());
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
-    if (!f->info().in_domain) continue;
+    if (!f->info().in_domain()) continue;
     mesh.triangles.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
-    mesh.triangle_region.push_back(f->info().region);
+    mesh.triangle_region.push_back(cdt.region(f));
     for (int i = 0; i < 3; ++i)
       if (f->is_constrained(i)) {
         int a = f->vertex(CDT::cw(i))->info(), b = f->vertex(CDT::ccw(i))->info();

@@ -15,12 +15,14 @@ namespace nonobtuse::cdt {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = K::Point_2;
 
+// Twelve bytes, so that a face takes 72 bytes (88 with a region attribute and a flag here): insertion and every
+// pass over the faces move less memory.
 struct FaceInfo {
-  bool in_domain = false;
-  int component = -1;   // domain faces: connected component across unconstrained edges when the domain has
-                        // regions, else 0; -2 exterior, -3 hole (mark_domain)
-  double region = 0.0;  // region attribute of the component
+  // mark_domain: -1 not marked, -2 exterior, -3 hole; a domain face: its connected component across unconstrained
+  // edges when the domain has regions, else 0 (an index into CDT::region_attribute either way).
+  int component = -1;
   unsigned visit[2] = {0, 0};  // per walk lane, the last walk that reached this face (refine2d::State::new_walk)
+  bool in_domain() const { return component >= 0; }
 };
 
 // Vertex info: the vertex's index in the output point list (input points keep their input index).
@@ -30,7 +32,11 @@ using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbb>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 // Constraints that cross away from vertices are refused (an exception), never resolved by constructing points.
 using Itag = CGAL::No_constraint_intersection_requiring_constructions_tag;
-using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, Itag>;
+// The triangulation with the region attribute of each domain component (mark_domain).
+struct CDT : CGAL::Constrained_Delaunay_triangulation_2<K, Tds, Itag> {
+  std::vector<double> region_attribute;
+  double region(Face_handle f) const { return region_attribute[f->info().component]; }  // f in the domain
+};
 using Vertex_handle = CDT::Vertex_handle;
 using Face_handle = CDT::Face_handle;
 using Edge = CDT::Edge;
@@ -47,9 +53,10 @@ std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y);
 // marks the domain. Returns the vertex handle of every input point. Throws InvalidInput on crossing constraints.
 std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain);
 
-// Recomputes FaceInfo for every face: the exterior (flood fill from the infinite faces across unconstrained
-// edges) and hole seeds are out, the rest in; when the domain has regions, components and their attributes by
-// flood fill across unconstrained edges. Call again after inserting points.
+// Recomputes FaceInfo for every face and cdt.region_attribute: the exterior (flood fill from the infinite faces
+// across unconstrained edges) and hole seeds are out, the rest in; when the domain has regions, components and
+// their attributes by flood fill across unconstrained edges, else one component, attribute 0. Call again after
+// inserting points.
 void mark_domain(CDT& cdt, const Domain2& domain);
 
 // Domain triangles, every constrained subsegment bordering the domain, points indexed by vertex info. Points and

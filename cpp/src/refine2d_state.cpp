@@ -55,7 +55,7 @@ bool find_edge(const CDT& cdt, Vertex_handle a, Vertex_handle b, Face_handle& f,
 
 State::State(const Domain2& d, long long b) : domain(d), n_input(static_cast<int>(d.points.size())), budget(b) {
   cdt::build(cdt, domain);
-  if (std::none_of(cdt.finite_faces_begin(), cdt.finite_faces_end(), [](const auto& f) { return f.info().in_domain; }))
+  if (std::none_of(cdt.finite_faces_begin(), cdt.finite_faces_end(), [](const auto& f) { return f.info().in_domain(); }))
     throw InvalidInput("the domain contains no triangle (are all points collinear, or is everything a hole?)");
   const std::vector<Side> sides = boundary_sides();
   for (const Side& side : sides) {
@@ -75,7 +75,7 @@ bool State::is_convex_polygon(const std::vector<Side>& sides) const {
     if (!cdt.is_infinite(f->neighbor(f->index(apex(side))))) return false;
   }
   for (auto e = cdt.constrained_edges_begin(); e != cdt.constrained_edges_end(); ++e)
-    if (e->first->info().in_domain && e->first->neighbor(e->second)->info().in_domain) return false;
+    if (e->first->info().in_domain() && e->first->neighbor(e->second)->info().in_domain()) return false;
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     if (!cdt.are_there_incident_constraints(v)) return false;
   return true;
@@ -91,7 +91,7 @@ Face_handle State::left_face(const Side& side) const {
 
 bool State::is_boundary_side(const Side& side) const {
   Face_handle f = left_face(side);
-  return f != nullptr && f->info().in_domain;
+  return f != nullptr && f->info().in_domain();
 }
 
 std::vector<Face_handle> State::domain_faces(const Side& side) const {
@@ -121,7 +121,7 @@ std::vector<Side> State::boundary_sides() const {
   out.clear();
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
     for (int i = 0; i < 3; ++i)
-      if (f->is_constrained(i) && f->info().in_domain) out.push_back({f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
+      if (f->is_constrained(i) && f->info().in_domain()) out.push_back({f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
   std::sort(out.begin(), out.end(), [](const Side& a, const Side& b) {
     return std::make_pair(a.s->info(), a.e->info()) < std::make_pair(b.s->info(), b.e->info());
   });
@@ -412,14 +412,17 @@ Vertex_handle State::split(const Side& side, const Point& p) {
 
 void State::check_invariants() {
   if (!cdt.is_valid()) throw InternalError("refine2d: the triangulation is invalid after a split");
-  std::vector<std::pair<bool, double>> kept;
-  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
-    kept.emplace_back(f->info().in_domain, f->info().region);
+  // (in domain, region attribute) of every face; components may be numbered differently by a new marking.
+  auto marks = [this] {
+    std::vector<std::pair<bool, double>> out;
+    for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f)
+      out.emplace_back(f->info().in_domain(), f->info().in_domain() ? cdt.region(f) : 0.0);
+    return out;
+  };
+  const auto kept = marks();
   cdt::mark_domain(cdt, domain);  // the marks from scratch; equal to the maintained ones when remark_around is right
-  std::size_t k = 0;
-  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f, ++k)
-    if (kept[k] != std::make_pair(f->info().in_domain, f->info().region))
-      throw InternalError("refine2d: domain marks maintained by split differ from mark_domain");
+  if (marks() != kept)
+    throw InternalError("refine2d: domain marks maintained by split differ from mark_domain");
 }
 
 Vertex_handle State::next_on_constraint(Vertex_handle from, Vertex_handle end) const {
@@ -463,7 +466,7 @@ void State::remark_around(Vertex_handle v, Vertex_handle to_e, Vertex_handle to_
         continue;
       }
       Face_handle g = f->neighbor(j);
-      if (!set.count(g) && (g->info().in_domain != info->in_domain || g->info().component != info->component))
+      if (!set.count(g) && g->info().component != info->component)
         stack.emplace_back(g, info);
     }
   }

@@ -130,7 +130,7 @@ DomainCoverage inspect_domain(const Domain2& domain) {
   // cdt::mark_domain: component -2 = reached from the unbounded face (exterior), -3 = hole, >= 0 = domain.
   for (auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f) {
     cov.encloses_area = cov.encloses_area || f->info().component != -2;
-    cov.domain_triangles += f->info().in_domain;
+    cov.domain_triangles += f->info().in_domain();
   }
   for (std::size_t s = 0; s < domain.segments.size(); ++s) {
     cdt::Face_handle f;
@@ -138,12 +138,12 @@ DomainCoverage inspect_domain(const Domain2& domain) {
     if (!t.is_edge(vh[domain.segments[s][0]], vh[domain.segments[s][1]], f, i))
       throw InvalidInput("segment " + std::to_string(s) +
                          " is not an edge of the triangulation: it passes through a point or crosses a segment");
-    if (!f->info().in_domain && !f->neighbor(i)->info().in_domain) cov.segments_outside.push_back(int(s));
+    if (!f->info().in_domain() && !f->neighbor(i)->info().in_domain()) cov.segments_outside.push_back(int(s));
   }
   for (const auto& h : domain.holes)
     cov.holes.push_back(place_of(t, h, [](cdt::Face_handle f) { return f->info().component != -2; }));
   for (const auto& r : domain.regions)
-    cov.regions.push_back(place_of(t, r.at, [](cdt::Face_handle f) { return f->info().in_domain; }));
+    cov.regions.push_back(place_of(t, r.at, [](cdt::Face_handle f) { return f->info().in_domain(); }));
   return cov;
 }
 
