@@ -374,6 +374,15 @@ Vertex_handle State::split(const Side& side, const Point& p) {
   Vertex_handle v;
   if (splits_in_place(side, w, p)) {
     v = cdt.insert(p, CDT::EDGE, w.left, w.i);  // splits the constraint and both triangles, then flips
+    // CGAL flips the edges opposite v, which restores the constrained Delaunay property when p lies on the edge.
+    // A p some ulps off the line can leave an edge at v itself not locally Delaunay (seen outside the domain, at
+    // v's apex across a pocket): flip from every edge at v as well.
+    if (CGAL::orientation(side.s->point(), side.e->point(), p) != CGAL::COLLINEAR) {
+      CDT::List_edges at_v;
+      auto ec = cdt.incident_edges(v), done = ec;
+      do at_v.push_back(*ec); while (++ec != done);
+      cdt.propagating_flip(at_v);
+    }
   } else {
     // p is off the line and a neighbouring apex lies nearly on it (a sliver), or p bends a convex hull edge
     // inward: splitting in place would invert a triangle or the hull. Replace the constraint (s, e) by the
@@ -404,9 +413,7 @@ Vertex_handle State::split(const Side& side, const Point& p) {
         edge_index_[{std::min(a->info(), b->info()), std::max(a->info(), b->info())}] = edge;
     }
   remark_around(v, next_on_constraint(v, side.e), next_on_constraint(v, side.s), left, right);
-#ifdef NONOBTUSE_CHECK_INVARIANTS
-  check_invariants();
-#endif
+  if (check_every_split) check_invariants();
   return v;
 }
 

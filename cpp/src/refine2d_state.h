@@ -106,8 +106,14 @@ class State {
   bool splittable(const Side& side, const Point& p) const;
 
   bool budget_left() const { return placed < budget; }
-  // Debug builds (NONOBTUSE_CHECK_INVARIANTS), after every split: CGAL's is_valid, and the maintained domain marks
-  // equal a recomputation (which then replaces them). O(n): debug only.
+#ifdef NONOBTUSE_CHECK_INVARIANTS
+  bool check_every_split = true;   // debug builds: check_invariants after every split
+#else
+  bool check_every_split = false;  // tests may ask for check_invariants after every split in any build
+#endif
+  // CGAL's is_valid (constrained Delaunay everywhere, the exterior included), and the maintained domain marks
+  // equal a recomputation (which then replaces them). O(n): after every split in debug builds or when
+  // check_every_split is set.
   void check_invariants();
   // Every boundary side pushed on the queue.
   void enqueue_all();

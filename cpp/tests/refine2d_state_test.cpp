@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace nonobtuse::refine2d {
@@ -67,6 +70,40 @@ TEST(Refine2dState, CoveredFromShadesOnlyInFront) {
   // Ending at the segment's end a: shades only when it enters v's side.
   EXPECT_FALSE(covered_from(v, a, b, {{a, Point(-1, -3)}, {Point(-0.5, 2), Point(3, 2)}}));
   EXPECT_TRUE(covered_from(v, a, b, {{a, Point(3, 3)}}));
+}
+
+// A thin wavy layer (a 100 m x 1 m strip in mm, integer coordinates) whose hull leaves slivers of exterior
+// between the boundary's waves: refining it places points some ulps off the boundary, and the triangulation must
+// stay valid and constrained Delaunay everywhere, the exterior included (check_invariants: CGAL's is_valid and the
+// domain marks).
+TEST(Refine2dState, ThinLayerStaysConstrainedDelaunayOutsideTheDomainToo) {
+  std::uint64_t state = 11;  // a 64-bit LCG; seeds 1-10 miss the case on this machine
+  auto uniform = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  Domain2 d;
+  const int k = 150;
+  for (int i = 0; i < k; ++i) {
+    double x = i * (1e5 / (k - 1));
+    d.points.push_back({x, std::round(100 * std::sin(x / 5e3))});
+  }
+  for (int i = k - 1; i >= 0; --i) {
+    double x = i * (1e5 / (k - 1));
+    d.points.push_back({x, std::round(1000 + 100 * std::sin(x / 7e3))});
+  }
+  for (int i = 0; i < 2 * k; ++i) d.segments.push_back({i, (i + 1) % (2 * k)});
+  std::set<std::pair<double, double>> inner;
+  while (inner.size() < 2000) {
+    double x = std::round(500 + uniform() * (1e5 - 1000));
+    double lo = 100 * std::sin(x / 5e3) + 150, hi = 1000 + 100 * std::sin(x / 7e3) - 150;
+    inner.insert({x, std::round(lo + uniform() * (hi - lo))});
+  }
+  for (const auto& [x, y] : inner) d.points.push_back({x, y});
+  State st(d, default_steiner_budget(d.points.size()));
+  st.check_every_split = true;
+  EXPECT_NO_THROW(greedy_refine(st));
+  EXPECT_GT(st.placed, 0);
 }
 
 }  // namespace
