@@ -62,10 +62,17 @@ bool finite(const P3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) &
 
 std::optional<P3> rounded_circumcenter(const P3& a, const P3& b, const P3& c) {
   if (CGAL::collinear(a, b, c)) return std::nullopt;
-  P3 center = CGAL::circumcenter(a, b, c);
-  if (finite(center)) return center;
+  // The floating-point construction divides by a determinant that underflows to 0 on needles (debug builds of
+  // CGAL assert that it does not): computed first, the same way, so that such triangles go to the exact center.
+  double num_x, num_y, num_z, den;
+  CGAL::determinants_for_circumcenterC3(a.x(), a.y(), a.z(), b.x(), b.y(), b.z(), c.x(), c.y(), c.z(), num_x, num_y,
+                                        num_z, den);
+  if (den != 0) {
+    P3 center = CGAL::circumcenter(a, b, c);
+    if (finite(center)) return center;
+  }
   auto exact = exact_circumcenter(a, b, c);
-  center = P3(CGAL::to_double(exact.x()), CGAL::to_double(exact.y()), CGAL::to_double(exact.z()));
+  P3 center(CGAL::to_double(exact.x()), CGAL::to_double(exact.y()), CGAL::to_double(exact.z()));
   if (finite(center)) return center;
   return std::nullopt;
 }
