@@ -13,7 +13,8 @@ interior points).
 Writes experiments/results/bench_refine2d.csv and .png and prints a table. --quick: generated sizes up to 1e4.
 --pslg: only the PSLG inputs, with the CG:SHOP best known counts beside; writes
 experiments/results/bench_refine2d_pslg.csv. --ratio: only wall time against Triangle -pD on the convex
-polygon and the thin layer at 1e6 vertices (seed 0), runs interleaved, best of 3 each (for a shared machine).
+polygon, the star-shaped polygon and the thin layer at 1e6 vertices (seed 0), runs interleaved, best of 3 each
+(for a shared machine).
 """
 
 from __future__ import annotations
@@ -114,7 +115,7 @@ def run(name: str, category: str, domain: Domain, rows: list, best: bool = False
 def ratio(repeats: int = 3) -> None:
     """Wall seconds of nonobtuse.refine (greedy) and Triangle -pD on the 1e6 inputs, interleaved, best of
     `repeats` each, and their ratio."""
-    for gen in (convex, thin_layer):
+    for gen in (convex, star, thin_layer):
         domain = gen(10**6, np.random.default_rng(0))
         ours, peer = [], []
         for _ in range(repeats):

@@ -175,3 +175,16 @@ def test_unvalidated_bad_domains_raise_instead_of_crashing(points, segments, mes
     d = Domain(points=np.array(points, dtype=float), segments=np.array(segments))
     with pytest.raises(InvalidInputError, match=re.escape(message)):
         nonobtuse.refine(d, strategy=strategy)
+
+
+def test_refine_leaves_the_garbage_collector_as_it_found_it():
+    import gc
+
+    domain = convex_point_set(1, 5, 5)
+    for enabled in (True, False):
+        (gc.enable if enabled else gc.disable)()
+        try:
+            nonobtuse.refine(domain)
+            assert gc.isenabled() is enabled
+        finally:
+            gc.enable()
