@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <initializer_list>
 #include <tuple>
@@ -60,7 +61,7 @@ State::State(const Domain2& d, long long b) : domain(d), n_input(static_cast<int
   const std::vector<Side> sides = boundary_sides();
   for (const Side& side : sides) {
     int a = side.s->info(), c = side.e->info();
-    if (edge_index_.emplace(std::make_pair(std::min(a, c), std::max(a, c)), static_cast<int>(edges.size())).second)
+    if (edge_index_.emplace(edge_key(a, c), static_cast<int>(edges.size())).second)
       edges.push_back({{a, c}, 0, 0});  // an interface appears once, as (min, max)
   }
   convex_polygon = is_convex_polygon(sides);
@@ -117,16 +118,20 @@ bool State::is_violated(const Side& side) const {
 std::vector<Side> State::boundary_sides() const {
   if (sides_of_ == splits_) return sides_;
   // A boundary side is a constrained edge of a domain face, oriented with the face on its left.
-  std::vector<Side>& out = sides_;
-  out.clear();
+  // Sorted by the key (s index, e index), computed once per side rather than through the vertex handles at every
+  // comparison.
+  std::vector<std::pair<std::uint64_t, Side>> keyed;
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
     for (int i = 0; i < 3; ++i)
-      if (f->is_constrained(i) && f->info().in_domain()) out.push_back({f->vertex(CDT::ccw(i)), f->vertex(CDT::cw(i))});
-  std::sort(out.begin(), out.end(), [](const Side& a, const Side& b) {
-    return std::make_pair(a.s->info(), a.e->info()) < std::make_pair(b.s->info(), b.e->info());
-  });
+      if (f->is_constrained(i) && f->info().in_domain()) {
+        Vertex_handle s = f->vertex(CDT::ccw(i)), e = f->vertex(CDT::cw(i));
+        keyed.push_back({static_cast<std::uint64_t>(s->info()) << 32 | static_cast<std::uint32_t>(e->info()), {s, e}});
+      }
+  std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  sides_.clear();
+  for (const auto& [key, side] : keyed) sides_.push_back(side);
   sides_of_ = splits_;
-  return out;
+  return sides_;
 }
 
 void State::enqueue_all() {
@@ -410,7 +415,7 @@ Vertex_handle State::split(const Side& side, const Point& p) {
     for (Vertex_handle a = v, b; a != end; a = b) {
       b = next_on_constraint(a, end);
       if (a->info() < n_input && b->info() < n_input)
-        edge_index_[{std::min(a->info(), b->info()), std::max(a->info(), b->info())}] = edge;
+        edge_index_[edge_key(a->info(), b->info())] = edge;
     }
   remark_around(v, next_on_constraint(v, side.e), next_on_constraint(v, side.s), left, right);
   if (check_every_split) check_invariants();
@@ -483,7 +488,7 @@ int State::edge_of(const Side& side) const {
   for (Vertex_handle v : {side.s, side.e})
     if (v->info() >= n_input) return steiner_edge_.at(v->info() - n_input);
   int a = side.s->info(), b = side.e->info();
-  auto it = edge_index_.find({std::min(a, b), std::max(a, b)});
+  auto it = edge_index_.find(edge_key(a, b));
   if (it == edge_index_.end()) throw InternalError("refine2d: a boundary subsegment outside the input boundary");
   return it->second;
 }

@@ -2,9 +2,11 @@
 // Steiner budget, per-edge bookkeeping) and the operations they share: finding encroachers, rounding a point
 // onto a subsegment, splitting a constrained edge while keeping the domain marks.
 #pragma once
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <deque>
-#include <map>
+#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -185,7 +187,12 @@ class State {
   // lane that listed it.
   mutable unsigned vertex_lists_[2] = {0, 0};
   mutable std::vector<unsigned> vertex_walk_[2];
-  std::map<std::pair<int, int>, int> edge_index_;  // input boundary edge (min, max) -> index in edges
+  // Input boundary edge (min, max) -> index in edges; keyed min << 32 | max (a hash map: a polygon of a million
+  // vertices has a million edges).
+  std::unordered_map<std::uint64_t, int> edge_index_;
+  static std::uint64_t edge_key(int a, int b) {
+    return static_cast<std::uint64_t>(std::min(a, b)) << 32 | static_cast<std::uint32_t>(std::max(a, b));
+  }
   std::vector<int> steiner_edge_;                   // Steiner point (index - n_input) -> index in edges
   long long splits_ = 0;                            // calls to split: the CDT changes only there
   mutable std::vector<Side> sides_;                 // boundary_sides() as of split number sides_of_
