@@ -1,6 +1,7 @@
 // Internal: two-way fork-join for the passes over a whole mesh (Triangle, the peer, runs on one core; the
 // machines this targets have two or more).
 #pragma once
+#include <cstddef>
 #include <exception>
 #include <system_error>
 #include <thread>
