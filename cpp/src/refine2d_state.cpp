@@ -269,7 +269,7 @@ double State::greedy_parameter(const Side& start, const Point& s, const Point& e
   return best;
 }
 
-std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
+RankedCandidates ranked_candidates(const Point& s, const Point& e, double t) {
   double dx = e.x() - s.x(), dy = e.y() - s.y();
   std::vector<Point> out;
   // Dyadic parameters from fine to coarse, below and above t: the first exactly collinear one of each.
@@ -316,19 +316,25 @@ std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
   // the line (nearest first; ties: the one nearer s).
   // Each rank computed once (the orientation is exact); ties keep the order above.
   const double target = t * (dx * dx + dy * dy);
-  std::vector<std::tuple<int, double, double, std::size_t>> ranked;
-  ranked.reserve(out.size());
+  RankedCandidates ranked;
+  ranked.rank.reserve(out.size());
   for (std::size_t k = 0; k < out.size(); ++k) {
     const Point& q = out[k];
     auto o = CGAL::orientation(s, e, q);
     int group = o == CGAL::COLLINEAR ? 0 : o == CGAL::RIGHT_TURN ? 1 : 2;
     double along = (q.x() - s.x()) * dx + (q.y() - s.y()) * dy;
-    ranked.emplace_back(group, std::abs(along - target), along, k);
+    ranked.rank.emplace_back(group, std::abs(along - target), along, k);
   }
-  std::sort(ranked.begin(), ranked.end());
+  ranked.points = std::move(out);
+  return ranked;
+}
+
+std::vector<Point> candidates_near(const Point& s, const Point& e, double t) {
+  RankedCandidates c = ranked_candidates(s, e, t);
+  std::sort(c.rank.begin(), c.rank.end());
   std::vector<Point> sorted;
-  sorted.reserve(out.size());
-  for (const auto& r : ranked) sorted.push_back(out[std::get<3>(r)]);
+  sorted.reserve(c.points.size());
+  for (const auto& r : c.rank) sorted.push_back(c.points[std::get<3>(r)]);
   sorted.erase(std::unique(sorted.begin(), sorted.end()), sorted.end());
   return sorted;
 }

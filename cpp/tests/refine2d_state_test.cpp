@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <set>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -31,6 +32,19 @@ TEST(Refine2dState, CandidatesAreStrictlyInside) {
       EXPECT_NE(p, e);
       EXPECT_EQ(CGAL::angle(s, p, e), CGAL::OBTUSE);
     }
+}
+
+// pick_point offers the candidates in candidates_near's order (it pops them from a heap instead of sorting).
+TEST(Refine2dState, PickPointTriesCandidatesInOrder) {
+  for (const auto& [s, e, t] : {std::tuple{Point(3, 7), Point(1000003, 700001), 0.3},
+                                std::tuple{Point(0.1, 0.2), Point(0.7, 0.3), 0.37},
+                                std::tuple{Point(909090.9090909091, -62.0), Point(910544.3021892799, -59.55), 0.9}}) {
+    std::vector<Point> tried;
+    Point p;
+    EXPECT_FALSE(pick_point(s, e, t, [&](const Point& q) { return tried.push_back(q), false; }, p));
+    EXPECT_EQ(tried, candidates_near(s, e, t));
+    EXPECT_GT(tried.size(), 10u);
+  }
 }
 
 // The first candidate off a non-representable line is on the outside (right of s -> e) when one is offered there.
