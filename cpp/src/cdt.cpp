@@ -55,8 +55,9 @@ void radix_sort(std::vector<Keyed>& items) {
 }
 
 // The domain's points, each with its input index, in insertion order: biased randomized rounds (Amenta, Choi and
-// Rote's BRIO: a point is in round r >= 1 with probability 7/8^(r+1), coarsest round first, by a hash of its
-// index, so that early rounds span the domain and later points mostly land inside the hull), each round along a
+// Rote's BRIO: a point is in round r = 0..7 with probability 7/8^(r+1) (round 7 takes the rest), from a hash of
+// its index; coarsest round first, so that early rounds span the domain and later points mostly land inside the
+// hull), each round along a
 // Hilbert curve through k near-square slabs cut across the bounding box's long side, slabs in order (each curve
 // ends where the next slab's begins). Over the whole box a Hilbert curve's cells keep the box's aspect, so on a
 // long thin layer (1000:1) consecutive points would lie far apart along it and every point location would walk
@@ -193,9 +194,9 @@ void mark_domain(CDT& cdt, const Domain2& domain) {
         if (!cdt.is_constrained(Edge(f, i)) && !reached(f->neighbor(i))) stack.push_back(f->neighbor(i));
     }
   };
-  // Exterior: component -2; holes: component -3. As in Triangle's hole carving, only these are walked and every
-  // other face is in the domain, marked in container order (sequential memory; a flood fill over a million domain
-  // faces was most of this function's time).
+  // Exterior: component -2; holes: component -3. As in Triangle's hole carving, only these are walked; without
+  // regions every other face is in the domain, marked in container order (sequential memory; a flood fill over a
+  // million domain faces was most of this function's time).
   std::vector<Face_handle> outside;
   auto inf_faces = cdt.incident_faces(cdt.infinite_vertex()), done = inf_faces;
   if (inf_faces != nullptr) do outside.push_back(inf_faces); while (++inf_faces != done);
