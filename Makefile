@@ -1,6 +1,7 @@
 # make run   : install what is missing, build, run the demo on the built-in cross-section
 # make test  : install what is missing, build, run the C++ tests (ctest) and the Python tests (pytest)
-# make dev   : incremental developer build; puts _core next to the sources (use PYTHONPATH=src)
+# make dev   : incremental developer build (through ccache when installed); puts _core next to the sources
+#              (use PYTHONPATH=src)
 SHELL := /bin/bash
 PYTHON ?= python3
 VENV := .venv
@@ -36,7 +37,8 @@ install: deps $(PY)
 dev: deps $(PY)
 	$(PY) -m pip install -q scikit-build-core pybind11 ninja
 	cmake -S . -B build/dev -G Ninja -DCMAKE_BUILD_TYPE=$${BUILD_TYPE:-Release} -DNONOBTUSE_BUILD_TESTS=ON \
-	  -DPython_EXECUTABLE=$(abspath $(PY)) -Dpybind11_DIR=$$($(PY) -m pybind11 --cmakedir)
+	  -DPython_EXECUTABLE=$(abspath $(PY)) -Dpybind11_DIR=$$($(PY) -m pybind11 --cmakedir) \
+	  $$(command -v ccache >/dev/null && echo -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 	cmake --build build/dev
 	cp build/dev/_core*.so src/nonobtuse/
 

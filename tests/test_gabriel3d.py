@@ -17,8 +17,8 @@ from scipy.spatial import cKDTree
 
 import nonobtuse
 from nonobtuse.errors import InvalidInputError
+from nonobtuse.io.tetmesh import write_tetmesh
 from nonobtuse.mesh3d import check_gabriel, load_plc, refine_gabriel
-from nonobtuse.mesh3d.io3d import write_tetmesh
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
 DATA = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "3d"

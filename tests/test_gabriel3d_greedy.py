@@ -11,8 +11,8 @@ import pytest
 from mesh3d_shapes import write_off
 from nonobtuse.cli import EXIT_OK, main
 from nonobtuse.errors import InvalidInputError
+from nonobtuse.io.tetmesh import read_tetmesh_json
 from nonobtuse.mesh3d import check_gabriel, load_plc, refine_gabriel
-from nonobtuse.mesh3d.io3d import read_tetmesh_json
 from nonobtuse.mesh3d.plc import PLC
 
 DATA = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "3d"

@@ -13,8 +13,8 @@ from experiments.plc_families import make_plc
 
 from mesh3d_shapes import CUBE_POINTS, CUBE_TRIANGLES, TET_TRIANGLES, write_off
 from nonobtuse.cli import EXIT_INVALID, EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS, main
+from nonobtuse.io.tetmesh import read_tetmesh_json
 from nonobtuse.mesh3d import check_gabriel
-from nonobtuse.mesh3d.io3d import read_tetmesh_json
 
 # A low tet: the apex (1, 1, 2) is at distance sqrt(1 + 1 + 4) < 2 sqrt(2) from the circumcenter (2, 2, 0)
 # of the base (0,0,0), (4,0,0), (0,4,0), i.e. strictly inside the base's diametral sphere.

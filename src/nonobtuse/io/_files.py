@@ -9,7 +9,9 @@ import tempfile
 from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
-from typing import IO
+from typing import IO, Any
+
+import numpy as np
 
 from nonobtuse.errors import InvalidInputError
 
@@ -126,3 +128,16 @@ def atomic_text(path: Path) -> Iterator[IO[str]]:
     """A text stream whose content replaces ``path`` atomically when the block ends without an exception."""
     with atomic_path(path) as tmp, open(tmp, "w", encoding="utf-8") as f:
         yield f
+
+
+def jsonable(x: Any) -> Any:
+    """`x` with numpy arrays and scalars turned into lists and Python numbers, for json.dumps."""
+    if isinstance(x, np.ndarray):
+        return x.tolist()
+    if isinstance(x, np.generic):
+        return x.item()
+    if isinstance(x, dict):
+        return {str(k): jsonable(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [jsonable(v) for v in x]
+    return x

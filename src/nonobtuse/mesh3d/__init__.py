@@ -3,9 +3,9 @@ volumes."""
 
 from __future__ import annotations
 
+from nonobtuse.io.tetmesh import read_tetmesh_json, write_tetmesh
 from nonobtuse.mesh3d.control_volumes3d import ControlVolumes3D, control_volumes3d
 from nonobtuse.mesh3d.gabriel import Gabriel3DResult, GabrielReport, check_gabriel, refine_gabriel
-from nonobtuse.mesh3d.io3d import read_tetmesh_json, write_tetmesh
 from nonobtuse.mesh3d.load import load_plc
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 from nonobtuse.mesh3d.tetrahedralize import tetrahedralize

@@ -13,8 +13,7 @@ to one facet) plus the dangling two-vertex polygons of .poly files.
 
 from __future__ import annotations
 
-import re
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -23,204 +22,15 @@ from scipy.sparse.csgraph import connected_components
 
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.io._files import Line, Lines
+from nonobtuse.io import surfaces, tetgen
+from nonobtuse.io.raw3d import Facet, RawInput
 from nonobtuse.mesh3d.plc import PLC
 from nonobtuse.mesh3d.validate3d import edge_faces, manifold_face_pairs, validate_plc
 
-SURFACE_SUFFIXES = (".off", ".obj", ".ply", ".stl")
-PLC_SUFFIXES = (".poly", ".smesh")
-
-
-@dataclass
-class Facet:
-    """One input facet: loops of vertex indices (closed polygons when >= 3 vertices, a segment when 2, an
-    isolated point when 1) and hole points (h, 3) inside the facet's plane."""
-
-    loops: list[np.ndarray]
-    holes: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
-    where: str = ""
-
-
-@dataclass
-class RawInput:
-    """A parsed file before triangulation and validation."""
-
-    points: np.ndarray
-    facets: list[Facet]
-    holes: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
-    regions: np.ndarray = field(default_factory=lambda: np.zeros((0, 4)))
-    source: str = "<memory>"
-
-
-# ---------------------------------------------------------------------------------------------------------
-# Text formats (OFF, OBJ, .poly, .smesh, .node), read line by line with file:line messages
-
-
-def _floats(line: Line, start: int, n: int, what: str) -> list[float]:
-    line.need(start + n, what)
-    return [line.float(k, what) for k in range(start, start + n)]
-
-
-def _ints(line: Line, start: int, n: int, what: str) -> list[int]:
-    line.need(start + n, what)
-    return [line.int(k, what) for k in range(start, start + n)]
-
-
-def _read_off(path: Path) -> RawInput:
-    lines = Lines(path)
-    head = lines.next("the OFF header")
-    if not head.tokens[0].upper().endswith("OFF"):
-        raise head.error(f"not an OFF file: the first line is {' '.join(head.tokens)!r}, expected 'OFF'")
-    counts = head if len(head.tokens) > 1 else lines.next("the OFF counts")
-    start = 1 if counts is head else 0
-    nv, nf = (counts.count(start + k, "the OFF counts") for k in range(2))
-    pts = [_floats(lines.next(f"vertex {i}"), 0, 3, f"vertex {i}") for i in range(nv)]
-    facets = []
-    for j in range(nf):
-        line = lines.next(f"face {j}")
-        n = line.count(0, f"the vertex count of face {j}")
-        facets.append(Facet([np.array(_ints(line, 1, n, f"face {j}"), dtype=np.int64)],
-                            where=f"{line.file}:{line.number}"))
-    return RawInput(_points_array(pts), facets, source=str(path))
-
-
-def _read_obj(path: Path) -> RawInput:
-    lines = Lines(path)
-    pts, facets = [], []
-    while not lines.at_end():
-        line = lines.next("a line")
-        if line.tokens[0] == "v":
-            pts.append(_floats(line, 1, 3, "a vertex"))
-        elif line.tokens[0] == "f":
-            line.tokens = [w.split("/")[0] for w in line.tokens]  # v/vt/vn: the vertex index
-            idx = _ints(line, 1, len(line.tokens) - 1, "a face")
-            # OBJ indices are 1-based; negative ones count back from the last vertex read so far
-            idx = [i - 1 if i > 0 else len(pts) + i for i in idx]
-            facets.append(Facet([np.array(idx, dtype=np.int64)], where=f"{line.file}:{line.number}"))
-    return RawInput(_points_array(pts), facets, source=str(path))
-
-
-def _read_ply(path: Path) -> RawInput:
-    import meshio
-
-    if not path.read_bytes()[:3] == b"ply":
-        raise InvalidInputError(f"{path}: not a PLY file (it does not start with 'ply')")
-    try:
-        m = meshio.read(path, file_format="ply")
-    except Exception as e:  # meshio raises bare errors of many types on malformed files
-        raise InvalidInputError(f"{path}: malformed PLY file: {e}") from None
-    facets = []
-    for block in m.cells:
-        if block.type in ("triangle", "quad", "polygon"):
-            facets += [Facet([np.asarray(c, dtype=np.int64)], where=f"{path}: face") for c in block.data]
-    return RawInput(np.asarray(m.points, dtype=np.float64), facets, source=str(path))
-
-
-_STL_RECORD = np.dtype([("normal", "<f4", 3), ("v", "<f4", (3, 3)), ("attr", "<u2")])
-
-
-def _read_stl(path: Path) -> RawInput:
-    data = path.read_bytes()
-    if not data.strip():
-        raise InvalidInputError(f"{path}: the file is empty")
-    n = int.from_bytes(data[80:84], "little") if len(data) >= 84 else -1
-    if n >= 0 and 84 + 50 * n == len(data):  # binary (the header may still start with "solid")
-        corners = np.frombuffer(data, dtype=_STL_RECORD, count=n, offset=84)["v"].reshape(-1, 3)
-    elif data.lstrip()[:5].lower() == b"solid":
-        nums = re.findall(rb"vertex\s+(\S+)\s+(\S+)\s+(\S+)", data)
-        try:
-            corners = np.array([[float(x) for x in row] for row in nums], dtype=np.float64).reshape(-1, 3)
-        except ValueError:
-            raise InvalidInputError(f"{path}: malformed ASCII STL vertex line") from None
-        if len(corners) % 3:
-            raise InvalidInputError(f"{path}: ASCII STL with {len(corners)} vertices, not a multiple of 3")
-    else:
-        raise InvalidInputError(f"{path}: not an STL file (neither binary of consistent size nor 'solid' "
-                                f"ASCII)")
-    points, inverse = merge_equal_points(corners.astype(np.float64))
-    faces = inverse.reshape(-1, 3)
-    return RawInput(points, [Facet([f]) for f in faces], source=str(path))
-
-
-def merge_equal_points(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Merge exactly equal rows of `corners` (k, 3) (-0.0 equals 0.0). Returns the distinct points in order of
-    first occurrence and, per row, its index among them."""
-    key = corners + 0.0  # -0.0 + 0.0 == +0.0: equal values get equal bytes
-    _, first, inv = np.unique(key, axis=0, return_index=True, return_inverse=True)
-    inv = inv.ravel()
-    rank = np.empty(len(first), dtype=np.int64)
-    rank[np.argsort(first, kind="stable")] = np.arange(len(first))
-    return corners[np.sort(first)], rank[inv]
-
-
-def _points_array(pts: list) -> np.ndarray:
-    return np.array(pts, dtype=np.float64).reshape(-1, 3)
-
-
-def _read_tetgen(path: Path) -> RawInput:
-    """TetGen .poly (facets of polygons with facet holes) or .smesh (one polygon per facet)."""
-    lines = Lines(path)
-    head = lines.next("the node header")
-    n_nodes = head.count(0, "the number of nodes")
-    dim = head.int(1, "the dimension") if len(head.tokens) > 1 else 3
-    if dim != 3:
-        raise head.error(f"dimension {dim}: only 3D PLCs are read here")
-    if n_nodes == 0:
-        points, first_index = _read_nodes(Lines(path.with_suffix(".node")))
-    else:
-        points, first_index = _node_rows(lines, n_nodes)
-    base = first_index if first_index in (0, 1) else 0
-    n_facets = lines.next("the facet header").count(0, "the number of facets")
-    read_facet = _smesh_facet if path.suffix == ".smesh" else _poly_facet
-    facets = [read_facet(lines, base, j) for j in range(n_facets)]
-    holes = _point_list(lines, "hole", 3)
-    regions = _point_list(lines, "region", 4) if not lines.at_end() else np.zeros((0, 4))
-    return RawInput(points, facets, holes, regions, source=str(path))
-
-
-def _node_rows(lines: Lines, n: int) -> tuple[np.ndarray, int]:
-    """n node lines "index x y z ..."; returns the coordinates and the first index (0 or 1 based)."""
-    rows = [lines.next(f"node {i}").need(4, f"node {i}: an index and 3 coordinates") for i in range(n)]
-    points = np.array([_floats(r, 1, 3, f"node {i}") for i, r in enumerate(rows)], dtype=np.float64)
-    return points.reshape(-1, 3), (rows[0].int(0, "the node index") if rows else 0)
-
-
-def _read_nodes(lines: Lines) -> tuple[np.ndarray, int]:
-    head = lines.next("the node header")
-    n = head.count(0, "the number of nodes")
-    if n == 0:
-        raise head.error("no nodes")
-    return _node_rows(lines, n)
-
-
-def _loop(line: Line, base: int, what: str) -> np.ndarray:
-    n = line.count(0, f"the vertex count of {what}")
-    return np.array(_ints(line, 1, n, what), dtype=np.int64) - base
-
-
-def _smesh_facet(lines: Lines, base: int, j: int) -> Facet:
-    line = lines.next(f"facet {j}")
-    return Facet([_loop(line, base, f"facet {j}")], where=f"{line.file}:{line.number}")
-
-
-def _poly_facet(lines: Lines, base: int, j: int) -> Facet:
-    head = lines.next(f"facet {j}")
-    n_polygons = head.count(0, f"the polygon count of facet {j}")
-    n_holes = head.count(1, f"the hole count of facet {j}") if len(head.tokens) > 1 else 0
-    loops = [_loop(lines.next(f"facet {j} polygon {k}"), base, f"facet {j} polygon {k}")
-             for k in range(n_polygons)]
-    holes = [_floats(lines.next(f"facet {j} hole {k}"), 1, 3, f"facet {j} hole {k}") for k in range(n_holes)]
-    return Facet(loops, np.array(holes, dtype=np.float64).reshape(-1, 3), f"{head.file}:{head.number}")
-
-
-def _point_list(lines: Lines, what: str, cols: int) -> np.ndarray:
-    n = lines.next(f"the {what} list").count(0, f"the number of {what}s")
-    rows = [_floats(lines.next(f"{what} {k}"), 1, cols, f"{what} {k}") for k in range(n)]
-    return np.array(rows, dtype=np.float64).reshape(-1, cols)
-
-
-READERS = {".off": _read_off, ".obj": _read_obj, ".ply": _read_ply, ".stl": _read_stl,
-           ".poly": _read_tetgen, ".smesh": _read_tetgen}
+SURFACE_SUFFIXES = surfaces.SUFFIXES
+PLC_SUFFIXES = tetgen.SUFFIXES
+READERS = {".off": surfaces.read_off, ".obj": surfaces.read_obj, ".ply": surfaces.read_ply,
+           ".stl": surfaces.read_stl, ".poly": tetgen.read_tetgen, ".smesh": tetgen.read_tetgen}
 
 
 # ---------------------------------------------------------------------------------------------------------

@@ -35,7 +35,8 @@ import numpy as np
 
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.mesh3d.load import facet_boundary_segments, merge_equal_points
+from nonobtuse.io.raw3d import merge_equal_points
+from nonobtuse.mesh3d.load import facet_boundary_segments
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
 BACKENDS = ("cgal", "tetgen", "ftetwild")

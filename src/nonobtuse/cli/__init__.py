@@ -1,17 +1,15 @@
-"""The ``nonobtuse`` command. Each command group registers its subcommands from its own module.
-
-Exit codes: 0 success (and, for checks, every angle nonobtuse); 1 a check found violations; 2 invalid input;
-3 a refinement stopped before converging (budget, time, minimum length).
-"""
+"""The ``nonobtuse`` command. Each command group registers its subcommands from its own module; the exit
+codes are in :mod:`nonobtuse.cli.exit_codes`."""
 
 from __future__ import annotations
 
 import argparse
 import sys
 
+from nonobtuse.cli.exit_codes import EXIT_INVALID, EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS
 from nonobtuse.errors import InvalidInputError
 
-EXIT_OK, EXIT_VIOLATIONS, EXIT_INVALID, EXIT_NOT_CONVERGED = 0, 1, 2, 3
+__all__ = ["EXIT_INVALID", "EXIT_NOT_CONVERGED", "EXIT_OK", "EXIT_VIOLATIONS", "build_parser", "main"]
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -22,11 +20,11 @@ def build_parser() -> argparse.ArgumentParser:
         epilog="exit codes: 0 ok, 1 a check found violations, 2 invalid input, 3 refinement did not converge",
     )
     sub = parser.add_subparsers(dest="command", required=True)
-    from nonobtuse import cli_2d, cli_3d, cli_refine  # each module adds its subcommands and sets func=
+    from nonobtuse.cli import mesh2d, mesh3d, refine  # each module adds its subcommands and sets func=
 
-    cli_2d.register(sub)
-    cli_refine.register(sub)
-    cli_3d.register(sub)
+    mesh2d.register(sub)
+    refine.register(sub)
+    mesh3d.register(sub)
     return parser
 
 

@@ -10,8 +10,8 @@ import time
 from dataclasses import replace
 from typing import Any
 
-from nonobtuse.cli import EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS
-from nonobtuse.mesh3d.io3d import jsonable
+from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS
+from nonobtuse.io._files import jsonable
 
 
 def register(sub: argparse._SubParsersAction) -> None:

@@ -16,24 +16,11 @@ from typing import Any
 import numpy as np
 
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.io._files import atomic_path, atomic_text
+from nonobtuse.io._files import atomic_path, atomic_text, jsonable
+from nonobtuse.io.meshio_formats import FORMATS as MESHIO_FORMATS
 from nonobtuse.mesh3d.plc import TetMesh
 
 REQUIRED_STATS = ("status", "steiner_points", "encroached_facets", "encroached_segments", "seconds")
-MESHIO_FORMATS = {".vtu": "vtu", ".msh": "gmsh22"}
-
-
-def jsonable(x: Any) -> Any:
-    """`x` with numpy arrays and scalars turned into lists and Python numbers, for json.dumps."""
-    if isinstance(x, np.ndarray):
-        return x.tolist()
-    if isinstance(x, np.generic):
-        return x.item()
-    if isinstance(x, dict):
-        return {str(k): jsonable(v) for k, v in x.items()}
-    if isinstance(x, (list, tuple)):
-        return [jsonable(v) for v in x]
-    return x
 
 
 def tetmesh_to_dict(mesh: TetMesh) -> dict[str, Any]:

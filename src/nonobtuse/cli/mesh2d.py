@@ -8,11 +8,10 @@ from pathlib import Path
 
 from nonobtuse import demo
 from nonobtuse.check import check
+from nonobtuse.cli.exit_codes import EXIT_OK, EXIT_VIOLATIONS
 from nonobtuse.domain import Domain
 from nonobtuse.io import is_mesh_file, load_domain, read_mesh, write_mesh
 from nonobtuse.triangulate import triangulate
-
-EXIT_OK, EXIT_VIOLATIONS = 0, 1  # see nonobtuse.cli
 
 
 def _load(args: argparse.Namespace) -> Domain:

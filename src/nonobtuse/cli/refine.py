@@ -6,6 +6,7 @@ import argparse
 import json
 import sys
 
+from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK
 from nonobtuse.refine import STRATEGIES
 
 
@@ -28,7 +29,6 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from nonobtuse.cli import EXIT_NOT_CONVERGED, EXIT_OK
     from nonobtuse.io import load_domain, write_mesh
     from nonobtuse.refine import refine
 

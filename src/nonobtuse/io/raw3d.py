@@ -1,0 +1,56 @@
+"""What a 3D input file holds before its facets are triangulated and validated: points, polygonal facets,
+holes and regions (:class:`RawInput`), and the line-reading helpers the text formats share."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from nonobtuse.io._files import Line
+
+
+@dataclass
+class Facet:
+    """One input facet: loops of vertex indices (closed polygons when >= 3 vertices, a segment when 2, an
+    isolated point when 1) and hole points (h, 3) inside the facet's plane."""
+
+    loops: list[np.ndarray]
+    holes: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
+    where: str = ""
+
+
+@dataclass
+class RawInput:
+    """A parsed file before triangulation and validation."""
+
+    points: np.ndarray
+    facets: list[Facet]
+    holes: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
+    regions: np.ndarray = field(default_factory=lambda: np.zeros((0, 4)))
+    source: str = "<memory>"
+
+
+def floats(line: Line, start: int, n: int, what: str) -> list[float]:
+    line.need(start + n, what)
+    return [line.float(k, what) for k in range(start, start + n)]
+
+
+def ints(line: Line, start: int, n: int, what: str) -> list[int]:
+    line.need(start + n, what)
+    return [line.int(k, what) for k in range(start, start + n)]
+
+
+def merge_equal_points(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Merge exactly equal rows of `corners` (k, 3) (-0.0 equals 0.0). Returns the distinct points in order of
+    first occurrence and, per row, its index among them."""
+    key = corners + 0.0  # -0.0 + 0.0 == +0.0: equal values get equal bytes
+    _, first, inv = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    inv = inv.ravel()
+    rank = np.empty(len(first), dtype=np.int64)
+    rank[np.argsort(first, kind="stable")] = np.arange(len(first))
+    return corners[np.sort(first)], rank[inv]
+
+
+def points_array(pts: list) -> np.ndarray:
+    return np.array(pts, dtype=np.float64).reshape(-1, 3)

@@ -1,0 +1,76 @@
+"""TetGen PLC files: .poly (facets of polygons with facet holes) and .smesh (one polygon per facet), with
+volume holes and regions; nodes from the sibling .node file when the node count is 0. Errors name
+file:line."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from nonobtuse.io._files import Line, Lines
+from nonobtuse.io.raw3d import Facet, RawInput, floats, ints
+
+SUFFIXES = (".poly", ".smesh")
+
+
+def read_tetgen(path: Path) -> RawInput:
+    """TetGen .poly (facets of polygons with facet holes) or .smesh (one polygon per facet)."""
+    lines = Lines(path)
+    head = lines.next("the node header")
+    n_nodes = head.count(0, "the number of nodes")
+    dim = head.int(1, "the dimension") if len(head.tokens) > 1 else 3
+    if dim != 3:
+        raise head.error(f"dimension {dim}: only 3D PLCs are read here")
+    if n_nodes == 0:
+        points, first_index = _read_nodes(Lines(path.with_suffix(".node")))
+    else:
+        points, first_index = _node_rows(lines, n_nodes)
+    base = first_index if first_index in (0, 1) else 0
+    n_facets = lines.next("the facet header").count(0, "the number of facets")
+    read_facet = _smesh_facet if path.suffix == ".smesh" else _poly_facet
+    facets = [read_facet(lines, base, j) for j in range(n_facets)]
+    holes = _point_list(lines, "hole", 3)
+    regions = _point_list(lines, "region", 4) if not lines.at_end() else np.zeros((0, 4))
+    return RawInput(points, facets, holes, regions, source=str(path))
+
+
+def _node_rows(lines: Lines, n: int) -> tuple[np.ndarray, int]:
+    """n node lines "index x y z ..."; returns the coordinates and the first index (0 or 1 based)."""
+    rows = [lines.next(f"node {i}").need(4, f"node {i}: an index and 3 coordinates") for i in range(n)]
+    points = np.array([floats(r, 1, 3, f"node {i}") for i, r in enumerate(rows)], dtype=np.float64)
+    return points.reshape(-1, 3), (rows[0].int(0, "the node index") if rows else 0)
+
+
+def _read_nodes(lines: Lines) -> tuple[np.ndarray, int]:
+    head = lines.next("the node header")
+    n = head.count(0, "the number of nodes")
+    if n == 0:
+        raise head.error("no nodes")
+    return _node_rows(lines, n)
+
+
+def _loop(line: Line, base: int, what: str) -> np.ndarray:
+    n = line.count(0, f"the vertex count of {what}")
+    return np.array(ints(line, 1, n, what), dtype=np.int64) - base
+
+
+def _smesh_facet(lines: Lines, base: int, j: int) -> Facet:
+    line = lines.next(f"facet {j}")
+    return Facet([_loop(line, base, f"facet {j}")], where=f"{line.file}:{line.number}")
+
+
+def _poly_facet(lines: Lines, base: int, j: int) -> Facet:
+    head = lines.next(f"facet {j}")
+    n_polygons = head.count(0, f"the polygon count of facet {j}")
+    n_holes = head.count(1, f"the hole count of facet {j}") if len(head.tokens) > 1 else 0
+    loops = [_loop(lines.next(f"facet {j} polygon {k}"), base, f"facet {j} polygon {k}")
+             for k in range(n_polygons)]
+    holes = [floats(lines.next(f"facet {j} hole {k}"), 1, 3, f"facet {j} hole {k}") for k in range(n_holes)]
+    return Facet(loops, np.array(holes, dtype=np.float64).reshape(-1, 3), f"{head.file}:{head.number}")
+
+
+def _point_list(lines: Lines, what: str, cols: int) -> np.ndarray:
+    n = lines.next(f"the {what} list").count(0, f"the number of {what}s")
+    rows = [floats(lines.next(f"{what} {k}"), 1, cols, f"{what} {k}") for k in range(n)]
+    return np.array(rows, dtype=np.float64).reshape(-1, cols)
