@@ -46,7 +46,7 @@ def steiner_points_on_input_segments(domain: Domain, mesh) -> bool:
 
 def assert_refined(domain: Domain, res) -> None:
     assert res.status == "converged"
-    assert res.stats["obtuse_boundary_triangles"] == 0
+    assert res.stats["obtuse_boundary_sides"] == 0
     assert obtuse_constraint_sides(res.mesh) == 0
     assert nonobtuse.check(res.mesh).ok
     assert steiner_points_on_input_segments(domain, res.mesh)
@@ -219,7 +219,7 @@ def test_budget_exhausted_is_a_status_on_an_interface():
     d = Domain(points=pts, segments=loop(6) + [(5, 2)])
     res = nonobtuse.refine(d, max_steiner=1)
     assert res.status == "budget_exhausted" and res.stats["steiner_points"] == 1
-    assert res.stats["obtuse_boundary_triangles"] == obtuse_constraint_sides(res.mesh) > 0
+    assert res.stats["obtuse_boundary_sides"] == obtuse_constraint_sides(res.mesh) > 0
 
 
 def test_propagation_is_diagnosed_along_a_chain():

@@ -32,7 +32,7 @@ py::dict report_to_dict(const GabrielReport& r) {
   return d;
 }
 
-py::dict diagnosis_to_dict(const Refine3Diagnosis& diag) {
+py::dict diagnosis_to_dict(const Refine3DDiagnosis& diag) {
   py::list angles, per_vertex, per_segment;
   for (const auto& a : diag.smallest_angles)
     angles.append(py::dict(py::arg("kind") = a.kind, py::arg("degrees") = a.degrees,
@@ -47,7 +47,7 @@ py::dict diagnosis_to_dict(const Refine3Diagnosis& diag) {
   return d;
 }
 
-py::dict result_to_dict(const Refine3Result& r) {
+py::dict result_to_dict(const Refine3DResult& r) {
   py::dict d;
   d["points"] = from_points3(r.points);
   d["tets"] = from_index_rows<4>(r.tets);
@@ -56,6 +56,8 @@ py::dict result_to_dict(const Refine3Result& r) {
   d["segments"] = from_index_rows<2>(r.segments);
   d["tet_regions"] = from_vector(r.tet_regions);
   d["status"] = to_string(r.status);
+  d["max_steiner"] = r.max_steiner;
+  d["min_length"] = r.min_length;
   d["steiner_on_segments"] = r.steiner_on_segments;
   d["greedy_splits"] = r.greedy_splits;
   d["steiner_on_facets"] = r.steiner_on_facets;
@@ -107,18 +109,18 @@ void bind_gabriel3d(py::module_& m) {
             {"shells", SplitRule::Shells}, {"midpoint", SplitRule::Midpoint}, {"greedy", SplitRule::Greedy}};
         if (!rules.count(split))
           throw InvalidInput("split must be 'shells', 'midpoint' or 'greedy', not '" + split + "'");
-        Refine3Options o;
+        Refine3DOptions o;
         o.max_steiner = max_steiner;
         o.min_length = min_length;
         o.time_limit = time_limit;
         o.split = rules.at(split);
         o.progress_every = progress_every;
         if (progress)
-          o.progress = [progress](const Refine3Progress& p) {
+          o.progress = [progress](const Refine3DProgress& p) {
             py::gil_scoped_acquire acquire;
             progress(p.steiner_points, p.encroached_segments, p.encroached_facets, p.seconds);
           };
-        Refine3Result result;
+        Refine3DResult result;
         {
           py::gil_scoped_release release;
           result = refine_gabriel(plc, o);
@@ -128,9 +130,11 @@ void bind_gabriel3d(py::module_& m) {
       py::arg("points"), py::arg("triangles"), py::arg("facet_ids"), py::arg("segments"), py::arg("holes"),
       py::arg("regions"), py::arg("max_steiner"), py::arg("min_length"), py::arg("time_limit"), py::arg("split"),
       py::arg("progress_every"), py::arg("progress"),
-      "Gabriel refinement of a PLC. progress: None or f(steiner, encroached_segments, encroached_facets, seconds).\n"
-      "Returns a dict: points, tets, boundary_faces, face_markers, segments, tet_regions, status, steiner counts,\n"
-      "seconds, smallest_subsegment, certificate (as check_gabriel), diagnosis.");
+      "Gabriel refinement of a PLC. max_steiner < 0, min_length < 0: the defaults of Refine3DOptions (gabriel3d.h).\n"
+      "progress: None or f(steiner, encroached_segments, encroached_facets, seconds).\n"
+      "Returns a dict: points, tets, boundary_faces, face_markers, segments, tet_regions, status, the limits\n"
+      "used (max_steiner, min_length), steiner counts, seconds, smallest_subsegment, certificate (as\n"
+      "check_gabriel), diagnosis.");
 }
 
 }  // namespace nonobtuse::bindings

@@ -14,7 +14,7 @@ RefineStrategy strategy_from(const std::string& name) {
   throw InvalidInput("unknown refinement strategy '" + name + "' (greedy, project-flip, projection)");
 }
 
-py::dict diagnosis_to_dict(const RefineDiagnosis2& g) {
+py::dict diagnosis_to_dict(const Refine2DDiagnosis& g) {
   py::list junctions, angles;
   for (const auto& j : g.junctions)
     junctions.append(py::dict(py::arg("vertex") = j.vertex, py::arg("constraints") = j.constraints,
@@ -33,14 +33,15 @@ py::dict diagnosis_to_dict(const RefineDiagnosis2& g) {
   return d;
 }
 
-py::dict result_to_dict(const RefineResult2& r) {
+py::dict result_to_dict(const Refine2DResult& r) {
   py::dict d;
   d["mesh"] = mesh_to_dict(r.mesh);
   d["status"] = to_string(r.status);
   d["steiner_points"] = r.steiner_points;
+  d["max_steiner"] = r.max_steiner;
   d["lower_bound"] = r.lower_bound;
   d["optimal"] = r.optimal < 0 ? py::object(py::none()) : py::object(py::bool_(r.optimal == 1));
-  d["obtuse_boundary_triangles"] = r.obtuse_boundary_triangles;
+  d["obtuse_boundary_sides"] = r.obtuse_boundary_sides;
   d["seconds"] = r.seconds;
   std::vector<std::array<int, 4>> rows;
   for (const auto& e : r.edges) rows.push_back({e.edge[0], e.edge[1], e.steiner_points, e.lower_bound});
@@ -57,8 +58,11 @@ void bind_refine2d(py::module_& m) {
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,
          bool convex_hull_boundary, const std::string& strategy, long long max_steiner, int threads) {
         Domain2 d = domain_from_arrays(points, segments, holes, regions, convex_hull_boundary);
-        RefineOptions options{strategy_from(strategy), max_steiner, threads};
-        RefineResult2 r;
+        Refine2DOptions options;
+        options.strategy = strategy_from(strategy);
+        options.max_steiner = max_steiner;
+        options.threads = threads;
+        Refine2DResult r;
         {
           py::gil_scoped_release release;
           r = refine(d, options);
@@ -67,10 +71,11 @@ void bind_refine2d(py::module_& m) {
       },
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("regions"), py::arg("convex_hull_boundary"),
       py::arg("strategy") = "greedy", py::arg("max_steiner") = -1, py::arg("threads") = 2,
-      "Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0: default\n"
-      "budget 10 n + 1000. Returns a dict: mesh (as triangulate), status ('converged' | 'budget_exhausted'),\n"
-      "steiner_points, lower_bound, optimal (True | None), obtuse_boundary_triangles (exact certificate),\n"
-      "edges (k, 4) int64 rows a, b, steiner_points, lower_bound per input boundary edge, seconds.");
+      "Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0:\n"
+      "default_steiner_budget(n). Returns a dict: mesh (as triangulate), status ('converged' |\n"
+      "'budget_exhausted' | 'stalled'), steiner_points, max_steiner (the budget used), lower_bound, optimal\n"
+      "(True | None), obtuse_boundary_sides (exact certificate), edges (k, 4) int64 rows a, b, steiner_points,\n"
+      "lower_bound per input boundary edge, seconds, diagnosis.");
   m.def(
       "conforming_gabriel_steiner_points",
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,
@@ -82,7 +87,7 @@ void bind_refine2d(py::module_& m) {
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("regions"), py::arg("convex_hull_boundary"),
       "Benchmark peer: Steiner points added by CGAL::make_conforming_Gabriel_2 to the domain's CDT.");
   m.def("default_steiner_budget", &default_steiner_budget, py::arg("n_points"),
-        "The default Steiner budget for n input points: 10 n + 1000.");
+        "The Steiner budget refine uses for n input points when max_steiner < 0 (refine2d.h).");
 }
 
 }  // namespace nonobtuse::bindings

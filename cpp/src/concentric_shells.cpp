@@ -5,7 +5,7 @@
 // subsegment [v, a] of the other constraint iff |vb| < |va| cos(theta). Splitting at arbitrary points can then
 // ping-pong between the two constraints, each split creating a new encroacher on the other one.
 //
-// The split rule (shell_parameter, used by greedy_refine's choose_point when the sweep starts at an acute
+// The split rule (shell_at_or_before, used by greedy_refine's choose_point when the sweep starts at an acute
 // junction): the first Steiner point from v goes at the largest power-of-two distance 2^k from v that does not
 // exceed the greedy (or forbidden-interval) choice x. [v, 2^k] lies inside [v, x], and the diametral disk of
 // [v, y] for y between v and x lies inside the disk of [v, x] (both circles pass through v, centred on the same
@@ -61,7 +61,7 @@ Side shell_anchor(const State& st, const Side& side) {
   return side;
 }
 
-double shell_parameter(const Point& s, const Point& e, double t) {
+double shell_at_or_before(const Point& s, const Point& e, double t) {
   double length = std::sqrt(CGAL::to_double(CGAL::squared_distance(s, e)));
   double x = t * length;
   if (!(x > 0)) return t;

@@ -17,6 +17,6 @@ Side shell_anchor(const State& st, const Side& side);
 
 // The shell parameter for a split of [s, e] from the acute junction s whose greedy (or forbidden-interval) choice
 // is s + t (e - s): the largest power of two 2^k <= t |e - s|, as a parameter of [s, e].
-double shell_parameter(const Point& s, const Point& e, double t);
+double shell_at_or_before(const Point& s, const Point& e, double t);
 
 }  // namespace nonobtuse::refine2d

@@ -135,7 +135,7 @@ std::vector<InputAngle> smallest_input_angles(const PlcState& s) {
   return out;
 }
 
-void count_steiner(const PlcState& s, Refine3Diagnosis& d) {
+void count_steiner(const PlcState& s, Refine3DDiagnosis& d) {
   std::vector<P3> input(s.points.begin(), s.points.begin() + s.n_input);
   PointIndex index(input);
   std::vector<SteinerCount> per_vertex(s.n_input);

@@ -99,6 +99,6 @@ Restricted subfacet_boundary(const PlcState& s, long* collinear);
 // The few smallest input angles of each kind; call before refinement (it reads the unsplit input segments).
 std::vector<InputAngle> smallest_input_angles(const PlcState& s);
 // Steiner points per input segment and per nearest input vertex, top few.
-void count_steiner(const PlcState& s, Refine3Diagnosis& d);
+void count_steiner(const PlcState& s, Refine3DDiagnosis& d);
 
 }  // namespace nonobtuse::gabriel3d

@@ -13,7 +13,7 @@ namespace {
 
 // Why the refinement stopped early, if it did.
 struct Stop {
-  Refine3Status status;
+  RefineStatus status;
   std::string reason;
 };
 
@@ -32,7 +32,7 @@ SubfacetRef canonical(SubfacetRef r) {
 
 class Refiner {
  public:
-  Refiner(PlcState& s, const Refine3Options& o, bool ignore_frame_artifacts)
+  Refiner(PlcState& s, const Refine3DOptions& o, bool ignore_frame_artifacts)
       : s_(s), o_(o), ignore_frame_artifacts_(ignore_frame_artifacts), index_(s.points),
         start_(std::chrono::steady_clock::now()), acute_(s.n_input, false) {
     std::vector<std::vector<int>> ends(s.n_input);
@@ -89,7 +89,7 @@ class Refiner {
   void inserted(int m);
 
   PlcState& s_;
-  const Refine3Options& o_;
+  const Refine3DOptions& o_;
   bool ignore_frame_artifacts_;
   PointIndex index_;
   std::chrono::steady_clock::time_point start_;
@@ -99,9 +99,9 @@ class Refiner {
 
 std::optional<Stop> Refiner::budget_left() const {
   if (steiner_on_segments + steiner_on_facets >= o_.max_steiner)
-    return Stop{Refine3Status::BudgetExhausted, "max_steiner (" + std::to_string(o_.max_steiner) + ") reached"};
+    return Stop{RefineStatus::BudgetExhausted, "max_steiner (" + std::to_string(o_.max_steiner) + ") reached"};
   if (out_of_time())
-    return Stop{Refine3Status::BudgetExhausted, "time_limit (" + std::to_string(o_.time_limit) + " s) reached"};
+    return Stop{RefineStatus::BudgetExhausted, "time_limit (" + std::to_string(o_.time_limit) + " s) reached"};
   return std::nullopt;
 }
 
@@ -133,7 +133,7 @@ std::vector<SubfacetRef> Refiner::encroached_subfacets() const {
 
 std::optional<Stop> Refiner::too_short(const P3& p, const P3& q) const {
   if (o_.min_length > 0 && CGAL::compare_squared_distance(p, q, o_.min_length * o_.min_length) == CGAL::SMALLER)
-    return Stop{Refine3Status::MinLengthReached,
+    return Stop{RefineStatus::MinLengthReached,
                 "a split would create an edge shorter than min_length (" + std::to_string(o_.min_length) + ")"};
   return std::nullopt;
 }
@@ -171,7 +171,7 @@ P3 interpolate(const P3& a, const P3& b, double t) {
 // cos(angle(d1, d2)) > 1: never). So the ping-pong of midpoint splitting down two segments meeting at a small
 // angle stops once the subsegments at e reach a common shell. Small segment-facet and dihedral angles have no
 // known terminating rule: the budgets end those runs.
-double shell_parameter(const P3& pa, const P3& pb, bool a_input, bool b_input) {
+double shell_cutting_evenly(const P3& pa, const P3& pb, bool a_input, bool b_input) {
   if (a_input == b_input) return 0.5;
   double length = std::sqrt(CGAL::to_double(CGAL::squared_distance(pa, pb)));
   double shell = 1.0;
@@ -249,12 +249,14 @@ std::optional<Stop> Refiner::split(const Key& sub, bool always, bool* inserted_p
   // subsegments with exactly one end at an acute input vertex, on 6 (rotor.off ran out of budget).
   const bool acute_end = (a_input && acute_[a]) || (b_input && acute_[b]);
   if (o_.split == SplitRule::Greedy && !acute_end) greedy = greedy_parameter(a, b, pending);
-  const double t = greedy ? *greedy : o_.split == SplitRule::Midpoint ? 0.5 : shell_parameter(pa, pb, a_input, b_input);
+  const double t = greedy                              ? *greedy
+                   : o_.split == SplitRule::Midpoint ? 0.5
+                                                     : shell_cutting_evenly(pa, pb, a_input, b_input);
   const P3 m = interpolate(pa, pb, t);
   if (auto stop = too_short(pa, m)) return stop;
   if (auto stop = too_short(m, pb)) return stop;
   if (s_.at.count({m.x(), m.y(), m.z()}))  // rounding hit an existing vertex: no progress possible here
-    return Stop{Refine3Status::Stalled, "the split point of subsegment (" + std::to_string(a) + ", " +
+    return Stop{RefineStatus::Stalled, "the split point of subsegment (" + std::to_string(a) + ", " +
                                             std::to_string(b) + ") rounds onto an existing vertex"};
   int id = split_subsegment(s_, a, b, t, m);
   ++steiner_on_segments;
@@ -342,7 +344,7 @@ std::optional<Stop> Refiner::run() {
       for (const Key& sub : subs)
         if (auto stop = split(sub, false, &round_progress)) return stop;
       if (!round_progress)
-        return Stop{Refine3Status::Stalled, "encroached subsegments remain but none could be split"};
+        return Stop{RefineStatus::Stalled, "encroached subsegments remain but none could be split"};
       progress = true;
     }
     last_encroached_segments_ = 0;
@@ -358,7 +360,7 @@ std::optional<Stop> Refiner::run() {
       if (auto stop = split_subfacet(r, true, &progress)) return stop;
     }
     if (!progress)  // every encroached subfacet's circumcenter was refused: the same state would repeat forever
-      return Stop{Refine3Status::Stalled, "encroached subfacets remain whose circumcenters cannot be inserted"};
+      return Stop{RefineStatus::Stalled, "encroached subfacets remain whose circumcenters cannot be inserted"};
   }
 }
 
@@ -398,22 +400,28 @@ double smallest_subsegment(const PlcState& s) {
 
 namespace nonobtuse {
 
-const char* to_string(Refine3Status status) {
-  switch (status) {
-    case Refine3Status::Converged: return "converged";
-    case Refine3Status::BudgetExhausted: return "budget_exhausted";
-    case Refine3Status::MinLengthReached: return "min_length_reached";
-    case Refine3Status::Stalled: return "stalled";
-  }
-  return "stalled";
-}
-
 namespace {
 
-Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool ignore_frame_artifacts) {
+// The options with the defaults of Refine3DOptions resolved for `plc` (the field comments state them).
+Refine3DOptions with_defaults(const PLC3& plc, Refine3DOptions o) {
+  if (o.max_steiner < 0) o.max_steiner = 10 * static_cast<long>(plc.points.size()) + 10000;
+  if (o.min_length < 0) {
+    double d2 = 0;
+    for (auto c : {&Point3::x, &Point3::y, &Point3::z}) {
+      auto [lo, hi] = std::minmax_element(plc.points.begin(), plc.points.end(),
+                                          [c](const Point3& a, const Point3& b) { return a.*c < b.*c; });
+      const double extent = plc.points.empty() ? 0.0 : (*hi).*c - (*lo).*c;
+      d2 += extent * extent;
+    }
+    o.min_length = 1e-6 * std::sqrt(d2);
+  }
+  return o;
+}
+
+Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool ignore_frame_artifacts) {
   using namespace gabriel3d;
   PlcState s = build_plc_state(plc);
-  Refine3Result out;
+  Refine3DResult out;
   out.diagnosis.smallest_angles = smallest_input_angles(s);
   Refiner refiner(s, options, ignore_frame_artifacts);
   // Refine the subfacets, restrict the Delaunay tetrahedralization, check it exactly; where its boundary faces
@@ -459,13 +467,13 @@ Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool i
     bool complete = out.certificate.unchecked_faces == 0 && out.certificate.unchecked_segments == 0;
     clean = complete && out.certificate.faces.empty() && out.certificate.segments.empty();
     if (!complete && !stop)
-      stop = Stop{Refine3Status::BudgetExhausted, "time_limit (" + std::to_string(options.time_limit) +
+      stop = Stop{RefineStatus::BudgetExhausted, "time_limit (" + std::to_string(options.time_limit) +
                                                       " s) reached during the exact check of the result"};
     if (stop || clean) break;
     bool progress = false;
     stop = refiner.repair(mesh, segments, out.certificate, &progress);
     if (!stop && !progress)
-      stop = Stop{Refine3Status::Stalled, "encroached faces of the Delaunay mesh remain but none could be split"};
+      stop = Stop{RefineStatus::Stalled, "encroached faces of the Delaunay mesh remain but none could be split"};
   }
   out.tets = std::move(mesh.tets);
   out.boundary_faces = std::move(mesh.boundary_faces);
@@ -477,7 +485,7 @@ Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool i
   out.smallest_subsegment = smallest_subsegment(s);
   count_steiner(s, out.diagnosis);
   if (clean) {
-    out.status = Refine3Status::Converged;
+    out.status = RefineStatus::Converged;
     out.diagnosis.stop_reason = "every boundary face and subsegment has an empty diametral sphere";
   } else {
     out.status = stop->status;
@@ -493,14 +501,19 @@ Refine3Result refine_once(const PLC3& plc, const Refine3Options& options, bool i
 // that cover a facet then sit on rounding-level slivers whose circumcenters coincide with existing vertices),
 // once more from the input counting them: their extra points usually break the near-cospherical ties.
 // The second attempt only runs while time_limit has time left (else it would return the bare input).
-Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options) {
-  Refine3Result first = refine_once(plc, options, true);
-  if (first.status != Refine3Status::Stalled || first.seconds >= options.time_limit) return first;
-  Refine3Options rest = options;
+Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& given) {
+  const Refine3DOptions options = with_defaults(plc, given);
+  Refine3DResult first = refine_once(plc, options, true);
+  first.max_steiner = options.max_steiner;
+  first.min_length = options.min_length;
+  if (first.status != RefineStatus::Stalled || first.seconds >= options.time_limit) return first;
+  Refine3DOptions rest = options;
   rest.time_limit = std::max(0.0, options.time_limit - first.seconds);
-  Refine3Result second = refine_once(plc, rest, false);
+  Refine3DResult second = refine_once(plc, rest, false);
   second.seconds += first.seconds;
   second.diagnosis.stop_reason += " (second attempt; the first stalled: " + first.diagnosis.stop_reason + ")";
+  second.max_steiner = options.max_steiner;
+  second.min_length = options.min_length;
   return second;
 }
 

@@ -89,7 +89,7 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
   // Paper 4.3: blocked by a boundary vertex whose subsegment is violated: refine that one first.
   if (may_defer && blocker != nullptr && blocked_by_violated_boundary(st, blocker)) return defer();
   // Concentric shells: from an acute junction the first point goes on a power-of-two shell (concentric_shells.cpp).
-  if (is_acute_junction(st, cur.s, cur.e) && pick_point(s, e, shell_parameter(s, e, t_greedy), allowed, p))
+  if (is_acute_junction(st, cur.s, cur.e) && pick_point(s, e, shell_at_or_before(s, e, t_greedy), allowed, p))
     return Step::Place;
   double t = t_greedy;
   // Each iteration places a point or moves t strictly back toward s (to a forbidden interval's start, or by a

@@ -15,7 +15,7 @@ using refine2d::State;
 
 long long default_steiner_budget(std::size_t n_points) { return 10 * static_cast<long long>(n_points) + 1000; }
 
-std::string to_string(RefineStrategy s) {
+const char* to_string(RefineStrategy s) {
   switch (s) {
     case RefineStrategy::Greedy: return "greedy";
     case RefineStrategy::ProjectFlip: return "project-flip";
@@ -24,16 +24,7 @@ std::string to_string(RefineStrategy s) {
   return "?";
 }
 
-std::string to_string(RefineStatus s) {
-  switch (s) {
-    case RefineStatus::Converged: return "converged";
-    case RefineStatus::BudgetExhausted: return "budget_exhausted";
-    case RefineStatus::Stalled: return "stalled";
-  }
-  return "?";
-}
-
-RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
+Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options) {
   auto start = std::chrono::steady_clock::now();
   long long budget = options.max_steiner < 0 ? default_steiner_budget(domain.points.size()) : options.max_steiner;
   State st(domain, budget);
@@ -95,16 +86,17 @@ RefineResult2 refine(const Domain2& domain, const RefineOptions& options) {
     run();
   }
 
-  RefineResult2 r;
+  Refine2DResult r;
   r.mesh = cdt::to_mesh(st.cdt, options.threads);
   // The exact certificate of the mesh as returned: the obtuse sides of boundary edges and of interfaces (each side
-  // of a constrained segment or region jump checked on its own: issue 4).
-  r.obtuse_boundary_triangles = count_obtuse_boundary_sides(r.mesh, options.threads);
+  // of a constrained segment or region jump checked on its own).
+  r.obtuse_boundary_sides = count_obtuse_boundary_sides(r.mesh, options.threads);
   r.steiner_points = st.placed;
+  r.max_steiner = budget;
   for (const auto& e : st.edges) r.lower_bound += e.lower_bound;
   r.edges = st.edges;
   r.diagnosis = refine2d::diagnose(st);
-  r.status = r.obtuse_boundary_triangles == 0 ? RefineStatus::Converged
+  r.status = r.obtuse_boundary_sides == 0 ? RefineStatus::Converged
              : st.budget_left()                 ? RefineStatus::Stalled
                                                 : RefineStatus::BudgetExhausted;
   if (r.status == RefineStatus::Converged && r.steiner_points == r.lower_bound)

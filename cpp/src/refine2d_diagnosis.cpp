@@ -44,7 +44,7 @@ void keep_top(std::vector<T>& rows) {
 
 }  // namespace
 
-RefineDiagnosis2 diagnose(const State& st) {
+Refine2DDiagnosis diagnose(const State& st) {
   const auto& pts = st.domain.points;
   const int n = st.n_input;
   // Input constraints per input vertex (the refined edges, plus hull edges when the hull is the boundary): the
@@ -95,7 +95,7 @@ RefineDiagnosis2 diagnose(const State& st) {
       ++splits_of_cause[cause];
     }
   }
-  RefineDiagnosis2 d;
+  Refine2DDiagnosis d;
   d.junctions = std::move(junctions);
   keep_top(d.junctions);
   for (auto& [key, row] : angles) d.angles.push_back(row);

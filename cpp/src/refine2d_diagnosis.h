@@ -1,4 +1,4 @@
-// Internal: the provenance of the greedy work queue, for RefineDiagnosis2.
+// Internal: the provenance of the greedy work queue, for Refine2DDiagnosis.
 #pragma once
 #include <algorithm>
 #include <map>
@@ -34,6 +34,6 @@ class State;
 
 // The diagnosis of a finished refinement: Steiner points per junction and per input angle (each point goes to the
 // nearer end of its input edge), and the propagation of the causes. Cost: O(n + Steiner points + segments).
-RefineDiagnosis2 diagnose(const State& st);
+Refine2DDiagnosis diagnose(const State& st);
 
 }  // namespace nonobtuse::refine2d

@@ -5,14 +5,14 @@
 namespace nonobtuse::refine2d {
 namespace {
 
-// shell_parameter: the largest power of two <= t |e - s|, as a parameter of [s, e].
+// shell_at_or_before: the largest power of two <= t |e - s|, as a parameter of [s, e].
 TEST(ConcentricShells, ShellParameterRoundsDownToAPowerOfTwo) {
   const Point s(0, 0), e(6, 0);
-  EXPECT_EQ(shell_parameter(s, e, 1.01 / 6), 1.0 / 6);   // 1.01 -> 1
-  EXPECT_EQ(shell_parameter(s, e, 3.0 / 6), 2.0 / 6);    // 3 -> 2
-  EXPECT_EQ(shell_parameter(s, e, 4.0 / 6), 4.0 / 6);    // a power of two stays
-  EXPECT_EQ(shell_parameter(s, e, 0.3 / 6), 0.25 / 6);   // 0.3 -> 2^-2
-  EXPECT_EQ(shell_parameter(Point(1, 1), Point(4, 5), 0.5), 2.0 / 5);  // |e - s| = 5: 2.5 -> 2
+  EXPECT_EQ(shell_at_or_before(s, e, 1.01 / 6), 1.0 / 6);   // 1.01 -> 1
+  EXPECT_EQ(shell_at_or_before(s, e, 3.0 / 6), 2.0 / 6);    // 3 -> 2
+  EXPECT_EQ(shell_at_or_before(s, e, 4.0 / 6), 4.0 / 6);    // a power of two stays
+  EXPECT_EQ(shell_at_or_before(s, e, 0.3 / 6), 0.25 / 6);   // 0.3 -> 2^-2
+  EXPECT_EQ(shell_at_or_before(Point(1, 1), Point(4, 5), 0.5), 2.0 / 5);  // |e - s| = 5: 2.5 -> 2
 }
 
 // v = (0, 0) with an interface to (6, 0) and one at 10 degrees, in a box; (0, 0)-(6, 0) is acute at v because of

@@ -122,7 +122,7 @@ TEST(Gabriel3DCheck, ThroughputOnSubdividedSphere) {
   EXPECT_TRUE(r.faces.empty());
 }
 
-double volume(const Refine3Result& r);
+double volume(const Refine3DResult& r);
 
 PLC3 cube_plc() {
   PLC3 plc;
@@ -137,7 +137,7 @@ TEST(Gabriel3DRefine, CubeConvergesWithoutSteinerPoints) {
   // A cube's square faces are Gabriel (the fourth corner is on each triangle's sphere) and its edges too (the
   // nearest other corners see an edge at 45 or 90 degrees... at angle 45/54.7 degrees: outside the sphere).
   auto r = refine_gabriel(cube_plc(), {});
-  EXPECT_EQ(r.status, Refine3Status::Converged) << r.diagnosis.stop_reason;
+  EXPECT_EQ(r.status, RefineStatus::Converged) << r.diagnosis.stop_reason;
   EXPECT_EQ(r.steiner_on_segments + r.steiner_on_facets, 0);
   EXPECT_EQ(r.points.size(), 8u);
   EXPECT_EQ(r.boundary_faces.size(), 12u);
@@ -155,7 +155,7 @@ PLC3 flat_tetrahedron_plc() {
   return plc;
 }
 
-double volume(const Refine3Result& r) {
+double volume(const Refine3DResult& r) {
   double sum = 0;
   for (auto [a, b, c, d] : r.tets) {
     auto u = r.points[b], v = r.points[c], w = r.points[d], o = r.points[a];
@@ -180,7 +180,7 @@ TEST(Gabriel3DRefine, ObtusePrismConvergesWithTwoSteinerPoints) {
   plc.triangles = {{0, 2, 1}, {3, 4, 5}, {0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {2, 0, 3}, {2, 3, 5}};
   plc.facet_ids = {0, 1, 2, 2, 3, 3, 4, 4};
   auto r = refine_gabriel(plc, {});
-  EXPECT_EQ(r.status, Refine3Status::Converged) << r.diagnosis.stop_reason;
+  EXPECT_EQ(r.status, RefineStatus::Converged) << r.diagnosis.stop_reason;
   EXPECT_EQ(r.steiner_on_segments, 2);
   EXPECT_EQ(r.steiner_on_facets, 0);
   EXPECT_TRUE(r.certificate.faces.empty());
@@ -195,7 +195,7 @@ TEST(Gabriel3DRefine, ShellSplitsAtPowerOfTwoFromInputVertex) {
   PLC3 plc;
   plc.points = {{0, 0, 0}, {10, 0, 0}, {3, 0.5, 0}, {5, 5, 5}};
   plc.segments = {{0, 1}};
-  Refine3Options o;
+  Refine3DOptions o;
   auto r = refine_gabriel(plc, o);
   ASSERT_GE(r.points.size(), 6u);
   EXPECT_EQ(r.points[4].x, 5.0);
@@ -208,14 +208,14 @@ TEST(Gabriel3DRefine, ShellSplitsAtPowerOfTwoFromInputVertex) {
 
 TEST(Gabriel3DRefine, BudgetIsAStatus) {
   PLC3 plc = flat_tetrahedron_plc();
-  Refine3Options o;
+  Refine3DOptions o;
   o.max_steiner = 1;
   auto r = refine_gabriel(plc, o);
-  EXPECT_EQ(r.status, Refine3Status::BudgetExhausted);
+  EXPECT_EQ(r.status, RefineStatus::BudgetExhausted);
   EXPECT_EQ(r.steiner_on_segments + r.steiner_on_facets, 1);
   o.max_steiner = 1000;
   o.min_length = 0.9;  // edges are sqrt(3) = 1.73 or 1.005 long: any split makes a piece < 0.87 < 0.9
-  EXPECT_EQ(refine_gabriel(plc, o).status, Refine3Status::MinLengthReached);
+  EXPECT_EQ(refine_gabriel(plc, o).status, RefineStatus::MinLengthReached);
 }
 
 }  // namespace
@@ -228,11 +228,11 @@ namespace {
 // Debug builds (NONOBTUSE_CHECK_INVARIANTS) every insertion re-validates the facets' triangulations and the
 // subsegments; here the outcome must be consistent with its certificate.
 TEST(Gabriel3DRefine, FlatTetrahedronRunsToItsBudgetConsistently) {
-  Refine3Options o;
+  Refine3DOptions o;
   o.max_steiner = 200;
   auto r = refine_gabriel(flat_tetrahedron_plc(), o);
   bool clean = r.certificate.faces.empty() && r.certificate.segments.empty();
-  EXPECT_EQ(r.status == Refine3Status::Converged, clean) << r.diagnosis.stop_reason;
+  EXPECT_EQ(r.status == RefineStatus::Converged, clean) << r.diagnosis.stop_reason;
   EXPECT_LE(r.steiner_on_segments + r.steiner_on_facets, 200);
   ASSERT_FALSE(r.diagnosis.smallest_angles.empty());
   EXPECT_EQ(r.diagnosis.smallest_angles[0].kind, "segment-facet");
@@ -264,17 +264,17 @@ TEST(Gabriel3DGreedy, OnePointWhereMidpointNeedsFour) {
   // 0.901): 3.75; [2.5, 3.75] (center 3.125, radius 0.625, v at 0.515): 3.125; then [2.5, 3.125] (v at 0.534 from
   // 2.8125 > 0.3125) and [3.125, 3.75] (v at 0.664 from 3.4375) are free. Four points.
   PLC3 plc = segment_with_one_encroacher({3, 0.5, 0});
-  Refine3Options o;
+  Refine3DOptions o;
   o.split = SplitRule::Greedy;
   auto g = refine_gabriel(plc, o);
-  EXPECT_EQ(g.status, Refine3Status::Converged) << g.diagnosis.stop_reason;
+  EXPECT_EQ(g.status, RefineStatus::Converged) << g.diagnosis.stop_reason;
   ASSERT_EQ(g.steiner_on_segments, 1);
   EXPECT_EQ(g.greedy_splits, 1);
   EXPECT_NEAR(g.points[4].x, 10.0 - 49.25 / 7.0, 1e-12);
   EXPECT_EQ(g.points[4].y, 0.0);
   o.split = SplitRule::Midpoint;
   auto m = refine_gabriel(plc, o);
-  EXPECT_EQ(m.status, Refine3Status::Converged) << m.diagnosis.stop_reason;
+  EXPECT_EQ(m.status, RefineStatus::Converged) << m.diagnosis.stop_reason;
   EXPECT_EQ(m.steiner_on_segments, 4);
   EXPECT_EQ(m.greedy_splits, 0);
 }
@@ -300,7 +300,7 @@ TEST(Gabriel3DGreedy, AcuteInputVertexKeepsShells) {
   plc.points = {{0, 0, 0}, {10, 0, 0}, {10, 2, 0}, {3, 0.5, 0}};
   plc.segments = {{0, 1}, {0, 2}};
   auto g = refine_gabriel(plc, {.split = SplitRule::Greedy});
-  EXPECT_EQ(g.status, Refine3Status::Converged) << g.diagnosis.stop_reason;
+  EXPECT_EQ(g.status, RefineStatus::Converged) << g.diagnosis.stop_reason;
   EXPECT_GT(g.greedy_splits, 0);
   int at_origin = 0;
   for (auto [a, b] : g.segments) {

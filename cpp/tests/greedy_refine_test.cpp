@@ -18,7 +18,7 @@ using testing::run;
 // encroached by q2 ((39 - 58.5)^2 + 30.7^2 = 1322.7): a second point at the foot 39. 2 points.
 TEST(GreedyRefine, Figure3OnePoint) {
   Domain2 d = half_disk({{17, 15}, {39, 30.7}});
-  RefineResult2 g = run(d, RefineStrategy::Greedy);
+  Refine2DResult g = run(d, RefineStrategy::Greedy);
   EXPECT_EQ(g.steiner_points, 1);
   EXPECT_EQ(g.lower_bound, 1);
   EXPECT_EQ(g.optimal, 1);
@@ -31,7 +31,7 @@ TEST(GreedyRefine, Figure3OnePoint) {
 // which is the lower bound (Theorem 2: greedy is optimal for one edge).
 TEST(GreedyRefine, Figure4Walk) {
   Domain2 d = half_disk({{20, 2}, {50, 2}, {80, 2}});
-  RefineResult2 g = run(d, RefineStrategy::Greedy);
+  Refine2DResult g = run(d, RefineStrategy::Greedy);
   ASSERT_EQ(g.steiner_points, 3);
   EXPECT_EQ(g.lower_bound, 3);
   std::size_t n = d.points.size();
@@ -51,7 +51,7 @@ TEST(GreedyRefine, Figure5AvoidsForbiddenInterval) {
   Domain2 d;
   d.points = {{0, 0}, {100, 0}, {90, 20}, {0, 60}};
   d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  RefineResult2 g = run(d, RefineStrategy::Greedy);
+  Refine2DResult g = run(d, RefineStrategy::Greedy);
   ASSERT_EQ(g.steiner_points, 1);
   EXPECT_EQ(g.mesh.points[4].x, 90.0);
   EXPECT_EQ(g.mesh.points[4].y, 0.0);
@@ -68,7 +68,7 @@ TEST(GreedyRefine, LowerBoundNotAttainedUnderInterference) {
   Domain2 d;
   d.points = {{-987, -162}, {-784, -620}, {-316, -949}, {-185, -983}, {995, 101}, {1000, 5}};
   d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 5}, {5, 4}, {4, 0}};
-  RefineResult2 g = run(d, RefineStrategy::Greedy);
+  Refine2DResult g = run(d, RefineStrategy::Greedy);
   EXPECT_EQ(g.lower_bound, 1);
   EXPECT_EQ(g.steiner_points, 2);
   EXPECT_EQ(g.optimal, 1);

@@ -13,7 +13,7 @@ using testing::run;
 // -0.424 at q2); its foot 17 leaves [17, 100] encroached by q2, whose foot 39 is the second point: 2 points where
 // greedy needs 1.
 TEST(ProjectFlip, Figure3TwoPoints) {
-  RefineResult2 r = run(half_disk({{17, 15}, {39, 30.7}}), RefineStrategy::ProjectFlip);
+  Refine2DResult r = run(half_disk({{17, 15}, {39, 30.7}}), RefineStrategy::ProjectFlip);
   EXPECT_EQ(r.steiner_points, 2);
   EXPECT_EQ(r.lower_bound, 1);
 }
@@ -24,7 +24,7 @@ TEST(ProjectFlip, Figure5FootOfTheApex) {
   Domain2 d;
   d.points = {{0, 0}, {100, 0}, {90, 20}, {0, 60}};
   d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  RefineResult2 r = run(d, RefineStrategy::ProjectFlip);
+  Refine2DResult r = run(d, RefineStrategy::ProjectFlip);
   ASSERT_EQ(r.steiner_points, 1);
   EXPECT_EQ(r.mesh.points[4].x, 90.0);
   EXPECT_EQ(r.mesh.points[4].y, 0.0);

@@ -13,14 +13,14 @@ using testing::run;
 // x = 17 and 39, both needed since each q sits right above its foot afterwards (a right angle): 2 points where
 // greedy needs 1. Figure 4: (20,2), (50,2), (80,2) project to 3 feet, the same count as greedy there.
 TEST(ProjectionRefine, Figure3TwoPoints) {
-  RefineResult2 r = run(half_disk({{17, 15}, {39, 30.7}}), RefineStrategy::Projection);
+  Refine2DResult r = run(half_disk({{17, 15}, {39, 30.7}}), RefineStrategy::Projection);
   EXPECT_EQ(r.steiner_points, 2);
   EXPECT_EQ(r.optimal, -1);  // not the bound (1), and the strategy is not greedy
 }
 
 TEST(ProjectionRefine, Figure4ThreeFeet) {
   Domain2 d = half_disk({{20, 2}, {50, 2}, {80, 2}});
-  RefineResult2 r = run(d, RefineStrategy::Projection);
+  Refine2DResult r = run(d, RefineStrategy::Projection);
   ASSERT_EQ(r.steiner_points, 3);
   for (int i = 0; i < 3; ++i) EXPECT_EQ(r.mesh.points[d.points.size() + i].x, 20.0 + 30 * i);  // exact feet
 }

@@ -17,9 +17,9 @@ Domain2 rectangle_with_interface() {
 }
 
 TEST(Refine2dDiagnosis, InterfaceRefinedOnBothSidesWithOneCause) {
-  RefineResult2 r = refine(rectangle_with_interface());
+  Refine2DResult r = refine(rectangle_with_interface());
   EXPECT_EQ(r.status, RefineStatus::Converged);
-  EXPECT_EQ(r.obtuse_boundary_triangles, 0);
+  EXPECT_EQ(r.obtuse_boundary_sides, 0);
   EXPECT_EQ(r.steiner_points, 2);
   EXPECT_EQ(r.lower_bound, 2);
   // Both sides of the interface are violated at the start; the sweep of the first one refines both, so the

@@ -27,9 +27,9 @@ inline Domain2 half_disk(const std::vector<Point2>& inner) {
 }
 
 // Refines and, when converged, expects the exact certificate to be clean.
-inline RefineResult2 run(const Domain2& d, RefineStrategy s, long long budget = -1) {
-  RefineResult2 r = refine(d, {s, budget});
-  if (r.status == RefineStatus::Converged) EXPECT_EQ(r.obtuse_boundary_triangles, 0);
+inline Refine2DResult run(const Domain2& d, RefineStrategy s, long long budget = -1) {
+  Refine2DResult r = refine(d, {s, budget});
+  if (r.status == RefineStatus::Converged) EXPECT_EQ(r.obtuse_boundary_sides, 0);
   return r;
 }
 

@@ -25,8 +25,9 @@ class RefineResult:
     mesh:   the constrained Delaunay triangulation of the refined domain (input points first, then the
             Steiner points); ``mesh.stats`` is ``stats``.
     stats:  ``status``, ``strategy``, ``steiner_points`` (int), ``lower_bound`` (int), ``optimal`` (True,
-            False or None when unknown), ``seconds`` (float), ``obtuse_boundary_triangles`` (int, the exact
-            certificate of ``mesh``: 0 when converged), ``edges``: one dict per input boundary edge
+            False or None when unknown), ``seconds`` (float), ``obtuse_boundary_sides`` (int, the exact
+            certificate of ``mesh``: constraint sides whose triangle is obtuse opposite them, 0 when
+            converged), ``max_steiner`` (int, the budget used), ``edges``: one dict per input boundary edge
             ``{"edge": [a, b], "steiner_points": k, "lower_bound": l}`` (a, b input point indices, the
             domain on the left of a -> b; an interface or dangling segment, with the domain on both sides,
             once as a < b), ``diagnosis``: ``junctions`` (at most 10 dicts ``vertex, constraints,
@@ -63,6 +64,14 @@ def _edge_stats(rows: np.ndarray) -> list[dict[str, Any]]:
             gc.enable()
 
 
+def default_steiner_budget(n_points: int) -> int:
+    """The Steiner budget :func:`refine` uses when ``max_steiner`` is None, for ``n_points`` input points: the
+    core's rule (``default_steiner_budget`` in ``cpp/include/nonobtuse/refine2d.h``, which says why)."""
+    from nonobtuse import _core
+
+    return int(_core.default_steiner_budget(n_points))
+
+
 def refine(
     domain: Domain, strategy: str = "greedy", max_steiner: int | None = None, threads: int = 2
 ) -> RefineResult:
@@ -78,14 +87,15 @@ def refine(
     strategy:    ``"greedy"`` (sensitive Greedy-Refine: the longest empty subsegment from one end, never
                  inside another subsegment's diametral disk; optimal for one edge and for convex polygons),
                  ``"project-flip"`` or ``"projection"`` (the paper's baselines).
-    max_steiner: Steiner budget; None: ``10 n + 1000`` for n input points. When it is spent the partial
-                 mesh is returned with status ``"budget_exhausted"``.
+    max_steiner: Steiner budget; None: :func:`default_steiner_budget` of the number of input points
+                 (``stats["max_steiner"]`` is the budget used). When it is spent the partial mesh is
+                 returned with status ``"budget_exhausted"``.
     threads:     1, or 2 and more: the passes over the whole mesh of large inputs (the lower bound, the
                  certificate) run on two threads. The result is the same for any value.
 
     Guarantees: Steiner points lie on constraint subsegments (exactly on the line when a double point there
     exists, else a few ulps off it); the returned mesh is checked exactly on every side of every constraint
-    (``stats["obtuse_boundary_triangles"]`` counts the obtuse sides: 0 whenever the status is
+    (``stats["obtuse_boundary_sides"]`` counts the obtuse sides: 0 whenever the status is
     ``"converged"``). ``lower_bound`` is the sum over input constraint edges of the single-edge greedy count
     against the input vertices each subsegment sees (from both sides of an interface; exact visibility, so
     a vertex hidden behind a dangling segment does not count): no refinement placing Steiner points on the
@@ -119,10 +129,11 @@ def refine(
         "status": r["status"],
         "strategy": strategy,
         "steiner_points": int(r["steiner_points"]),
+        "max_steiner": int(r["max_steiner"]),
         "lower_bound": int(r["lower_bound"]),
         "optimal": r["optimal"],
         "seconds": float(r["seconds"]),
-        "obtuse_boundary_triangles": int(r["obtuse_boundary_triangles"]),
+        "obtuse_boundary_sides": int(r["obtuse_boundary_sides"]),
         "edges": _edge_stats(np.asarray(r["edges"]).reshape(-1, 4)),
         "diagnosis": r["diagnosis"],
     }

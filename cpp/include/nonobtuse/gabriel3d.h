@@ -54,22 +54,26 @@ struct PLC3 {
 // sphere holds none of the subsegment's current encroachers (the 2D paper's Greedy-Refine), with the shells rule
 // where that prefix is short (see refine_gabriel).
 enum class SplitRule : std::int8_t { Midpoint = 0, Shells = 1, Greedy = 2 };
-enum class Refine3Status : std::int8_t { Converged = 0, BudgetExhausted = 1, MinLengthReached = 2, Stalled = 3 };
 
-struct Refine3Progress {
+struct Refine3DProgress {
   long steiner_points = 0;
   long encroached_segments = 0;  // found by the last scan (or exact check of the Delaunay mesh)
   long encroached_facets = 0;
   double seconds = 0.0;
 };
 
-struct Refine3Options {
-  long max_steiner = 10000;
-  double min_length = 0.0;   // no split may create a subsegment (or an edge to a facet Steiner point) shorter
+struct Refine3DOptions {
+  // Steiner budget; < 0 selects 10 n + 10,000 for n PLC points (real CAD parts need about 2-5 n).
+  long max_steiner = -1;
+  // No split may create a subsegment (or an edge to a facet Steiner point) shorter; 0 turns it off; < 0 selects
+  // 1e-6 of the diagonal of the PLC points' bounding box (converged corpus runs never come near it, their smallest
+  // subsegments are >= 8e-5 of it; runs caught in a small-angle cascade end at it with MinLengthReached instead
+  // of spinning down to 1e-17 subsegments until the budget or a stall).
+  double min_length = -1.0;
   double time_limit = 60.0;  // seconds
   SplitRule split = SplitRule::Shells;
   long progress_every = 1000;  // insertions between progress calls; one more after each exact check of the mesh
-  std::function<void(const Refine3Progress&)> progress;
+  std::function<void(const Refine3DProgress&)> progress;
 };
 
 // One small angle of the input, in degrees (floating point: a diagnosis, not a decision).
@@ -85,21 +89,23 @@ struct SteinerCount {
   long count = 0;
 };
 
-struct Refine3Diagnosis {
+struct Refine3DDiagnosis {
   std::vector<InputAngle> smallest_angles;   // the few smallest of each kind, ascending
   std::vector<SteinerCount> per_vertex;      // Steiner points by nearest input vertex, top few
   std::vector<SteinerCount> per_segment;     // Steiner points on each input segment, top few
   std::string stop_reason;
 };
 
-struct Refine3Result {
+struct Refine3DResult {
   std::vector<Point3> points;  // PLC points first, in input order, then Steiner points
   std::vector<Tetrahedron> tets;
   std::vector<Triangle> boundary_faces;  // oriented away from the tet behind them
   std::vector<int> face_markers;         // input facet id of each boundary face
   std::vector<Segment> segments;         // subsegments of the PLC segments and of the facets' boundary edges
   std::vector<double> tet_regions;
-  Refine3Status status = Refine3Status::Stalled;
+  RefineStatus status = RefineStatus::Stalled;
+  long max_steiner = 0;     // the limits the run used (options' defaults resolved)
+  double min_length = 0.0;
   long steiner_on_segments = 0;
   long greedy_splits = 0;  // of steiner_on_segments, placed by the greedy rule (split == Greedy)
   long steiner_on_facets = 0;
@@ -109,7 +115,7 @@ struct Refine3Result {
   // "built", or why tets is empty: when a stop leaves the Delaunay tetrahedralization not conforming to some facet
   // (its interior leaks out), boundary_faces are the subfacets instead (oriented like the input's triangles).
   std::string volume_mesh = "built";
-  Refine3Diagnosis diagnosis;
+  Refine3DDiagnosis diagnosis;
 };
 
 // Ruppert-like repair: splits encroached subsegments (midpoint, concentric shells around input vertices, or greedy) and
@@ -124,8 +130,6 @@ struct Refine3Result {
 // edges count as segments (their subsegments are returned and checked).
 // Deterministic. Throws InvalidInput on malformed input (index out of range, duplicate points, degenerate
 // triangles, facet edges crossing or passing through a vertex, facet vertices coinciding in the facet's plane).
-Refine3Result refine_gabriel(const PLC3& plc, const Refine3Options& options);
-
-const char* to_string(Refine3Status status);
+Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& options);
 
 }  // namespace nonobtuse

@@ -1,7 +1,8 @@
 // Nonobtuse boundary refinement: Steiner points on boundary edges so that every boundary triangle of the
 // constrained Delaunay triangulation is nonobtuse at the angle opposite its boundary edge.
 #pragma once
-#include <string>
+#include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "nonobtuse/refine2d_diagnosis.h"
@@ -15,11 +16,7 @@ enum class RefineStrategy : std::int8_t {
   Projection = 2,   // baseline (paper section 4.1): foot of every encroaching visible vertex, repeated
 };
 
-// Stalled: budget left, but some violated side admits no double split point that keeps its neighbouring
-// triangles valid (even after the midpoint rescue); the partial mesh is returned, as for BudgetExhausted.
-enum class RefineStatus : std::int8_t { Converged = 0, BudgetExhausted = 1, Stalled = 2 };
-
-struct RefineOptions {
+struct Refine2DOptions {
   RefineStrategy strategy = RefineStrategy::Greedy;
   // Maximum number of Steiner points; < 0 selects default_steiner_budget(n) for n input points.
   long long max_steiner = -1;
@@ -36,17 +33,18 @@ struct BoundaryEdgeStats {
   int lower_bound = 0;     // single-edge Greedy-Refine against the input vertices (see lower_bound_per_edge)
 };
 
-struct RefineResult2 {
+struct Refine2DResult {
   Mesh2 mesh;  // the constrained Delaunay triangulation of the refined domain (input points first)
-  RefineStatus status = RefineStatus::Converged;
+  RefineStatus status = RefineStatus::Converged;  // never MinLengthReached (2D has no length limit)
   long long steiner_points = 0;
+  long long max_steiner = 0;  // the budget used (options.max_steiner, its default resolved)
   long long lower_bound = 0;
   int optimal = -1;  // 1 certainly optimal, 0 certainly not, -1 unknown (see refine's docstring)
-  // Exact certificate of `mesh` as returned: boundary sides whose triangle is obtuse opposite the boundary
-  // edge. 0 whenever status == Converged.
-  long long obtuse_boundary_triangles = 0;
+  // Exact certificate of `mesh` as returned: constraint sides (each side of an interface or dangling segment on
+  // its own) whose triangle is obtuse opposite the constrained edge. 0 whenever status == Converged.
+  long long obtuse_boundary_sides = 0;
   std::vector<BoundaryEdgeStats> edges;
-  RefineDiagnosis2 diagnosis;  // where the Steiner points went (junctions, input angles, propagation)
+  Refine2DDiagnosis diagnosis;  // where the Steiner points went (junctions, input angles, propagation)
   double seconds = 0.0;
 };
 
@@ -58,7 +56,7 @@ long long default_steiner_budget(std::size_t n_points);
 
 // Refines every constraint of `domain` (validated by the caller): boundary segments (the domain on one side, or
 // the convex hull when domain.convex_hull_boundary) on their domain side, interfaces and dangling segments (the
-// domain on both sides) on both sides, each side nonobtuse on its own (issue 4). Steiner points go only on
+// domain on both sides) on both sides, each side nonobtuse on its own. Steiner points go only on
 // constraint subsegments; each is a rounded construction checked by exact predicates (see greedy_refine.cpp).
 // The result's certificate is the exact check of the returned mesh (every side of every constraint);
 // `diagnosis` says which junctions and input angles drew the points and how far one violation propagated.
@@ -69,13 +67,12 @@ long long default_steiner_budget(std::size_t n_points);
 // Throws InvalidInput when the domain cannot be triangulated (crossing constraints, no triangle).
 // Cost: O(n log n) to triangulate, plus per Steiner point the walk over the triangles meeting the diametral
 // disk of the refined subsegment.
-RefineResult2 refine(const Domain2& domain, const RefineOptions& options = {});
+Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options = {});
 
 // Benchmark peer: the Steiner points CGAL::make_conforming_Gabriel_2 adds to the domain's constrained Delaunay
 // triangulation (every constrained edge Gabriel on both sides, outside the domain included).
 long long conforming_gabriel_steiner_points(const Domain2& domain);
 
-std::string to_string(RefineStrategy s);
-std::string to_string(RefineStatus s);
+const char* to_string(RefineStrategy s);
 
 }  // namespace nonobtuse

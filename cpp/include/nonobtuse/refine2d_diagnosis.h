@@ -1,4 +1,4 @@
-// Where the Steiner points of a 2D refinement went (issue 4): junctions, input angles, propagation.
+// Where the Steiner points of a 2D refinement went: junctions, input angles, propagation.
 #pragma once
 #include <vector>
 
@@ -22,7 +22,7 @@ struct InputAngleStats {
   long long steiner_points = 0;
 };
 
-struct RefineDiagnosis2 {
+struct Refine2DDiagnosis {
   std::vector<JunctionStats> junctions;  // at most 10, with Steiner points, by decreasing count (then index)
   std::vector<InputAngleStats> angles;   // at most 10, likewise
   int initial_violations = 0;  // violated subsegments met first in the queue with no cause: one cause each

@@ -52,6 +52,16 @@ struct Mesh2 {
 // Exact classification of an angle (CGAL::angle on exact predicates).
 enum class AngleClass : std::int8_t { Acute = 0, Right = 1, Obtuse = 2 };
 
+// Why a refinement (2D refine, 3D refine_gabriel) stopped. Converged: the exact check of the returned mesh passes.
+// BudgetExhausted: the Steiner budget (or 3D's time_limit) is spent. MinLengthReached (3D only): a split would
+// create an edge shorter than min_length. Stalled: budget left, but no split that passes the exact checks is
+// possible (2D: some violated side admits no double split point that keeps its neighbouring triangles valid, even
+// after the midpoint rescue). Every stop but Converged returns the partial mesh.
+enum class RefineStatus : std::int8_t { Converged = 0, BudgetExhausted = 1, MinLengthReached = 2, Stalled = 3 };
+
+// "converged", "budget_exhausted", "min_length_reached", "stalled".
+const char* to_string(RefineStatus status);
+
 // Bad input found by the core; the message names the problem and where (indices, coordinates).
 class InvalidInput : public std::invalid_argument {
  public:

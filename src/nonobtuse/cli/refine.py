@@ -7,7 +7,7 @@ import json
 import sys
 
 from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK
-from nonobtuse.refine import STRATEGIES
+from nonobtuse.refine import STRATEGIES, default_steiner_budget
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -21,7 +21,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("input", help="domain file")
     p.add_argument("-o", "--output", required=True, help="mesh file; the format follows the suffix")
     p.add_argument("--strategy", choices=STRATEGIES, default="greedy", help="default: greedy")
-    p.add_argument("--max-steiner", type=int, default=None, help="Steiner budget (default: 10 n + 1000)")
+    b0, b1 = default_steiner_budget(0), default_steiner_budget(1)  # the core's rule, affine in n
+    p.add_argument("--max-steiner", type=int, default=None,
+                   help=f"Steiner budget (default: {b1 - b0} n + {b0} for n input points)")
     p.add_argument("--threads", type=int, default=2,
                    help="threads for the whole-mesh passes of large inputs (default 2; same output)")
     p.add_argument("--json", action="store_true", help="print the statistics as JSON on stdout")

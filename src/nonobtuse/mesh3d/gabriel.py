@@ -15,6 +15,7 @@ from typing import Any, Callable, Literal
 import numpy as np
 
 from nonobtuse import _core
+from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
 Status = Literal["converged", "budget_exhausted", "min_length_reached", "stalled"]
@@ -136,20 +137,6 @@ def _print_progress(steiner: int, segments: int, facets: int, seconds: float) ->
     )
 
 
-def default_steiner_budget(n_points: int) -> int:
-    """The default Steiner budget of :func:`refine_gabriel` for a PLC of n_points vertices: 10 n + 10,000."""
-    return 10 * n_points + 10_000
-
-
-def default_min_length(points: np.ndarray) -> float:
-    """The default min_length of :func:`refine_gabriel`: 1e-6 of the diagonal of the bounding box of `points`
-    (n, 3). On the corpus the converged runs never come near it (their smallest subsegments are >= 8e-5 of the
-    diagonal) and give the same meshes with it; runs caught in a small-angle cascade end at it with
-    min_length_reached instead of spinning down to 1e-17 subsegments until the budget or a stall."""
-    p = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-    return 1e-6 * float(np.linalg.norm(p.max(axis=0) - p.min(axis=0))) if len(p) else 0.0
-
-
 def refine_gabriel(
     plc: PLC,
     max_steiner: int | None = None,
@@ -171,12 +158,13 @@ def refine_gabriel(
     stats["greedy_splits"] counts the greedy points), then encroached subfacets at their circumcenter, unless
     it encroaches a subsegment of the facet or lies outside the facet, in which case that subsegment is
     split. The facets' boundary edges
-    count as segments. Stops at max_steiner (default_steiner_budget(n) when None: 10 n + 10,000 for n input
-    points; real CAD parts need about 2-5 n), time_limit (seconds), min_length (no split may create a shorter
-    edge; default_min_length(points) when None: 1e-6 of the bounding box diagonal; 0 turns it off) or when
-    stalled; the status says which. time_limit bounds the refinement and the exact check of
-    the result (not the final Delaunay tetrahedralization, O(n log n)); rows the check did not reach are
-    counted in stats["unchecked_faces"] / ["unchecked_segments"].
+    count as segments. Stops at max_steiner (None: the core's default, ``Refine3DOptions::max_steiner`` in
+    ``gabriel3d.h``, linear in the number of input points), time_limit (seconds), min_length (no split may
+    create a shorter edge; None: the core's default, a small fraction of the bounding box diagonal; 0 turns it
+    off) or when stalled; the status says which, and stats["max_steiner"] / ["min_length"] the limits used.
+    time_limit bounds the refinement and the exact check of the result (not the final Delaunay
+    tetrahedralization, O(n log n)); rows the check did not reach are counted in
+    stats["unchecked_faces"] / ["unchecked_segments"].
     progress: True prints a line to stderr every progress_every insertions and after every exact check of the
     Delaunay mesh (once per repair round); a callable receives (steiner_points, encroached_subsegments,
     encroached_subfacets, seconds), the counts of the last scan or check.
@@ -186,7 +174,9 @@ def refine_gabriel(
     edges).
     """
     callback = _print_progress if progress is True else (progress or None)
-    min_length = default_min_length(plc.points) if min_length is None else float(min_length)
+    for name, value in (("max_steiner", max_steiner), ("min_length", min_length)):
+        if value is not None and not value >= 0:  # negative: the core would read it as "use the default"
+            raise InvalidInputError(f"{name} must be >= 0 or None, got {value!r}")
     d = _core.refine_gabriel(
         np.ascontiguousarray(np.asarray(plc.points, dtype=np.float64).reshape(-1, 3)),
         _index_array(plc.triangles, 3),
@@ -194,8 +184,8 @@ def refine_gabriel(
         _index_array(plc.segments, 2),
         np.ascontiguousarray(np.asarray(plc.holes, dtype=np.float64).reshape(-1, 3)),
         np.ascontiguousarray(np.asarray(plc.regions, dtype=np.float64).reshape(-1, 4)),
-        int(default_steiner_budget(len(plc.points)) if max_steiner is None else max_steiner),
-        float(min_length),
+        -1 if max_steiner is None else int(max_steiner),
+        -1.0 if min_length is None else float(min_length),
         float(time_limit),
         split,
         int(progress_every),
@@ -214,7 +204,8 @@ def refine_gabriel(
         "unchecked_faces": d["certificate"]["unchecked_faces"],
         "unchecked_segments": d["certificate"]["unchecked_segments"],
         "smallest_subsegment": d["smallest_subsegment"],
-        "min_length": min_length,
+        "max_steiner": d["max_steiner"],
+        "min_length": d["min_length"],
         "volume_mesh": d["volume_mesh"],
         "seconds": d["seconds"],
         "diagnosis": d["diagnosis"],
