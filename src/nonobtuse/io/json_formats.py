@@ -15,7 +15,10 @@ from nonobtuse.io._files import atomic_text, exact_float, read_text
 from nonobtuse.mesh import Mesh
 
 DOMAIN_KEYS = {"points", "segments", "holes", "regions", "convex_hull"}
-MESH_KEYS = {"points", "triangles", "segments", "input_points", "input_segments", "regions", "stats"}
+MESH_KEYS = {
+    "points", "triangles", "segments", "input_points", "input_segments", "regions", "point_markers",
+    "segment_markers", "stats",
+}  # fmt: skip
 
 
 def read_json(path: Path) -> Any:
@@ -158,10 +161,16 @@ def mesh_from_json(path: Path, data: Any) -> Mesh:
         regions = rows(data["regions"], 0, float, f"{path}: regions")
         if len(regions) != len(triangles):
             raise InvalidInputError(f"{path}: {len(regions)} regions for {len(triangles)} triangles")
+    markers = {}
+    for key, n in (("point_markers", len(points)), ("segment_markers", len(segments))):
+        if data.get(key) is not None:
+            markers[key] = rows(data[key], 0, int, f"{path}: {key}")
+            if len(markers[key]) != n:
+                raise InvalidInputError(f"{path}: {len(markers[key])} {key} for {n} {key.split('_')[0]}s")
     stats = data.get("stats", {})
     if not isinstance(stats, dict):
         raise InvalidInputError(f"{path}: 'stats' must be an object")
-    return Mesh(points, triangles, segments, input_points, input_segments, regions, stats)
+    return Mesh(points, triangles, segments, input_points, input_segments, regions, stats, **markers)
 
 
 def write_mesh_json(mesh: Mesh, path: Path) -> None:
@@ -176,6 +185,9 @@ def write_mesh_json(mesh: Mesh, path: Path) -> None:
     }
     if mesh.regions is not None:
         data["regions"] = np.asarray(mesh.regions, dtype=np.float64).tolist()
+    for key in ("point_markers", "segment_markers"):
+        if getattr(mesh, key) is not None:
+            data[key] = np.asarray(getattr(mesh, key), dtype=np.int64).tolist()
     data["stats"] = mesh.stats
     with atomic_text(path) as f:
         json.dump(data, f, allow_nan=False, separators=(",", ":"), default=_plain)
