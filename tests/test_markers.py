@@ -206,3 +206,150 @@ def load_domain_like(points, segments, segment_markers) -> Domain:
     from nonobtuse.validate import validate_domain
 
     return validate_domain(Domain(points, segments, segment_markers=segment_markers))
+
+
+# ---- every format, with markers and regions -----------------------------------------------------------
+
+
+def marked_mesh(float_regions: bool):
+    """A refined mesh of a small domain with an interface, two regions, vertex and segment markers."""
+    d = Domain(
+        [[0, 0], [3, 0], [3, 1], [0, 1], [1.5, 0], [1.5, 1], [0.1, 0.9]],
+        [[0, 4], [4, 1], [1, 2], [2, 5], [5, 3], [3, 0], [4, 5]],
+        regions=[[0.5, 0.5, 0.25 if float_regions else 2], [2.5, 0.5, 1 / 3 if float_regions else 7]],
+        point_markers=[0, 0, 0, 0, 0, 0, 9],
+        segment_markers=[11, 12, 13, 14, 15, 16, 0],
+    )
+    from nonobtuse.validate import validate_domain
+
+    mesh = nonobtuse.refine(validate_domain(d)).mesh
+    assert mesh.steiner_points > 0 and 0 in mesh.segment_markers and 9 in mesh.point_markers
+    return mesh
+
+
+def assert_same_markers(back, mesh) -> None:
+    assert np.array_equal(back.points, mesh.points)
+    assert np.array_equal(back.triangles, mesh.triangles) and np.array_equal(back.segments, mesh.segments)
+    assert np.array_equal(back.regions, mesh.regions) and back.regions.dtype == np.float64
+    assert np.array_equal(back.segment_markers, mesh.segment_markers)
+    assert np.array_equal(back.point_markers, mesh.point_markers)
+    assert back.segment_markers.dtype == back.point_markers.dtype == np.int64
+
+
+@pytest.mark.parametrize("suffix", [".json", ".node", ".ele", ".poly", ".vtu", ".msh"])
+@pytest.mark.parametrize("float_regions", [False, True])
+def test_every_format_round_trips_markers_and_regions(tmp_path, suffix, float_regions):
+    from nonobtuse.io import is_mesh_file, read_mesh, write_mesh
+
+    mesh = marked_mesh(float_regions)
+    path = tmp_path / f"m{suffix}"
+    written = write_mesh(mesh, path)
+    assert sorted(tmp_path.iterdir()) == sorted(written)
+    assert is_mesh_file(path)
+    assert_same_markers(read_mesh(path), mesh)
+
+
+def test_msh_maps_float_regions_to_tags_and_writes_the_map(tmp_path):
+    import json
+
+    import meshio
+
+    from nonobtuse.io import write_mesh
+
+    mesh = marked_mesh(float_regions=True)
+    written = write_mesh(mesh, tmp_path / "m.msh")
+    assert [p.name for p in written] == ["m.msh", "m.msh.regions.json"]
+    table = json.loads(written[1].read_text())["tag_to_region"]
+    assert table == {"1": 0.25, "2": 1 / 3}
+    raw = meshio.read(written[0])
+    tags = raw.cell_data["gmsh:physical"]
+    assert sorted(set(tags[0].tolist())) == [1, 2]  # triangles: region tags
+    assert np.array_equal(tags[1], mesh.segment_markers)  # lines: segment markers
+    back = nonobtuse.io.read_mesh(written[0])
+    written[1].unlink()  # without the map the tags are the regions
+    assert np.array_equal(nonobtuse.io.read_mesh(written[0]).regions, tags[0])
+    assert set(back.regions.tolist()) == {0.25, 1 / 3}
+
+
+def test_meshio_objects_round_trip():
+    mesh = marked_mesh(float_regions=True)
+    m = mesh.to_meshio()
+    assert m.cells[0].type == "triangle" and m.cells[1].type == "line"
+    assert np.array_equal(m.point_data["point_marker"], mesh.point_markers)
+    assert_same_markers(nonobtuse.Mesh.from_meshio(m), mesh)
+
+
+def test_from_meshio_reads_gmsh_physical_tags():
+    import meshio
+
+    points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]])
+    physical = [np.array([4]), np.array([8, 9])]
+    m = meshio.Mesh(points, [("triangle", [[0, 1, 2]]), ("line", [[0, 1], [1, 2]])],
+                    cell_data={"gmsh:physical": physical})  # fmt: skip
+    mesh = nonobtuse.Mesh.from_meshio(m)
+    assert mesh.regions.tolist() == [4.0] and mesh.segment_markers.tolist() == [8, 9]
+    assert mesh.point_markers is None
+    with pytest.raises(InvalidInputError, match="not planar"):
+        nonobtuse.Mesh.from_meshio(meshio.Mesh(points + [0, 0, 1], [("triangle", [[0, 1, 2]])]))
+
+
+# Triangle's own output for a unit square split by its diagonal, 0-based ids as `triangle -pz` writes them,
+# with comments and an attribute column.
+NODE = "# square\n4 2 0 1\n0 0 0 1\n1 1 0 2\n2 1 1 1\n3 0 1 0\n"
+ELE = "2 3 1\n0 0 1 2 5.5\n1 0 2 3 -1  # second\n"
+POLY = "0 2 0 1\n4 1\n0 0 1 7\n1 1 2 8\n2 2 3 9\n3 3 0 9\n0\n"
+
+
+def test_triangle_output_is_read_as_a_mesh_not_retriangulated(tmp_path):
+    from nonobtuse.io import is_mesh_file, load_domain, read_mesh
+
+    (tmp_path / "sq.1.node").write_text(NODE)
+    (tmp_path / "sq.1.ele").write_text(ELE)
+    for name in ("sq.1.ele", "sq.1.node"):
+        assert is_mesh_file(tmp_path / name)
+        mesh = read_mesh(tmp_path / name)
+        assert mesh.triangles.tolist() == [[0, 1, 2], [0, 2, 3]] and mesh.regions.tolist() == [5.5, -1.0]
+        assert mesh.point_markers.tolist() == [1, 2, 1, 0]
+        # no .poly: the segments are the edges with one triangle, without markers
+        assert mesh.segments.tolist() == [[0, 1], [0, 3], [1, 2], [2, 3]] and mesh.segment_markers is None
+    (tmp_path / "sq.1.poly").write_text(POLY)
+    mesh = read_mesh(tmp_path / "sq.1.poly")
+    assert mesh.segments.tolist() == [[0, 1], [1, 2], [2, 3], [3, 0]]
+    assert mesh.segment_markers.tolist() == [7, 8, 9, 9]
+    assert len(load_domain(tmp_path / "sq.1.node").points) == 4  # asked for a domain: the point set
+    (tmp_path / "lone.node").write_text(NODE)
+    assert not is_mesh_file(tmp_path / "lone.node")
+    with pytest.raises(InvalidInputError, match="needs lone.ele beside it"):
+        read_mesh(tmp_path / "lone.node")
+
+
+@pytest.mark.parametrize(
+    ("ele", "message"),
+    [
+        ("2 6 0\n", "only 3-node triangles"),
+        ("1 3 0\n0 0 1 4\n", "triangle corner 4 does not exist"),
+        ("1 3 1\n0 0 1 2 x\n", "the triangle attribute must be a number"),
+        ("2 3 0\n0 0 1 2\n", "ends early"),
+    ],
+)
+def test_bad_ele_files_name_the_line(tmp_path, ele, message):
+    from nonobtuse.io import read_mesh
+
+    (tmp_path / "a.node").write_text(NODE)
+    (tmp_path / "a.ele").write_text(ele)
+    with pytest.raises(InvalidInputError, match=message) as e:
+        read_mesh(tmp_path / "a.ele")
+    assert "a.ele:" in str(e.value)
+
+
+def test_json_domain_markers_are_read(tmp_path):
+    import json
+
+    path = tmp_path / "d.json"
+    path.write_text(json.dumps({"points": [[0, 0], [1, 0], [0, 1]], "segments": [[0, 1], [1, 2], [2, 0]],
+                                "point_markers": [1, 2, 3], "segment_markers": [4, 5, 6]}))  # fmt: skip
+    d = load_domain(path)
+    assert d.point_markers.tolist() == [1, 2, 3] and d.segment_markers.tolist() == [4, 5, 6]
+    path.write_text(json.dumps({"points": [[0, 0], [1, 0], [0, 1]], "segment_markers": [4]}))
+    with pytest.raises(InvalidInputError, match="1 segment_markers for 0 segments"):
+        load_domain(path)

@@ -12,6 +12,8 @@ is read as JSON):
        "segments": [[i, j], ...],      # boundary loops and interior constraints (interfaces, cracks, wells)
        "holes": [[x, y], ...],         # seeds of removed regions
        "regions": [[x, y, attr], ...], # the region around the seed gets the attribute (e.g. a material id)
+       "point_markers": [m, ...],      # boundary marker (integer) per point, as Triangle's vertex markers
+       "segment_markers": [m, ...],    # boundary marker per segment (e.g. a boundary condition id)
        "convex_hull": false}           # true: the domain is the convex hull (Triangle -c); absent: decided
 
 Meshes (:func:`write_mesh`, :func:`read_mesh`), chosen by suffix:

@@ -169,8 +169,7 @@ def write_triangle(mesh: Mesh, path: Path) -> list[Path]:
     those of the .node; every constrained subsegment, with a marker column when the mesh has segment
     markers; no holes), ids 1-based, coordinates in shortest round-trip form (float64 exact). Each file
     atomically. Returns the paths."""
-    stem = path.with_suffix("")
-    node, ele, poly = (stem.with_suffix(s) for s in (".node", ".ele", ".poly"))
+    node, ele, poly = triangle_mesh_files(path)
     with atomic_text(node) as f:
         f.write(f"# written by nonobtuse\n{len(mesh.points)} 2 0 {int(mesh.point_markers is not None)}\n")
         markers = _column(mesh.point_markers, len(mesh.points))
@@ -198,9 +197,11 @@ def _column(values: np.ndarray | None, n: int) -> list[str]:
 
 
 def triangle_mesh_files(path: Path) -> tuple[Path, Path, Path]:
-    """The ``.node``, ``.ele`` and ``.poly`` files of the mesh that ``path`` (any of the three) names."""
+    """The ``.node``, ``.ele`` and ``.poly`` files of the mesh that ``path`` (any of the three) names; the
+    stem may hold dots (Triangle's ``la.1.ele``)."""
     stem = path.with_suffix("")
-    return stem.with_suffix(".node"), stem.with_suffix(".ele"), stem.with_suffix(".poly")
+    node, ele, poly = (stem.with_name(stem.name + s) for s in (".node", ".ele", ".poly"))
+    return node, ele, poly
 
 
 def read_triangle_mesh(path: Path) -> Mesh:
