@@ -152,9 +152,16 @@ def check_mesh(mesh: Mesh) -> CheckReport:
                        triangles=len(mesh.triangles), source=str(mesh.stats.get("source", "<memory>")))
 
 
-def check(domain_or_mesh: Domain | Mesh) -> CheckReport:
+def check(domain_or_mesh: Domain | Mesh | dict[str, Any]) -> CheckReport:
     """Exact nonobtuse-boundary check. A :class:`Domain` is validated and triangulated first (constrained
-    Delaunay, no Steiner points); a :class:`Mesh` is checked as given. See :func:`check_mesh`."""
+    Delaunay, no Steiner points); a :class:`Mesh` is checked as given. A ``triangle`` package dict
+    (:mod:`nonobtuse.triangle_dict`) is a mesh when it has ``triangles`` (e.g. ``triangle.triangulate``'s
+    output), else a domain. See :func:`check_mesh`."""
+    if isinstance(domain_or_mesh, dict):
+        from nonobtuse.triangle_dict import mesh_from_dict, validated_domain
+
+        d = domain_or_mesh
+        return check_mesh(mesh_from_dict(d) if "triangles" in d else triangulate(validated_domain(d)))
     if isinstance(domain_or_mesh, Domain):
         return check_mesh(triangulate(domain_or_mesh))
     return check_mesh(domain_or_mesh)

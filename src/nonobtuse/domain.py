@@ -6,6 +6,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from nonobtuse.errors import InvalidInputError
+
 
 def _points(a, name: str) -> np.ndarray:
     arr = np.asarray(a, dtype=np.float64)
@@ -53,6 +55,10 @@ class Domain:
     origin:   file lines of every item (set by the readers in :mod:`nonobtuse.io`), or None.
     repairs:  what validation changed (segments split at points lying on them, duplicate segments dropped),
               one sentence each; empty when the domain was used as given.
+    point_markers:   (n,) int64 boundary marker per point (Triangle's vertex markers), or None.
+    segment_markers: (m,) int64 boundary marker per segment (Triangle's segment markers, e.g. a boundary
+              condition id), or None. Validation carries them through its repairs (a split segment's pieces
+              keep its marker); refinement and the writers carry them on (:mod:`nonobtuse.markers`).
     """
 
     points: np.ndarray
@@ -63,6 +69,8 @@ class Domain:
     source: str = "<memory>"
     origin: SourceMap | None = None
     repairs: list[str] = field(default_factory=list)
+    point_markers: np.ndarray | None = None
+    segment_markers: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         self.points = _points(self.points, "points")
@@ -71,3 +79,18 @@ class Domain:
         self.holes = _points(self.holes, "holes")
         reg = np.asarray(self.regions, dtype=np.float64)
         self.regions = np.ascontiguousarray(reg.reshape(-1, 3) if reg.size else np.zeros((0, 3), np.float64))
+        self.point_markers = marker_array(self.point_markers, len(self.points), "point_markers")
+        self.segment_markers = marker_array(self.segment_markers, len(self.segments), "segment_markers")
+
+
+def marker_array(a, n: int, name: str) -> np.ndarray | None:
+    """``a`` as (n,) int64 (a Triangle-style (n, 1) column is accepted), or None."""
+    if a is None:
+        return None
+    arr = np.asarray(a)
+    if arr.ndim == 2 and arr.shape[1] == 1:
+        arr = arr[:, 0]
+    integral = arr.dtype.kind in "iu" or (arr.dtype.kind == "f" and bool(np.all(arr == np.round(arr))))
+    if arr.shape != (n,) or (arr.size and not integral):
+        raise InvalidInputError(f"{name} must be {n} integers (one per item), got {arr.shape} {arr.dtype}")
+    return np.ascontiguousarray(arr, dtype=np.int64)

@@ -12,6 +12,7 @@ import numpy as np
 
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InvalidInputError
+from nonobtuse.markers import mesh_markers
 from nonobtuse.mesh import Mesh
 
 STRATEGIES = ("greedy", "project-flip", "projection")
@@ -73,15 +74,22 @@ def default_steiner_budget(n_points: int) -> int:
 
 
 def refine(
-    domain: Domain, strategy: str = "greedy", max_steiner: int | None = None, threads: int = 2
-) -> RefineResult:
+    domain: Domain | dict[str, Any],
+    strategy: str = "greedy",
+    max_steiner: int | None = None,
+    threads: int = 2,
+) -> RefineResult | dict[str, Any]:
     """Adds Steiner points on the constraint edges of ``domain`` until every triangle of its constrained
     Delaunay triangulation is nonobtuse opposite each constrained edge it has (boundary, interface or
     dangling segment).
 
     domain:      a validated :class:`~nonobtuse.domain.Domain`: a PSLG with closed boundary loops (or
                  ``convex_hull=True`` for point sets: the hull edges are the boundary), holes, interior
-                 interfaces meeting at junctions, dangling segments, isolated points, region attributes.
+                 interfaces meeting at junctions, dangling segments, isolated points, region attributes,
+                 point and segment markers (carried to the mesh by Triangle's rules, see
+                 :mod:`nonobtuse.markers`).
+                 Or a ``triangle`` package input dict (:mod:`nonobtuse.triangle_dict`), validated here; the
+                 result is then a dict in ``triangle.triangulate``'s output convention, plus ``stats``.
                  Both sides of every interior constraint are refined, each nonobtuse on its own (each side
                  carries its own conductivity); acute junctions get concentric power-of-two shells.
     strategy:    ``"greedy"`` (sensitive Greedy-Refine: the longest empty subsegment from one end, never
@@ -109,6 +117,11 @@ def refine(
     """
     from nonobtuse import _core
 
+    if isinstance(domain, dict):
+        from nonobtuse.triangle_dict import mesh_to_dict, validated_domain
+
+        result = refine(validated_domain(domain), strategy, max_steiner, threads)
+        return {**mesh_to_dict(result.mesh, domain), "stats": result.stats}
     if strategy not in STRATEGIES:
         raise InvalidInputError(f"unknown strategy {strategy!r}; choose one of {', '.join(STRATEGIES)}")
     if max_steiner is not None and (int(max_steiner) != max_steiner or max_steiner < 0):
@@ -147,4 +160,5 @@ def refine(
         regions=m["triangle_region"] if len(domain.regions) else None,
         stats=stats,
     )
+    mesh_markers(mesh, domain)
     return RefineResult(mesh=mesh, stats=stats, status=r["status"])

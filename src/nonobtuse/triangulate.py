@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from nonobtuse import _core
 from nonobtuse.domain import Domain
+from nonobtuse.markers import mesh_markers
 from nonobtuse.mesh import Mesh
 from nonobtuse.validate import validate_domain
 
 
-def triangulate(domain: Domain) -> Mesh:
+def triangulate(domain: Domain | dict[str, Any]) -> Mesh | dict[str, Any]:
     """Constrained Delaunay triangulation (CDT) of ``domain``, without Steiner points.
 
     Input: a :class:`Domain`; it is validated first (``validate_domain``: duplicates, crossings, points inside
@@ -16,13 +19,21 @@ def triangulate(domain: Domain) -> Mesh:
     Output: a :class:`Mesh` whose points are the validated domain's points in order, triangles (m, 3)
     counter-clockwise covering the domain minus holes, segments every constrained edge bordering the domain,
     ``regions`` the region attribute per triangle (0 where no seed reached), ``input_points`` /
-    ``input_segments`` the validated domain, ``stats["repairs"]`` what validation changed.
+    ``input_segments`` the validated domain, ``stats["repairs"]`` what validation changed, ``point_markers`` /
+    ``segment_markers`` the domain's markers by Triangle's rules (:mod:`nonobtuse.markers`).
+    Given a ``triangle`` package input dict (:mod:`nonobtuse.triangle_dict`), returns a dict in
+    ``triangle.triangulate``'s output convention (what ``triangle.triangulate(d, "p")`` gives, ``"pc"`` for a
+    point set).
     Raises :class:`InvalidInputError` for a domain that cannot be triangulated (it says what and where).
     Cost: O(n log n) expected for n points.
     """
+    if isinstance(domain, dict):
+        from nonobtuse.triangle_dict import mesh_to_dict, validated_domain
+
+        return mesh_to_dict(triangulate(validated_domain(domain)), domain)
     valid = validate_domain(domain)
     out = _core.triangulate(valid.points, valid.segments, valid.holes, valid.regions, valid.convex_hull)
-    return Mesh(
+    mesh = Mesh(
         points=out["points"],
         triangles=out["triangles"],
         segments=out["segments"],
@@ -31,3 +42,5 @@ def triangulate(domain: Domain) -> Mesh:
         regions=out["triangle_region"],
         stats={"source": valid.source, "repairs": list(valid.repairs)},
     )
+    mesh_markers(mesh, valid)
+    return mesh

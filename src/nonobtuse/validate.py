@@ -208,6 +208,9 @@ def _split_segments(d: Domain, on_segments: np.ndarray, overlaps: list[tuple[int
     for s, t in overlaps:
         d.repairs.append(f"{_seg(d, s)} and {_seg(d, t)} overlapped: the shared piece is kept once")
     d.segments = np.array(rows, dtype=np.int64).reshape(-1, 2)
+    if d.segment_markers is not None:  # every piece keeps the marker of the segment it came from
+        pieces = [len(inside.get(s, [])) + 1 for s in range(len(d.segment_markers))]
+        d.segment_markers = np.repeat(d.segment_markers, pieces)
     _set_lines(d, "segments", lines)
 
 
@@ -224,6 +227,8 @@ def _drop_duplicate_segments(d: Domain) -> None:
     )
     lines = _lines(d, "segments")
     d.segments = np.ascontiguousarray(d.segments[keep])
+    if d.segment_markers is not None:
+        d.segment_markers = np.ascontiguousarray(d.segment_markers[keep])
     _set_lines(d, "segments", [lines[i] for i in keep])
 
 

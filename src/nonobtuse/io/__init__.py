@@ -12,6 +12,8 @@ is read as JSON):
        "segments": [[i, j], ...],      # boundary loops and interior constraints (interfaces, cracks, wells)
        "holes": [[x, y], ...],         # seeds of removed regions
        "regions": [[x, y, attr], ...], # the region around the seed gets the attribute (e.g. a material id)
+       "point_markers": [m, ...],      # boundary marker (integer) per point, as Triangle's vertex markers
+       "segment_markers": [m, ...],    # boundary marker per segment (e.g. a boundary condition id)
        "convex_hull": false}           # true: the domain is the convex hull (Triangle -c); absent: decided
 
 Meshes (:func:`write_mesh`, :func:`read_mesh`), chosen by suffix:
@@ -24,10 +26,17 @@ Meshes (:func:`write_mesh`, :func:`read_mesh`), chosen by suffix:
        "input_points": [[x, y], ...],    # the domain as given
        "input_segments": [[i, j], ...],
        "regions": [attr, ...],           # optional: the region attribute of each triangle
+       "point_markers": [m, ...],        # optional: the boundary marker (integer) of each point
+       "segment_markers": [m, ...],      # optional: the boundary marker (integer) of each segment
        "stats": {...}}                   # free-form statistics (status, Steiner counts, timings)
 
-- Triangle ``.node``/``.ele``/``.poly`` (written together; any of the three suffixes names them; write only).
-- ``.vtu`` and ``.msh`` through meshio (triangles, segments as line cells, region as triangle cell data).
+- Triangle ``.node``/``.ele``/``.poly`` (written together, with marker columns and the region as the triangle
+  attribute; any of the three suffixes names them). Read back, and Triangle's own output read, as a mesh when
+  the ``.ele`` is there: ``read_mesh("a.ele")`` (or ``a.node``/``a.poly`` with ``a.ele`` beside them) reads
+  Triangle's triangles; it never re-triangulates the ``.node``. :func:`is_mesh_file` says so for the CLI.
+- ``.vtu`` and ``.msh`` through meshio (triangles, segments as line cells, region, segment markers and point
+  markers; in ``.msh`` the region and segment marker are physical tags and the tag-to-region map is written
+  beside it as ``NAME.msh.regions.json``; see :mod:`nonobtuse.io.meshio_formats`).
 
 Floats are written in shortest round-trip form, so reading gives back the same float64 values. Writes are
 atomic (a temporary file beside the target, then os.replace); input files are never modified. Every problem
@@ -94,12 +103,15 @@ def _looks_like_json(path: Path) -> bool:
 
 
 def is_mesh_file(path: str | os.PathLike) -> bool:
-    """True for .vtu/.msh files and JSON files holding an object with ``triangles`` (a nonobtuse mesh);
-    False for anything else, including unreadable files (the reader will name the problem)."""
+    """True for .vtu/.msh files, Triangle meshes (an ``.ele`` file, or a ``.node``/``.poly`` with the ``.ele``
+    of the same name beside it) and JSON files holding an object with ``triangles`` (a nonobtuse mesh); False
+    for anything else, including unreadable files (the reader will name the problem)."""
     path = Path(path)
     suffix = path.suffix.lower()
-    if suffix in _MESHIO_FORMATS:
+    if suffix in _MESHIO_FORMATS or suffix == ".ele":
         return True
+    if suffix in _TRIANGLE_SUFFIXES:
+        return triangle.triangle_mesh_files(path)[1].is_file()
     if suffix != ".json" and not (path.is_file() and _looks_like_json(path)):
         return False
     try:
@@ -110,21 +122,27 @@ def is_mesh_file(path: str | os.PathLike) -> bool:
 
 
 def read_mesh(path: str | os.PathLike) -> Mesh:
-    """Read a mesh: nonobtuse mesh .json (see the module docstring), .vtu or .msh (meshio; such files do not
-    record the input domain, so every point counts as an input point). Checks structure (keys, shapes, index
-    ranges), not geometry. Raises InvalidInputError naming the file."""
+    """Read a mesh: nonobtuse mesh .json (see the module docstring), Triangle .node/.ele/.poly (the .ele and
+    .node must exist; :func:`nonobtuse.io.triangle.read_triangle_mesh`), .vtu or .msh (meshio). Only the
+    .json records the input domain; from the others every point counts as an input point. Checks structure
+    (keys, shapes, index ranges), not geometry. Raises InvalidInputError naming the file."""
     path = Path(path)
     suffix = path.suffix.lower()
     if suffix in _MESHIO_FORMATS:
         return read_meshio(path)
+    if suffix in _TRIANGLE_SUFFIXES:
+        return triangle.read_triangle_mesh(path)
     if suffix == ".json" or _looks_like_json(path):
         return json_formats.mesh_from_json(path, json_formats.read_json(path))
-    raise InvalidInputError(f"{path}: unknown mesh format '{path.suffix}' (expected .json, .vtu or .msh)")
+    raise InvalidInputError(
+        f"{path}: unknown mesh format '{path.suffix}' (expected .json, .node/.ele/.poly, .vtu or .msh)"
+    )
 
 
 def write_mesh(mesh: Mesh, path: str | os.PathLike) -> list[Path]:
     """Write ``mesh`` by suffix: .json (the nonobtuse mesh schema), .node/.ele/.poly (all three, same stem),
-    .vtu/.msh (meshio). Atomic per file. Returns the paths written."""
+    .vtu/.msh (meshio; a .msh of a mesh with regions also writes its tag-to-region map beside it). Markers
+    and regions go into every format. Atomic per file. Returns the paths written."""
     path = Path(path)
     suffix = path.suffix.lower()
     if suffix == ".json":
@@ -133,8 +151,7 @@ def write_mesh(mesh: Mesh, path: str | os.PathLike) -> list[Path]:
     if suffix in _TRIANGLE_SUFFIXES:
         return triangle.write_triangle(mesh, path)
     if suffix in _MESHIO_FORMATS:
-        write_meshio(mesh, path)
-        return [path]
+        return write_meshio(mesh, path)
     raise InvalidInputError(
         f"{path}: unknown mesh format '{path.suffix}' (expected .json, .node/.ele/.poly, .vtu or .msh)"
     )

@@ -14,8 +14,11 @@ from nonobtuse.errors import InvalidInputError
 from nonobtuse.io._files import atomic_text, exact_float, read_text
 from nonobtuse.mesh import Mesh
 
-DOMAIN_KEYS = {"points", "segments", "holes", "regions", "convex_hull"}
-MESH_KEYS = {"points", "triangles", "segments", "input_points", "input_segments", "regions", "stats"}
+DOMAIN_KEYS = {"points", "segments", "holes", "regions", "convex_hull", "point_markers", "segment_markers"}
+MESH_KEYS = {
+    "points", "triangles", "segments", "input_points", "input_segments", "regions", "point_markers",
+    "segment_markers", "stats",
+}  # fmt: skip
 
 
 def read_json(path: Path) -> Any:
@@ -45,15 +48,29 @@ def domain_from_json(path: Path, data: Any) -> tuple[Domain, bool | None]:
     if hull is not None and not isinstance(hull, bool):
         raise InvalidInputError(f"{path}: 'convex_hull' must be true or false, found {hull!r}")
     points = rows(data["points"], 2, float, f"{path}: points")
+    segments = rows(data.get("segments", []), 2, int, f"{path}: segments")
+    markers = _markers(path, data, len(points), len(segments))
     domain = Domain(
         points,
-        rows(data.get("segments", []), 2, int, f"{path}: segments"),
+        segments,
         rows(data.get("holes", []), 2, float, f"{path}: holes"),
         rows(data.get("regions", []), 3, float, f"{path}: regions"),
         source=str(path),
         origin=SourceMap(file=str(path)),
+        **markers,
     )
     return domain, hull
+
+
+def _markers(path: Path, data: dict, n_points: int, n_segments: int) -> dict[str, np.ndarray]:
+    """The optional ``point_markers`` / ``segment_markers`` lists (integers, one per point / segment)."""
+    markers = {}
+    for key, n in (("point_markers", n_points), ("segment_markers", n_segments)):
+        if data.get(key) is not None:
+            markers[key] = rows(data[key], 0, int, f"{path}: {key}")
+            if len(markers[key]) != n:
+                raise InvalidInputError(f"{path}: {len(markers[key])} {key} for {n} {key.split('_')[0]}s")
+    return markers
 
 
 def _cgshop_instance(path: Path, data: dict) -> Domain:
@@ -158,10 +175,11 @@ def mesh_from_json(path: Path, data: Any) -> Mesh:
         regions = rows(data["regions"], 0, float, f"{path}: regions")
         if len(regions) != len(triangles):
             raise InvalidInputError(f"{path}: {len(regions)} regions for {len(triangles)} triangles")
+    markers = _markers(path, data, len(points), len(segments))
     stats = data.get("stats", {})
     if not isinstance(stats, dict):
         raise InvalidInputError(f"{path}: 'stats' must be an object")
-    return Mesh(points, triangles, segments, input_points, input_segments, regions, stats)
+    return Mesh(points, triangles, segments, input_points, input_segments, regions, stats, **markers)
 
 
 def write_mesh_json(mesh: Mesh, path: Path) -> None:
@@ -176,6 +194,9 @@ def write_mesh_json(mesh: Mesh, path: Path) -> None:
     }
     if mesh.regions is not None:
         data["regions"] = np.asarray(mesh.regions, dtype=np.float64).tolist()
+    for key in ("point_markers", "segment_markers"):
+        if getattr(mesh, key) is not None:
+            data[key] = np.asarray(getattr(mesh, key), dtype=np.int64).tolist()
     data["stats"] = mesh.stats
     with atomic_text(path) as f:
         json.dump(data, f, allow_nan=False, separators=(",", ":"), default=_plain)

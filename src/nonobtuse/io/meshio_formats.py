@@ -1,47 +1,172 @@
-"""VTK ``.vtu`` and Gmsh ``.msh`` (format 2.2) through meshio: triangles, constrained segments as line cells,
-the region attribute as triangle cell data ``region`` (.vtu) or as the integer physical tag (.msh; 0 when the
-mesh has no regions)."""
+"""VTK ``.vtu`` and Gmsh ``.msh`` (format 2.2, binary) through meshio, and the conversion of a 2D
+:class:`~nonobtuse.mesh.Mesh` to and from a ``meshio.Mesh``.
+
+The meshio form: points padded with z = 0; cell blocks ``triangle`` then ``line`` (the constrained
+subsegments); cell data ``region`` (the region attribute on triangles, 0 on lines) and ``marker`` (the
+segment marker on lines, 0 on triangles) when the mesh has them; point data ``point_marker``.
+
+In ``.msh`` the region and the segment marker are the integer physical tags (``gmsh:physical``, also written
+as ``gmsh:geometrical``) of the triangles and of the lines. Region attributes are floats: when every one is
+an integer they are their own tags, otherwise the distinct values, ascending, get the tags 1, 2, ... The
+mapping is written beside the mesh as ``NAME.msh.regions.json`` (``{"tag_to_region": {"1": 0.25, ...}}``)
+whenever the mesh has regions, and :func:`read_meshio` maps the tags back through it when it is there.
+Point markers are ``$NodeData`` ``point_marker`` (floats, exact for markers up to 2**53).
+"""
 
 from __future__ import annotations
 
+import json
 import warnings
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.io._files import atomic_path
+from nonobtuse.io._files import atomic_path, atomic_text, read_text
 from nonobtuse.mesh import Mesh
 
 FORMATS = {".vtu": "vtu", ".msh": "gmsh22"}  # Gmsh 2.2 needs no entity topology for mixed cell types
+_INT32 = np.iinfo(np.int32)
 
 
-def write_meshio(mesh: Mesh, path: Path) -> None:
-    """Points padded with z = 0 (both formats are 3D); cell blocks ``triangle`` then ``line``; cell data
-    ``region`` (0 on line cells) when the mesh has regions. Atomic."""
+def region_tags(regions: np.ndarray) -> tuple[np.ndarray, dict[int, float]]:
+    """Integer tags (m,) int32 for float region attributes (m,), and the map tag -> attribute. Integer
+    attributes in the int32 range are their own tags; otherwise the distinct values, ascending, get 1, 2..."""
+    regions = np.asarray(regions, dtype=np.float64)
+    integral = bool(np.all(regions == np.round(regions))) and bool(
+        np.all((regions >= _INT32.min) & (regions <= _INT32.max))
+    )
+    if integral:
+        tags = regions.astype(np.int32)
+        return tags, {int(t): float(t) for t in np.unique(tags)}
+    values, tags = np.unique(regions, return_inverse=True)
+    return (tags.ravel() + 1).astype(np.int32), {i + 1: float(v) for i, v in enumerate(values)}
+
+
+def to_meshio(mesh: Mesh, *, gmsh: bool = False) -> Any:
+    """``mesh`` as a ``meshio.Mesh`` (the form in the module docstring). gmsh=True writes the region and
+    segment markers as physical tags instead (the regions mapped by :func:`region_tags`)."""
     import meshio
 
     points = np.column_stack([mesh.points, np.zeros(len(mesh.points))])
     cells = [("triangle", mesh.triangles), ("line", mesh.segments)]
-    regions = np.zeros(len(mesh.triangles)) if mesh.regions is None else np.asarray(mesh.regions, np.float64)
-    if path.suffix.lower() == ".msh":  # Gmsh: the region is the triangle's physical tag, an integer
-        if np.any(regions != np.round(regions)):
-            raise InvalidInputError(
-                f"{path}: .msh stores regions as integer physical tags; these are not integers"
-            )
-        tags = [regions.astype(np.int32), np.zeros(len(mesh.segments), np.int32)]
-        cell_data = {"gmsh:physical": tags, "gmsh:geometrical": tags}
+    m, k = len(mesh.triangles), len(mesh.segments)
+    markers = np.zeros(k, np.int64) if mesh.segment_markers is None else mesh.segment_markers
+    point_data = {}
+    if mesh.point_markers is not None:
+        point_data["point_marker"] = mesh.point_markers.astype(np.float64 if gmsh else np.int64)
+    if gmsh:
+        tags = region_tags(mesh.regions)[0] if mesh.regions is not None else np.zeros(m, np.int32)
+        physical = [tags, markers.astype(np.int32)]
+        cell_data = {"gmsh:physical": physical, "gmsh:geometrical": physical}
     else:
-        cell_data = {"region": [regions, np.zeros(len(mesh.segments))]} if mesh.regions is not None else {}
+        cell_data = {}
+        if mesh.regions is not None:
+            cell_data["region"] = [np.asarray(mesh.regions, np.float64), np.zeros(k)]
+        if mesh.segment_markers is not None:
+            cell_data["marker"] = [np.zeros(m, np.int64), markers]
+    return meshio.Mesh(points, cells, cell_data=cell_data, point_data=point_data)
+
+
+def from_meshio(m: Any, where: str = "<meshio>", region_map: dict[int, float] | None = None) -> Mesh:
+    """A 2D :class:`Mesh` from a ``meshio.Mesh`` with triangle cells (and line cells for the segments).
+
+    Regions from cell data ``region``, else ``gmsh:physical`` on the triangles (mapped through
+    ``region_map`` when given); segment markers from ``marker``, else ``gmsh:physical`` on the lines; point
+    markers from point data ``point_marker``. Such a mesh does not record its input domain: its
+    ``input_points`` are all its points and ``input_segments`` its segments. Raises InvalidInputError (naming
+    ``where``) for points off the plane z = 0, no triangle cells, or markers that are not integers.
+    """
+    points = np.ascontiguousarray(np.asarray(m.points)[:, :2], dtype=np.float64)
+    if m.points.shape[1] > 2 and np.any(m.points[:, 2] != 0):
+        raise InvalidInputError(f"{where}: the mesh is not planar (some z coordinate is not 0)")
+    tri = [i for i, c in enumerate(m.cells) if c.type == "triangle"]
+    if not tri:
+        raise InvalidInputError(f"{where}: the mesh has no triangle cells")
+    lines = [i for i, c in enumerate(m.cells) if c.type == "line"]
+    triangles = np.concatenate([m.cells[i].data for i in tri]).astype(np.int64)
+    segments = np.concatenate([m.cells[i].data for i in lines]).astype(np.int64).reshape(-1, 2)
+
+    def cell_values(key: str, blocks: list[int]) -> np.ndarray | None:
+        if key not in m.cell_data or not blocks:
+            return None
+        return np.concatenate([np.asarray(m.cell_data[key][i]).ravel() for i in blocks])
+
+    regions = cell_values("region", tri)
+    tags = cell_values("gmsh:physical", tri)
+    if regions is None and tags is not None and (region_map is not None or np.any(tags != 0)):
+        regions = _unmap(tags, region_map, where) if region_map is not None else tags  # 0: no physical group
+    markers = cell_values("marker", lines)
+    if markers is None:
+        markers = cell_values("gmsh:physical", lines)
+    if markers is None and "marker" in m.cell_data and not lines:
+        markers = np.zeros(0, np.int64)
+    point_markers = m.point_data.get("point_marker")
+    return Mesh(
+        points, triangles, segments, points.copy(), segments.copy(),
+        None if regions is None else np.asarray(regions, dtype=np.float64),
+        point_markers=_integers(point_markers, "point_marker", where),
+        segment_markers=_integers(markers, "segment marker", where),
+    )  # fmt: skip
+
+
+def _integers(values: Any, what: str, where: str) -> np.ndarray | None:
+    if values is None:
+        return None
+    arr = np.asarray(values).ravel()
+    if arr.dtype.kind == "f" and not np.all(arr == np.round(arr)):
+        raise InvalidInputError(f"{where}: the {what}s must be integers")
+    return arr.astype(np.int64)
+
+
+def _unmap(tags: np.ndarray, region_map: dict[int, float], where: str) -> np.ndarray:
+    missing = sorted(set(np.unique(tags).tolist()) - set(region_map))
+    if missing:
+        raise InvalidInputError(f"{where}: physical tags {missing[:5]} are not in the region map")
+    keys = np.array(sorted(region_map), dtype=np.int64)
+    values = np.array([region_map[k] for k in keys.tolist()], dtype=np.float64)
+    return values[np.searchsorted(keys, tags)]
+
+
+def region_map_path(path: Path) -> Path:
+    """Where the tag -> region map of a .msh file lives: ``NAME.msh.regions.json`` beside it."""
+    return path.with_name(path.name + ".regions.json")
+
+
+def write_meshio(mesh: Mesh, path: Path) -> list[Path]:
+    """Write .vtu or .msh (the module docstring), atomically; for a .msh of a mesh with regions also the
+    region map beside it. Returns the paths written."""
+    import meshio
+
+    gmsh = path.suffix.lower() == ".msh"
     with atomic_path(path) as tmp:
-        meshio.write(
-            tmp, meshio.Mesh(points, cells, cell_data=cell_data), file_format=FORMATS[path.suffix.lower()]
-        )
+        meshio.write(tmp, to_meshio(mesh, gmsh=gmsh), file_format=FORMATS[path.suffix.lower()])
+    if not (gmsh and mesh.regions is not None):
+        return [path]
+    table = region_map_path(path)
+    with atomic_text(table) as f:
+        mapping = region_tags(mesh.regions)[1]
+        json.dump({"tag_to_region": {str(k): v for k, v in mapping.items()}}, f, indent=1)
+        f.write("\n")
+    return [path, table]
+
+
+def read_region_map(path: Path) -> dict[int, float] | None:
+    """The tag -> region map beside the .msh file ``path``, or None when there is none."""
+    table = region_map_path(path)
+    if not table.is_file():
+        return None
+    try:
+        data = json.loads(read_text(table))["tag_to_region"]
+        return {int(k): float(v) for k, v in data.items()}
+    except (json.JSONDecodeError, KeyError, TypeError, ValueError, AttributeError) as e:
+        raise InvalidInputError(f"{table}: not a region map ({type(e).__name__}: {e})") from None
 
 
 def read_meshio(path: Path) -> Mesh:
-    """Triangles and line cells of a .vtu/.msh file. Such files do not record the input domain: the mesh's
-    ``input_points`` are all its points and ``input_segments`` its segments (no Steiner points known)."""
+    """Triangles and line cells of a .vtu/.msh file, with regions and markers (:func:`from_meshio`; a .msh
+    with a region map beside it gets its float regions back)."""
     import meshio
 
     try:
@@ -50,17 +175,5 @@ def read_meshio(path: Path) -> Mesh:
             m = meshio.read(path, file_format="gmsh" if path.suffix.lower() == ".msh" else "vtu")
     except Exception as e:  # meshio raises many types (ReadError, ValueError, KeyError) for broken files
         raise InvalidInputError(f"{path}: cannot read the mesh ({type(e).__name__}: {e})") from None
-    points = np.ascontiguousarray(m.points[:, :2], dtype=np.float64)
-    if m.points.shape[1] > 2 and np.any(m.points[:, 2] != 0):
-        raise InvalidInputError(f"{path}: the mesh is not planar (some z coordinate is not 0)")
-    tri = [(i, c.data) for i, c in enumerate(m.cells) if c.type == "triangle"]
-    if not tri:
-        raise InvalidInputError(f"{path}: the mesh has no triangle cells")
-    lines = [c.data for c in m.cells if c.type == "line"]
-    triangles = np.concatenate([t for _, t in tri]).astype(np.int64)
-    segments = np.concatenate(lines).astype(np.int64) if lines else np.zeros((0, 2), np.int64)
-    regions = None
-    key = "gmsh:physical" if path.suffix.lower() == ".msh" else "region"
-    if key in m.cell_data:
-        regions = np.concatenate([np.asarray(m.cell_data[key][i], dtype=np.float64) for i, _ in tri])
-    return Mesh(points, triangles, segments, points.copy(), segments.copy(), regions)
+    region_map = read_region_map(path) if path.suffix.lower() == ".msh" else None
+    return from_meshio(m, str(path), region_map)

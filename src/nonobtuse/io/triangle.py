@@ -12,8 +12,12 @@ Reading follows Triangle's documentation (https://www.cs.cmu.edu/~quake/triangle
 
 ``#`` starts a comment anywhere on a line; blank lines are skipped. Ids are 0- or 1-based, decided by the
 first vertex's id; vertices must be numbered consecutively from it, and segment endpoints use the same base.
-Vertex attributes, boundary markers and maximum areas are read (and checked to be numbers) but not kept: the
-:class:`Domain` has no place for them. Every error names ``file:line``.
+Vertex and segment boundary markers are kept (``Domain.point_markers`` / ``segment_markers``, None when the
+file has no marker column); vertex attributes and maximum areas are read (and checked to be numbers) but not
+kept. Every error names ``file:line``.
+
+Meshes: :func:`write_triangle` writes ``.node``/``.ele``/``.poly`` with marker columns;
+:func:`read_triangle_mesh` reads them back (or Triangle's own output) as a :class:`Mesh`.
 """
 
 from __future__ import annotations
@@ -31,18 +35,18 @@ from nonobtuse.mesh import Mesh
 def read_node(path: Path) -> Domain:
     """A ``.node`` file as a point set (no segments; ``convex_hull=True``)."""
     lines = Lines(path)
-    points, point_lines, first_id = _read_vertices(lines)
+    points, point_lines, first_id, markers = _read_vertices(lines)
     if len(points) == 0:
         raise InvalidInputError(f"{path}: the .node file lists no vertices")
     lines.expect_end()
     origin = SourceMap(file=str(path), first_id=first_id, points=point_lines)
-    return Domain(points, convex_hull=True, source=str(path), origin=origin)
+    return Domain(points, convex_hull=True, source=str(path), origin=origin, point_markers=markers)
 
 
 def read_poly(path: Path) -> Domain:
     """A ``.poly`` file as a Domain (``convex_hull=False``; :func:`nonobtuse.io.load_domain` decides)."""
     lines = Lines(path)
-    points, point_lines, first_id = _read_vertices(lines)
+    points, point_lines, first_id, point_markers = _read_vertices(lines)
     points_file = None
     if len(points) == 0:
         node = path.with_suffix(".node")
@@ -52,13 +56,14 @@ def read_poly(path: Path) -> Domain:
             raise InvalidInputError(
                 f"{path}: the vertex count is 0, so the vertices come from {node}: {e}"
             ) from None
-        points, point_lines, first_id = (
+        points, point_lines, first_id, point_markers = (
             node_domain.points,
             node_domain.origin.points,
             node_domain.origin.first_id,
+            node_domain.point_markers,
         )
         points_file = str(node)
-    segments, segment_lines = _read_segments(lines, len(points), first_id)
+    segments, segment_lines, segment_markers = _read_segments(lines, len(points), first_id)
     holes, hole_lines = _read_rows(lines, "hole", 3, required=True)
     regions, region_lines = _read_rows(
         lines, "regional attribute", 4, required=False, optional="the maximum area"
@@ -68,11 +73,14 @@ def read_poly(path: Path) -> Domain:
         file=str(path), first_id=first_id, points_file=points_file, points=point_lines,
         segments=segment_lines, holes=hole_lines, regions=region_lines,
     )  # fmt: skip
-    return Domain(points, segments, holes[:, :2], regions[:, :3], source=str(path), origin=origin)
+    return Domain(
+        points, segments, holes[:, :2], regions[:, :3], source=str(path), origin=origin,
+        point_markers=point_markers, segment_markers=segment_markers,
+    )  # fmt: skip
 
 
-def _read_vertices(lines: Lines) -> tuple[np.ndarray, np.ndarray, int]:
-    """Header and vertex lines: (points (n,2), 1-based line per point, first id)."""
+def _read_vertices(lines: Lines) -> tuple[np.ndarray, np.ndarray, int, np.ndarray | None]:
+    """Header and vertex lines: (points (n,2), 1-based line per point, first id, markers (n,) or None)."""
     head = lines.next("the vertex count line")
     n = head.count(0, "the vertex count")
     dim = head.int(1, "the dimension") if len(head.tokens) > 1 else 2
@@ -84,6 +92,7 @@ def _read_vertices(lines: Lines) -> tuple[np.ndarray, np.ndarray, int]:
         raise head.error(f"the number of boundary markers must be 0 or 1, found {n_mark}")
     points = np.empty((n, 2), dtype=np.float64)
     point_lines = np.empty(n, dtype=np.int64)
+    markers = np.zeros(n, dtype=np.int64) if n_mark else None
     first_id = 0
     for k in range(n):
         line = lines.next(f"vertex {k + 1} of {n}").need(3 + n_attr + n_mark, "id, x, y, attributes, markers")
@@ -97,16 +106,22 @@ def _read_vertices(lines: Lines) -> tuple[np.ndarray, np.ndarray, int]:
         points[k] = line.float(1, "x"), line.float(2, "y")
         for j in range(3, 3 + n_attr):
             line.float(j, f"vertex attribute {j - 2}")
-        if n_mark:
-            line.int(3 + n_attr, "the boundary marker")
+        if markers is not None:
+            markers[k] = line.int(3 + n_attr, "the boundary marker")
         point_lines[k] = line.number
-    return points, point_lines, first_id
+    return points, point_lines, first_id, markers
 
 
-def _read_segments(lines: Lines, n_points: int, first_id: int) -> tuple[np.ndarray, np.ndarray]:
+def _read_segments(
+    lines: Lines, n_points: int, first_id: int
+) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+    """The segment section: (segments (m, 2) 0-based, line per segment, markers (m,) or None)."""
     head = lines.next("the segment count line")
     m = head.count(0, "the segment count")
     n_mark = head.count(1, "the number of boundary markers") if len(head.tokens) > 1 else 0
+    if n_mark > 1:
+        raise head.error(f"the number of boundary markers must be 0 or 1, found {n_mark}")
+    markers = np.zeros(m, dtype=np.int64) if n_mark else None
     segments = np.empty((m, 2), dtype=np.int64)
     seg_lines = np.empty(m, dtype=np.int64)
     for k in range(m):
@@ -120,10 +135,10 @@ def _read_segments(lines: Lines, n_points: int, first_id: int) -> tuple[np.ndarr
                     f"{n_points - 1 + first_id}"
                 )
             segments[k, j - 1] = v
-        if n_mark:
-            line.int(3, "the boundary marker")
+        if markers is not None:
+            markers[k] = line.int(3, "the boundary marker")
         seg_lines[k] = line.number
-    return segments, seg_lines
+    return segments, seg_lines, markers
 
 
 def _read_rows(
@@ -149,22 +164,113 @@ def _read_rows(
 
 
 def write_triangle(mesh: Mesh, path: Path) -> list[Path]:
-    """Write ``stem.node`` (points), ``stem.ele`` (triangles, with the region attribute when present) and
-    ``stem.poly`` (0 vertices, i.e. those of the .node; every constrained subsegment; no holes), ids 1-based,
-    coordinates in shortest round-trip form (float64 exact). Each file atomically. Returns the paths."""
-    stem = path.with_suffix("")
-    node, ele, poly = (stem.with_suffix(s) for s in (".node", ".ele", ".poly"))
+    """Write ``stem.node`` (points, with a boundary marker column when the mesh has point markers),
+    ``stem.ele`` (triangles, with the region attribute when present) and ``stem.poly`` (0 vertices, i.e.
+    those of the .node; every constrained subsegment, with a marker column when the mesh has segment
+    markers; no holes), ids 1-based, coordinates in shortest round-trip form (float64 exact). Each file
+    atomically. Returns the paths."""
+    node, ele, poly = triangle_mesh_files(path)
     with atomic_text(node) as f:
-        f.write(f"# written by nonobtuse\n{len(mesh.points)} 2 0 0\n")
-        f.writelines(f"{i} {x!r} {y!r}\n" for i, (x, y) in enumerate(mesh.points.tolist(), start=1))
+        f.write(f"# written by nonobtuse\n{len(mesh.points)} 2 0 {int(mesh.point_markers is not None)}\n")
+        markers = _column(mesh.point_markers, len(mesh.points))
+        rows = zip(mesh.points.tolist(), markers)
+        f.writelines(f"{i} {x!r} {y!r}{m}\n" for i, ((x, y), m) in enumerate(rows, start=1))
     with atomic_text(ele) as f:
         regions = mesh.regions is not None
         f.write(f"# written by nonobtuse\n{len(mesh.triangles)} 3 {int(regions)}\n")
         tri = (mesh.triangles + 1).tolist()
-        attr = [f" {r!r}" for r in mesh.regions.tolist()] if regions else [""] * len(tri)
+        attr = _column(None if mesh.regions is None else np.asarray(mesh.regions, np.float64), len(tri))
         f.writelines(f"{i} {a} {b} {c}{r}\n" for i, ((a, b, c), r) in enumerate(zip(tri, attr), start=1))
     with atomic_text(poly) as f:
-        f.write(f"# written by nonobtuse; vertices in {node.name}\n0 2 0 0\n{len(mesh.segments)} 0\n")
-        f.writelines(f"{i} {a} {b}\n" for i, (a, b) in enumerate((mesh.segments + 1).tolist(), start=1))
+        marked = int(mesh.segment_markers is not None)
+        f.write(f"# written by nonobtuse; vertices in {node.name}\n0 2 0 0\n{len(mesh.segments)} {marked}\n")
+        markers = _column(mesh.segment_markers, len(mesh.segments))
+        rows = zip((mesh.segments + 1).tolist(), markers)
+        f.writelines(f"{i} {a} {b}{m}\n" for i, ((a, b), m) in enumerate(rows, start=1))
         f.write("0\n")
     return [node, ele, poly]
+
+
+def _column(values: np.ndarray | None, n: int) -> list[str]:
+    """One optional trailing column: ``" value"`` per row (repr: floats round-trip), or empty strings."""
+    return [""] * n if values is None else [f" {v!r}" for v in values.tolist()]
+
+
+def triangle_mesh_files(path: Path) -> tuple[Path, Path, Path]:
+    """The ``.node``, ``.ele`` and ``.poly`` files of the mesh that ``path`` (any of the three) names; the
+    stem may hold dots (Triangle's ``la.1.ele``)."""
+    stem = path.with_suffix("")
+    node, ele, poly = (stem.with_name(stem.name + s) for s in (".node", ".ele", ".poly"))
+    return node, ele, poly
+
+
+def read_triangle_mesh(path: Path) -> Mesh:
+    """A mesh in Triangle's files (ours or Triangle's own output, e.g. ``la.1.node``/``.ele``/``.poly``):
+    ``path`` is any of the three; the ``.node`` and ``.ele`` must exist.
+
+    points and point markers from the ``.node``; triangles (as listed: Triangle writes them
+    counter-clockwise) and the first triangle attribute as the region from the ``.ele`` (second-order
+    triangles, 6 nodes, are refused); segments and segment markers from the ``.poly`` when it exists (its
+    vertex count must be 0 or its vertices those of the .node), else the edges with a triangle on one side
+    only. Such files do not record the input domain: every point counts as an input point. Checks structure
+    (counts, ids, index ranges), not geometry. Raises InvalidInputError naming file:line."""
+    node, ele, poly = triangle_mesh_files(path)
+    for f in (node, ele):
+        if not f.is_file():
+            raise InvalidInputError(f"{path}: a Triangle mesh needs {f.name} beside it, and it is missing")
+    lines = Lines(node)
+    points, _, first_id, point_markers = _read_vertices(lines)
+    lines.expect_end()
+    triangles, regions = _read_elements(Lines(ele), len(points), first_id)
+    if poly.is_file():
+        segments, segment_markers = _read_poly_segments(poly, points, first_id)
+    else:
+        segments, segment_markers = _boundary_edges(triangles), None
+    return Mesh(
+        points, triangles, segments, points.copy(), segments.copy(), regions,
+        stats={"source": str(path)}, point_markers=point_markers, segment_markers=segment_markers,
+    )  # fmt: skip
+
+
+def _read_elements(lines: Lines, n_points: int, first_id: int) -> tuple[np.ndarray, np.ndarray | None]:
+    """The .ele file: (triangles (m, 3) 0-based, the first attribute (m,) or None)."""
+    head = lines.next("the triangle count line")
+    m = head.count(0, "the triangle count")
+    corners = head.count(1, "the number of nodes per triangle") if len(head.tokens) > 1 else 3
+    if corners != 3:
+        raise head.error(f"only 3-node triangles are read, found {corners} nodes per triangle")
+    n_attr = head.count(2, "the number of attributes") if len(head.tokens) > 2 else 0
+    triangles = np.empty((m, 3), dtype=np.int64)
+    regions = np.empty(m, dtype=np.float64) if n_attr else None
+    for k in range(m):
+        line = lines.next(f"triangle {k + 1} of {m}").need(4 + n_attr, "id, three corners, attributes")
+        for j in (1, 2, 3):
+            v = line.int(j, "a triangle corner") - first_id
+            if not 0 <= v < n_points:
+                raise line.error(
+                    f"triangle corner {v + first_id} does not exist: vertex ids run from {first_id} to "
+                    f"{n_points - 1 + first_id}"
+                )
+            triangles[k, j - 1] = v
+        if regions is not None:
+            regions[k] = line.float(4, "the triangle attribute")
+    lines.expect_end()
+    return triangles, regions
+
+
+def _read_poly_segments(
+    poly: Path, points: np.ndarray, first_id: int
+) -> tuple[np.ndarray, np.ndarray | None]:
+    lines = Lines(poly)
+    own, _, _, _ = _read_vertices(lines)
+    if len(own) and not np.array_equal(own, points):
+        raise InvalidInputError(f"{poly}: its vertices are not those of the .node file beside it")
+    segments, _, markers = _read_segments(lines, len(points), first_id)
+    return segments, markers
+
+
+def _boundary_edges(triangles: np.ndarray) -> np.ndarray:
+    """The edges (k, 2), a < b, sorted, that have a triangle on one side only."""
+    e = np.sort(np.stack([triangles, np.roll(triangles, -1, axis=1)], axis=2).reshape(-1, 2), axis=1)
+    edges, count = np.unique(e, axis=0, return_counts=True)
+    return np.ascontiguousarray(edges[count == 1])

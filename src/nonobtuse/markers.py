@@ -1,0 +1,143 @@
+"""Boundary markers carried from a domain to its mesh, by Triangle's rules.
+
+Every output segment of a mesh (a subsegment) lies on exactly one input segment, or on none (a convex hull
+edge closing a point set). The parent is found without geometry: a Steiner point lies inside one input
+segment, so it has exactly two subsegments, and the chain of subsegments between two input vertices through
+Steiner points is exactly one input segment (validation leaves no input point inside a segment and no two
+segments between the same two points). Cost: O(k log k) for k output segments (the chains, then one sorted
+look-up of their ends).
+
+The markers follow Triangle (https://www.cs.cmu.edu/~quake/triangle.markers.html), so that a user gets from
+us what ``triangle.triangulate`` would give on the same input:
+
+- a segment: its parent's marker when nonzero; else 1 when it lies on the boundary of the triangulation (a
+  triangle on one side only, holes included); else 0.
+- a point: its own input marker when nonzero; else the first nonzero marker (in input order) of the input
+  segments it lies on (a Steiner point lies on one); else 1 when it is a corner of a boundary edge; else 0.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+
+from nonobtuse.errors import InternalError
+
+__all__ = ["mesh_markers", "point_markers", "segment_markers", "segment_parents"]
+
+
+def _edge_keys(edges: np.ndarray, n: int) -> np.ndarray:
+    e = np.sort(np.asarray(edges, dtype=np.int64).reshape(-1, 2), axis=1)
+    return e[:, 0] * n + e[:, 1]
+
+
+def segment_parents(segments: np.ndarray, n_input: int, input_segments: np.ndarray) -> np.ndarray:
+    """The input segment each output segment lies on.
+
+    segments: (k, 2) int64 output subsegments; points below ``n_input`` are input points, the others Steiner
+    points, each inside one input segment. input_segments: (k0, 2) int64, no two between the same points.
+    Returns (k,) int64 row indices into ``input_segments``, -1 for a chain between two input points that no
+    input segment joins (a convex hull edge). Raises InternalError when a Steiner point is not on exactly two
+    subsegments (it would not lie inside one input segment).
+    """
+    segments = np.asarray(segments, dtype=np.int64).reshape(-1, 2)
+    k = len(segments)
+    if k == 0:
+        return np.zeros(0, dtype=np.int64)
+    n = int(max(segments.max() + 1, n_input))
+    ends = segments.ravel()
+    steiner = ends >= n_input
+    # Subsegments sharing a Steiner point are links of one chain: join them.
+    order = np.argsort(ends[steiner], kind="stable")
+    rows = (np.flatnonzero(steiner) // 2)[order]
+    if len(rows) % 2 or (len(rows) and np.any(ends[steiner][order][0::2] != ends[steiner][order][1::2])):
+        raise InternalError("a Steiner point is not on exactly two subsegments")
+    graph = coo_matrix((np.ones(len(rows) // 2), (rows[0::2], rows[1::2])), shape=(k, k))
+    n_chains, chain = connected_components(graph, directed=False)
+    # The two input-point ends of every chain, in any order.
+    corner = np.flatnonzero(~steiner)
+    first = np.full(n_chains, -1, dtype=np.int64)
+    last = np.full(n_chains, -1, dtype=np.int64)
+    first[chain[corner[::-1] // 2]] = ends[corner[::-1]]
+    last[chain[corner // 2]] = ends[corner]
+    if np.any(first < 0) or np.any(first == last):
+        raise InternalError("a chain of subsegments does not join two input points")
+    chain_keys = _edge_keys(np.column_stack([first, last]), n)
+    input_keys = _edge_keys(input_segments, n)
+    order = np.argsort(input_keys, kind="stable")
+    at = np.minimum(np.searchsorted(input_keys[order], chain_keys), len(order) - 1)
+    if len(order) == 0:
+        return np.full(k, -1, dtype=np.int64)
+    parent = np.where(input_keys[order[at]] == chain_keys, order[at], -1)
+    return parent[chain]
+
+
+def _boundary_edges(triangles: np.ndarray, n: int) -> np.ndarray:
+    """Sorted keys of the edges having a triangle on one side only."""
+    t = np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
+    keys = _edge_keys(np.stack([t, np.roll(t, -1, axis=1)], axis=2).reshape(-1, 2), n)
+    unique, count = np.unique(keys, return_counts=True)
+    return unique[count == 1]
+
+
+def segment_markers(
+    segments: np.ndarray, triangles: np.ndarray, parents: np.ndarray, input_markers: np.ndarray | None, n: int
+) -> np.ndarray:
+    """(k,) int64 markers of the output ``segments`` (k, 2) by Triangle's rule (module docstring).
+    triangles: (m, 3); parents: (k,) from :func:`segment_parents`; input_markers: (k0,) or None (all 0);
+    n: the number of points."""
+    inherited = np.zeros(len(segments), dtype=np.int64)
+    if input_markers is not None and len(segments):
+        has = parents >= 0
+        inherited[has] = input_markers[parents[has]]
+    on_boundary = np.isin(_edge_keys(segments, n), _boundary_edges(triangles, n))
+    return np.where(inherited != 0, inherited, on_boundary.astype(np.int64))
+
+
+def point_markers(
+    n: int,
+    n_input: int,
+    triangles: np.ndarray,
+    segments: np.ndarray,
+    parents: np.ndarray,
+    input_segments: np.ndarray,
+    input_point_markers: np.ndarray | None,
+    input_segment_markers: np.ndarray | None,
+) -> np.ndarray:
+    """(n,) int64 markers of the mesh's points by Triangle's rule (module docstring); the first ``n_input``
+    are the input points. segments, parents: as for :func:`segment_markers`; input_segments (k0, 2);
+    input_point_markers (n_input,) or None; input_segment_markers (k0,) or None."""
+    out = np.zeros(n, dtype=np.int64)
+    if input_segment_markers is not None:
+        # Steiner points: the marker of the input segment of their subsegments.
+        ends = np.asarray(segments, dtype=np.int64).ravel()
+        parent = np.repeat(parents, 2)
+        steiner = (ends >= n_input) & (parent >= 0)
+        out[ends[steiner]] = input_segment_markers[parent[steiner]]
+        # Input points: the marker of the first input segment with a nonzero marker they are an end of.
+        rows = np.flatnonzero(input_segment_markers != 0)
+        first = np.full(n, len(input_segment_markers), dtype=np.int64)
+        for j in (0, 1):
+            np.minimum.at(first, input_segments[rows, j], rows)
+        marked = first < len(input_segment_markers)
+        out[marked] = input_segment_markers[first[marked]]
+    if input_point_markers is not None:
+        own = np.flatnonzero(input_point_markers != 0)
+        out[own] = input_point_markers[own]
+    boundary = _boundary_edges(triangles, n)
+    corners = np.unique(np.concatenate([boundary // n, boundary % n]))
+    out[corners[out[corners] == 0]] = 1
+    return out
+
+
+def mesh_markers(mesh, domain) -> None:
+    """Set ``mesh.point_markers`` and ``mesh.segment_markers`` from ``domain`` (the validated domain the mesh
+    was made of: its points are the mesh's first points, its segments the input segments)."""
+    n = len(mesh.points)
+    parents = segment_parents(mesh.segments, len(domain.points), domain.segments)
+    mesh.segment_markers = segment_markers(mesh.segments, mesh.triangles, parents, domain.segment_markers, n)
+    mesh.point_markers = point_markers(
+        n, len(domain.points), mesh.triangles, mesh.segments, parents, domain.segments, domain.point_markers,
+        domain.segment_markers,
+    )  # fmt: skip
