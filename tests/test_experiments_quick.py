@@ -60,7 +60,7 @@ CASES = [(f, theta, k) for f, theta, k in
 def test_family_is_closed_planar_and_has_its_angle(family, theta, k):
     plc = make_plc(family, theta, k)
     check_closed_outward(plc.points, shell_triangles(family, plc))
-    validate_plc(plc, require_manifold=family != "fan")  # exact checks, self-intersections included
+    validate_plc(plc)  # exact checks, self-intersections included
     for facet in np.unique(plc.facet_ids):  # each facet planar: all its triangle normals parallel
         ref = facet_normal(plc, facet)
         for tri in plc.triangles[plc.facet_ids == facet]:

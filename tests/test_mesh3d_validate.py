@@ -14,7 +14,8 @@ from mesh3d_shapes import (
     write_off,
 )
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.mesh3d import load_plc
+from nonobtuse.mesh3d import PLC, load_plc, validate_plc
+from nonobtuse.mesh3d.validate3d import edge_faces
 
 
 def load_off(tmp_path, points, faces, **kw):
@@ -68,38 +69,70 @@ def test_nan_and_inf(tmp_path, bad):
 
 
 def test_not_closed_names_a_boundary_edge(tmp_path):
-    # the tet without its face (1, 2, 3): the three edges of that face are boundary edges
-    with pytest.raises(InvalidInputError, match=r"not closed: 3 boundary edges, e\.g\. edge \(1, 2\)"):
+    # the tet without its face (1, 2, 3): the three edges of that face are boundary edges, and every face
+    # peels off as dangling, so nothing encloses a volume
+    with pytest.raises(InvalidInputError, match=r"not closed: 3 boundary edges, e\.g\. edge \(1, 2\).*"
+                                                r"no part of it encloses a volume"):
         load_off(tmp_path, TET_POINTS, TET_TRIANGLES[:3])
 
 
-def test_non_manifold_edge(tmp_path):
-    # a tet plus a fin (0, 1, 4) hanging off its edge (0, 1), closed into a second tet (0, 1, 4, 5) so that
-    # no edge is open: edge (0, 1) then lies in 4 faces
+def test_a_dangling_fin_is_kept_with_a_warning(tmp_path):
+    # a tet and a fin triangle hanging off its edge (0, 1), outside the tet: a dangling facet
+    pts = np.concatenate([TET_POINTS, [[0.5, -1, -1]]])
+    plc = load_off(tmp_path, pts, np.concatenate([TET_TRIANGLES, [[0, 1, 4]]]))
+    assert len(plc.triangles) == 5
+    assert [w for w in plc.warnings if w.startswith("1 dangling faces")]
+
+
+def test_a_dangling_chain_peels_off_face_by_face(tmp_path):
+    # a strip of two fins: only the outer one has an open edge at first; peeling it opens the inner one
+    pts = np.concatenate([TET_POINTS, [[0.5, -1, -1], [1.5, -1, -1]]])
+    plc = load_off(tmp_path, pts, np.concatenate([TET_TRIANGLES, [[0, 1, 4], [1, 5, 4]]]))
+    assert [w for w in plc.warnings if w.startswith("2 dangling faces")]
+
+
+def test_non_manifold_edge_is_accepted(tmp_path):
+    # a tet plus a second tet (0, 1, 4, 5) hanging off its edge (0, 1): edge (0, 1) lies in 4 faces
     pts = np.concatenate([TET_POINTS, [[0.5, -1, -1], [0.5, -2, 1]]])
     second = np.array([[0, 1, 4], [0, 5, 1], [0, 4, 5], [1, 5, 4]])
-    with pytest.raises(InvalidInputError, match=r"non-manifold edge \(0, 1\) shared by 4 faces"):
-        load_off(tmp_path, pts, np.concatenate([TET_TRIANGLES, second]))
+    plc = load_off(tmp_path, pts, np.concatenate([TET_TRIANGLES, second]))
+    ef = edge_faces(plc.triangles)
+    assert ef.count.max() == 4 and plc.warnings == ()
+    assert np.all(_component_volumes(plc) > 0)  # both tets outward
 
 
-def test_non_manifold_vertex(tmp_path):
+def test_non_manifold_vertex_is_accepted(tmp_path):
     pts, tris = two_tets_touching_at_a_vertex()
-    with pytest.raises(InvalidInputError, match=r"non-manifold vertex 0 \(0, 0, 0\).*2 separate fans"):
-        load_off(tmp_path, pts, tris)
+    plc = load_off(tmp_path, pts, tris)
+    assert len(plc.triangles) == 8 and plc.warnings == ()
 
 
-def test_inconsistent_orientation_and_its_fix(tmp_path):
+def _component_volumes(plc) -> np.ndarray:
+    """Signed volume of every group of 4 consecutive faces (the tets of these tests)."""
+    p = plc.points[plc.triangles]
+    return np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2])).reshape(-1, 4).sum(axis=1) / 6
+
+
+def test_inconsistent_orientation_is_reoriented_with_a_warning(tmp_path):
     tris = CUBE_TRIANGLES.copy()
     tris[3] = tris[3][::-1]
-    with pytest.raises(InvalidInputError, match="inconsistent orientation.*fix_orientation=True"):
-        load_off(tmp_path, CUBE_POINTS, tris)
-    fixed = load_off(tmp_path, CUBE_POINTS, tris, fix_orientation=True)
+    fixed = load_off(tmp_path, CUBE_POINTS, tris)
     assert np.array_equal(fixed.triangles, CUBE_TRIANGLES)  # face 3 flipped back, the rest already outward
+    assert len(fixed.warnings) == 1
+    assert fixed.warnings[0].startswith("inconsistent orientation: 1 faces (e.g. face 3 ")
 
 
-def test_fix_orientation_makes_an_inward_surface_outward(tmp_path):
-    fixed = load_off(tmp_path, CUBE_POINTS, CUBE_TRIANGLES[:, ::-1], fix_orientation=True)
+def test_an_inward_surface_is_made_outward_without_a_warning(tmp_path):
+    fixed = load_off(tmp_path, CUBE_POINTS, CUBE_TRIANGLES[:, ::-1])
     assert np.array_equal(fixed.triangles, CUBE_TRIANGLES)  # every face reversed back
+    assert fixed.warnings == ()
+
+
+def test_poly_facets_are_oriented_without_a_warning(tmp_path):
+    tris = CUBE_TRIANGLES.copy()
+    tris[3] = tris[3][::-1]
+    plc = validate_plc(PLC(CUBE_POINTS, tris, np.arange(12)), oriented_format=False)
+    assert np.array_equal(plc.triangles, CUBE_TRIANGLES) and plc.warnings == ()
 
 
 def test_degenerate_face_repeated_vertex(tmp_path):

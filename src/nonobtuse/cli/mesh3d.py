@@ -19,7 +19,6 @@ def register(sub: argparse._SubParsersAction) -> None:
                                        "for encroachment (exact); report control-volume coefficients")
     p.add_argument("input", help=".off .obj .ply .stl .poly .smesh")
     p.add_argument("--backend", choices=("cgal", "tetgen", "ftetwild"), default="cgal")
-    p.add_argument("--fix-orientation", action="store_true", help="reorient inconsistently oriented faces")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     p.set_defaults(func=run_check3d)
 
@@ -37,7 +36,6 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "the writing (near-linear in the output) come on top")
     p.add_argument("--split", choices=("shells", "midpoint", "greedy"), default="shells",
                    help="how encroached subsegments are split (see refine_gabriel)")
-    p.add_argument("--fix-orientation", action="store_true", help="reorient inconsistently oriented faces")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     p.set_defaults(func=run_refine3d)
 
@@ -53,7 +51,7 @@ def _print(summary: dict[str, Any], as_json: bool) -> None:
 def run_check3d(args: argparse.Namespace) -> int:
     from nonobtuse.mesh3d import check_gabriel, control_volumes3d, load_plc, tetrahedralize
 
-    plc = load_plc(args.input, fix_orientation=args.fix_orientation)
+    plc = load_plc(args.input)
     mesh = tetrahedralize(plc, args.backend)
     report = check_gabriel(mesh)
     facets, segments = len(report.faces), len(report.segments)
@@ -61,6 +59,7 @@ def run_check3d(args: argparse.Namespace) -> int:
                "tets": len(mesh.tets),
                "boundary_faces": len(mesh.boundary_faces), "steiner_points": mesh.stats["steiner_points"],
                "encroached_facets": facets, "encroached_segments": segments,
+               "warnings": mesh.stats["warnings"],
                "gabriel": report.to_dict(), "control_volumes": control_volumes3d(mesh).to_dict()}
     _print(summary, args.json)
     return EXIT_OK if facets == 0 and segments == 0 else EXIT_VIOLATIONS
@@ -70,7 +69,7 @@ def run_refine3d(args: argparse.Namespace) -> int:
     from nonobtuse.mesh3d import control_volumes3d, load_plc, refine_gabriel, write_tetmesh
 
     t0 = time.perf_counter()
-    plc = load_plc(args.input, fix_orientation=args.fix_orientation)
+    plc = load_plc(args.input)
     limits = {k: v for k, v in (("max_steiner", args.max_steiner), ("min_length", args.min_length),
                                   ("time_limit", args.time_limit)) if v is not None}
     print(f"refine3d: {args.input}: {len(plc.points)} points, {len(plc.triangles)} triangles; refining "

@@ -99,7 +99,7 @@ class Gabriel3DResult:
             some facet; boundary_faces are then the subfacets, oriented like the input triangles),
             smallest_subsegment, min_length (the value used), seconds,
             diagnosis (smallest input angles with kind/degrees/vertices/facets, Steiner points per input
-            vertex and per input segment, stop_reason).
+            vertex and per input segment, stop_reason), warnings (the PLC's, from validation).
     report: the GabrielReport of mesh.
     """
 
@@ -209,6 +209,7 @@ def refine_gabriel(
         "volume_mesh": d["volume_mesh"],
         "seconds": d["seconds"],
         "diagnosis": d["diagnosis"],
+        "warnings": list(plc.warnings),
     }
     mesh = TetMesh(
         points=d["points"],

@@ -138,11 +138,11 @@ def facet_boundary_segments(triangles: np.ndarray, facet_ids: np.ndarray) -> np.
     return ef.edges[lo != hi]
 
 
-def build_plc(raw: RawInput, *, surface: bool, fix_orientation: bool = False) -> PLC:
-    """Triangulate, validate, merge coplanar facets (surfaces only) and collect segments."""
+def build_plc(raw: RawInput, *, surface: bool) -> PLC:
+    """Triangulate, validate (and orient), merge coplanar facets (surfaces only) and collect segments."""
     tris, ids, dangling = triangulate_facets(raw)
     plc = PLC(raw.points, tris, ids, holes=raw.holes, regions=raw.regions, source=raw.source)
-    plc = validate_plc(plc, require_manifold=surface, fix_orientation=fix_orientation)
+    plc = validate_plc(plc, oriented_format=surface)
     if surface:
         plc = merge_coplanar_facets(plc)
     segs = facet_boundary_segments(plc.triangles, plc.facet_ids)
@@ -151,14 +151,16 @@ def build_plc(raw: RawInput, *, surface: bool, fix_orientation: bool = False) ->
     return replace(plc, segments=segs)
 
 
-def load_plc(path: str | Path, *, fix_orientation: bool = False) -> PLC:
+def load_plc(path: str | Path) -> PLC:
     """Read and validate a PLC from `path` (format by suffix, see the module docstring).
 
     Returns a PLC with the file's vertices in file order (STL: distinct vertices in order of first
-    occurrence), triangulated facets, facet ids, segments, holes and regions. Surfaces must be closed,
-    manifold (edges and vertices), consistently oriented (or `fix_orientation=True`: reoriented by BFS, each
-    component outward), without degenerate, duplicate or self-intersecting faces. Raises InvalidInputError
-    naming the problem and where. Cost: O(m log m) for m triangles plus the self-intersection sweep.
+    occurrence), triangulated facets (oriented consistently where they can be, each component outward),
+    facet ids, segments, holes, regions and warnings. Any PLC TetGen accepts loads, whatever the format:
+    non-manifold edges and vertices, internal facets, several regions, dangling facets, any orientation (see
+    :func:`~nonobtuse.mesh3d.validate3d.validate_plc`). Raises InvalidInputError naming the problem and where
+    for degenerate, duplicate or self-intersecting faces, faces that enclose no volume, bad indices or
+    coordinates. Cost: O(m log m) for m triangles plus the self-intersection sweep.
     """
     path = Path(path)
     suffix = path.suffix.lower()
@@ -167,4 +169,4 @@ def load_plc(path: str | Path, *, fix_orientation: bool = False) -> PLC:
     if not path.exists():
         raise InvalidInputError(f"{path}: no such file")
     raw = READERS[suffix](path)
-    return build_plc(raw, surface=suffix in SURFACE_SUFFIXES, fix_orientation=fix_orientation)
+    return build_plc(raw, surface=suffix in SURFACE_SUFFIXES)

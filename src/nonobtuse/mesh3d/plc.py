@@ -22,6 +22,7 @@ class PLC:
     holes:      (h, 3) float64 volume-hole seeds.
     regions:    (r, 4) float64 rows x, y, z, attribute.
     source:     where it came from, for messages.
+    warnings:   what validation accepted but a user should know (dangling faces, faces it reoriented).
     """
 
     points: np.ndarray
@@ -31,6 +32,7 @@ class PLC:
     holes: np.ndarray = field(default_factory=lambda: np.zeros((0, 3), dtype=np.float64))
     regions: np.ndarray = field(default_factory=lambda: np.zeros((0, 4), dtype=np.float64))
     source: str = "<memory>"
+    warnings: tuple[str, ...] = ()
 
 
 @dataclass

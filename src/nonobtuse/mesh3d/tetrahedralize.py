@@ -189,7 +189,8 @@ def tetrahedralize(plc: PLC, backend: str = "cgal", **options: Any) -> TetMesh:
     ``switches=``, ftetwild the pytetwild keywords such as ``edge_length_r=``, ``epsilon=``).
 
     Returns a TetMesh: points (input points first, in input order), positively oriented tets, boundary faces
-    with markers, segments; stats with backend, seconds and steiner_points (output points not in the input).
+    with markers, segments; stats with backend, seconds, steiner_points (output points not in the input) and
+    warnings (the PLC's, from validation).
     What each backend guarantees is in the module docstring. Raises InvalidInputError for an unknown backend
     or option, or when the backend fails on the input.
     """
@@ -199,5 +200,5 @@ def tetrahedralize(plc: PLC, backend: str = "cgal", **options: Any) -> TetMesh:
     mesh = _BACKEND_FUNCS[backend](plc, dict(options))
     seconds = time.perf_counter() - t0
     stats = {"backend": backend, "seconds": seconds, "steiner_points": len(mesh.points) - len(plc.points),
-             **mesh.stats}
+             "warnings": list(plc.warnings), **mesh.stats}
     return replace(mesh, stats=stats)

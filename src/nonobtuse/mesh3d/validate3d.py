@@ -98,72 +98,57 @@ def check_faces(plc: PLC) -> None:
                                 f"{sorted(t[g].tolist())}{_where(plc)}")
 
 
-def check_closed(plc: PLC, ef: EdgeFaces, *, require_manifold: bool) -> None:
-    """Raise on a boundary edge (one face: the surface is not closed) and, when `require_manifold`, on an edge
-    in more than two faces. PLCs with several regions share internal facets: there an edge may have more."""
+def dangling_faces(ef: EdgeFaces, m: int) -> np.ndarray:
+    """Per face (m,), whether it is dangling: peeled off by repeatedly removing faces that have an edge no
+    other remaining face contains. What remains is the part of the PLC that can enclose volume (every edge in
+    two or more remaining faces); the peeled faces are dangling facets (fins, open sheets).
+    Cost: O(m log m) plus O(1) per peeled face."""
+    count = ef.count.copy()
+    order = np.argsort(ef.of_corner, kind="stable")  # corner rows grouped by edge
+    start = np.searchsorted(ef.of_corner[order], np.arange(len(count) + 1))
+    removed = np.zeros(m, dtype=bool)
+    stack = np.unique(np.flatnonzero(count[ef.of_corner] == 1) // 3).tolist()
+    while stack:
+        f = stack.pop()
+        if removed[f]:
+            continue
+        removed[f] = True
+        for e in ef.of_corner[3 * f:3 * f + 3].tolist():
+            count[e] -= 1
+            if count[e] == 1:  # the last face left on e is now dangling too
+                stack += [g for g in (order[start[e]:start[e + 1]] // 3).tolist() if not removed[g]]
+    return removed
+
+
+def check_bounds_volume(plc: PLC, ef: EdgeFaces) -> list[str]:
+    """Raise when the faces enclose no volume (every face peels off as dangling, e.g. an open surface);
+    return a warning naming the dangling faces otherwise (none when there are none)."""
+    dangling = dangling_faces(ef, len(plc.triangles))
+    if not dangling.any():
+        return []
     open_e = np.flatnonzero(ef.count == 1)
-    if len(open_e):
-        a, b = ef.edges[open_e[0]]
-        raise InvalidInputError(
-            f"surface not closed: {len(open_e)} boundary edges, e.g. edge ({a}, {b}) of face "
-            f"{ef.faces_of(open_e[0])[0]} has no neighbour; {_pt(plc, a)}, {_pt(plc, b)}{_where(plc)}")
-    if require_manifold:
-        many = np.flatnonzero(ef.count > 2)
-        if len(many):
-            a, b = ef.edges[many[0]]
-            raise InvalidInputError(
-                f"non-manifold edge ({a}, {b}) shared by {ef.count[many[0]]} faces "
-                f"{ef.faces_of(many[0]).tolist()}; {_pt(plc, a)}, {_pt(plc, b)}{_where(plc)}")
+    a, b = ef.edges[open_e[0]]
+    where = (f"{len(open_e)} boundary edges, e.g. edge ({a}, {b}) of face {ef.faces_of(open_e[0])[0]} has "
+             f"no neighbour; {_pt(plc, a)}, {_pt(plc, b)}")
+    if dangling.all():
+        raise InvalidInputError(f"surface not closed: {where}; no part of it encloses a volume{_where(plc)}")
+    return [f"{int(dangling.sum())} dangling faces (not part of a closed surface; {where}): kept as dangling "
+            f"facets, which bound nothing"]
 
 
-def fans_per_vertex(plc: PLC, ef: EdgeFaces) -> np.ndarray:
-    """Per vertex, the number of fans its faces form (1 for a manifold vertex, 0 for an unused one).
-
-    The corners (face, vertex) around a vertex are joined when their faces share an edge (of exactly two
-    faces) through the vertex; each group is a fan. Corner k of face f is number 3f + k. Cost: O(m log m)."""
-    t = plc.triangles
-    m = len(t)
-    # Each triangle edge (row 3f + k: t[f,k] -> t[f,k+1]) touches corners k and k+1 of face f. Two faces
-    # sharing the edge join their corners at each endpoint. Only manifold edges (two faces) matter here.
-    f_of = np.arange(3 * m) // 3
-    k_of = np.arange(3 * m) % 3
-    r1, r2 = manifold_face_pairs(ef)
-    rows, cols = [], []
-    for end in (0, 1):  # both endpoints of the shared edge
-        v1 = t[f_of[r1], (k_of[r1] + end) % 3]
-        # the corner of face 2 at the same vertex
-        k2 = np.where(t[f_of[r2], k_of[r2]] == v1, k_of[r2], (k_of[r2] + 1) % 3)
-        rows.append(3 * f_of[r1] + (k_of[r1] + end) % 3)
-        cols.append(3 * f_of[r2] + k2)
-    rows, cols = np.concatenate(rows), np.concatenate(cols)
-    graph = coo_matrix((np.ones(len(rows)), (rows, cols)), shape=(3 * m, 3 * m))
-    _, label = connected_components(graph, directed=False)
-    vertex_of_corner = t.ravel()
-    fans = np.unique(np.stack([vertex_of_corner, label], axis=1), axis=0)
-    return np.bincount(fans[:, 0], minlength=len(plc.points))
-
-
-def check_manifold_vertices(plc: PLC, ef: EdgeFaces) -> None:
-    """Raise on a vertex whose faces form more than one fan (two surface sheets touching at a point)."""
-    fans = fans_per_vertex(plc, ef)
-    bad = np.flatnonzero(fans > 1)
-    if len(bad):
-        v = bad[0]
-        raise InvalidInputError(f"non-manifold {_pt(plc, v)}: its faces form {fans[v]} separate fans "
-                                f"(surface sheets touching at a point){_where(plc)}")
-
-
-def orientation_flips(plc: PLC, ef: EdgeFaces) -> np.ndarray | None:
-    """Per face, whether to reverse it so that every two faces sharing an edge traverse it in opposite
-    directions; None when they already do. Raises on a non-orientable surface. BFS per connected component
-    (faces joined by manifold edges); each component keeps the orientation of its lowest face."""
+def orientation_flips(plc: PLC, ef: EdgeFaces, *, warn_reversed: bool = True) -> tuple[np.ndarray, list[str]]:
+    """Per face, whether to reverse it so that every two faces sharing an edge of exactly two faces traverse
+    it in opposite directions, and warnings. BFS per connected component (faces joined by such edges); each
+    component keeps the orientation of its lowest face. A non-orientable component (Moebius-like) keeps the
+    BFS orientation, consistent except across some edges, and gets a warning naming one of them; with
+    `warn_reversed`, reversed faces get one too."""
     t = plc.triangles
     m = len(t)
     d = directed_edges(t)
     r1, r2 = manifold_face_pairs(ef)
     same_direction = d[r1, 0] == d[r2, 0]  # both faces traverse the edge the same way: one must flip
     if not same_direction.any():
-        return None
+        return np.zeros(m, dtype=bool), []
     f1, f2 = r1 // 3, r2 // 3
     # parity graph: traverse; flip[g] = flip[f] xor same_direction(f, g)
     graph = coo_matrix((np.ones(len(f1)), (f1, f2)), shape=(m, m)).tocsr()
@@ -172,26 +157,39 @@ def orientation_flips(plc: PLC, ef: EdgeFaces) -> np.ndarray | None:
     for a, b, s in zip(f1.tolist(), f2.tolist(), same_direction.tolist()):
         parity[(a, b)] = parity[(b, a)] = s
     flip = np.full(m, -1, dtype=np.int8)
+    component = np.full(m, -1, dtype=np.int64)
     for root in range(m):
         if flip[root] >= 0:
             continue
         flip[root] = 0
         nodes, pred = breadth_first_order(graph, root, directed=False, return_predecessors=True)
+        component[nodes] = root
         for g in nodes[1:]:
             flip[g] = flip[pred[g]] ^ parity[(pred[g], g)]
+    # Per component, the faces in the minority orientation are the ones "reversed relative to their
+    # neighbours".
+    flipped = np.bincount(component, weights=flip, minlength=m)
+    size = np.bincount(component, minlength=m)
+    reversed_faces = int(np.minimum(flipped, size - flipped).sum())
+    warnings = []
+    if reversed_faces and warn_reversed:
+        f = int(np.flatnonzero(flip != (flipped[component] * 2 > size[component]))[0])
+        warnings.append(f"inconsistent orientation: {reversed_faces} faces (e.g. face {f} {t[f].tolist()}) "
+                        f"were reversed relative to their neighbours (two faces traversed a shared edge in "
+                        f"the same direction); reoriented")
     bad = np.flatnonzero((flip[f1] ^ flip[f2]) != same_direction)
     if len(bad):
         a, b = np.sort(d[r1[bad[0]]])
-        raise InvalidInputError(f"non-orientable surface (Moebius-like): no consistent orientation across "
-                                f"edge "
-                                f"({a}, {b}) of faces {f1[bad[0]]} and {f2[bad[0]]}{_where(plc)}")
-    return flip.astype(bool)
+        warnings.append(f"non-orientable surface (Moebius-like): no consistent orientation across edge "
+                        f"({a}, {b}) of faces {f1[bad[0]]} and {f2[bad[0]]}; left inconsistent there")
+    return flip.astype(bool), warnings
 
 
 def outward_flips(plc: PLC, triangles: np.ndarray) -> np.ndarray:
-    """Per face, whether to reverse it so that each connected component of the (consistently oriented) surface
-    encloses a positive signed volume, i.e. faces outward. Cavities (nested shells) come out outward-facing as
-    well: orient those by hand. The sign is a floating-point sum; it is a convention, not a certificate."""
+    """Per face, whether to reverse it so that each connected component of the (consistently oriented)
+    surface (faces joined by edges of exactly two faces) encloses a positive signed volume, i.e. faces
+    outward. Cavities (nested shells) come out outward-facing as well. The sign is a floating-point sum; it is
+    a convention for writers and viewers, not a certificate, and nothing downstream depends on it."""
     m = len(triangles)
     r1, r2 = manifold_face_pairs(edge_faces(triangles))
     graph = coo_matrix((np.ones(len(r1)), (r1 // 3, r2 // 3)), shape=(m, m))
@@ -202,24 +200,15 @@ def outward_flips(plc: PLC, triangles: np.ndarray) -> np.ndarray:
     return comp_vol[comp] < 0
 
 
-def check_orientation(plc: PLC, ef: EdgeFaces, *, fix: bool) -> PLC:
-    """Check (or, with `fix`, repair) that faces sharing an edge are consistently oriented; with `fix` the
-    result also faces outward per component (see :func:`outward_flips`)."""
-    flip = orientation_flips(plc, ef)
-    if flip is not None and not fix:
-        f = int(np.argmax(flip))
-        raise InvalidInputError(
-            f"inconsistent orientation: face {f} {plc.triangles[f].tolist()} is reversed relative to its "
-            f"neighbours (two faces traverse a shared edge in the same direction); load with "
-            f"fix_orientation=True to reorient{_where(plc)}")
-    if not fix:
-        return plc
+def orient_faces(plc: PLC, ef: EdgeFaces, *, warn_reversed: bool = True) -> tuple[PLC, list[str]]:
+    """The PLC with its faces oriented consistently where they can be (see :func:`orientation_flips`) and each
+    component outward (see :func:`outward_flips`), and the warnings: orientation is never refused."""
+    flip, warnings = orientation_flips(plc, ef, warn_reversed=warn_reversed)
     t = plc.triangles.copy()
-    if flip is not None:
-        t[flip] = t[flip][:, ::-1]
+    t[flip] = t[flip][:, ::-1]
     out = outward_flips(plc, t)
     t[out] = t[out][:, ::-1]
-    return replace(plc, triangles=t)
+    return replace(plc, triangles=t), warnings
 
 
 def check_self_intersections(plc: PLC) -> None:
@@ -231,26 +220,24 @@ def check_self_intersections(plc: PLC) -> None:
                                 f"{plc.triangles[j].tolist()} intersect{_where(plc)}")
 
 
-def validate_plc(plc: PLC, *, require_manifold: bool = True, fix_orientation: bool = False) -> PLC:
-    """Validate a triangulated PLC; return it (with faces reoriented when `fix_orientation`).
+def validate_plc(plc: PLC, *, oriented_format: bool = True) -> PLC:
+    """Validate a triangulated PLC; return it with its faces oriented and its warnings.
 
-    Checks, in order: non-empty and finite coordinates; no degenerate (repeated vertex, exactly collinear) or
-    duplicate faces; closed (every edge in at least two faces); with `require_manifold` (surface inputs: OFF,
-    OBJ, PLY, STL) also manifold edges (exactly two faces), manifold vertices (one fan) and consistent
-    orientation; finally no self-intersection (exact). PLCs with several regions (.poly/.smesh) have internal
-    facets and legitimately non-manifold edges: pass require_manifold=False. Their facet orientation is free
-    (TetGen ignores it), so when such a PLC is a manifold surface after all (every edge in two faces, every
-    vertex one fan) it is reoriented consistently and outward; otherwise its orientation is left as given.
+    A PLC is what TetGen accepts: facets may meet along non-manifold edges (internal facets between regions,
+    solids sharing an edge) and at non-manifold vertices, dangle (fins inside the volume), and need no
+    consistent orientation. Errors, in order: empty input, NaN or infinite coordinates; degenerate (repeated
+    vertex, exactly collinear) or duplicate faces; no enclosed volume (every face dangling, e.g. an open
+    surface); self-intersections (exact). Not errors, but warnings in the returned PLC's `warnings`: dangling
+    faces, faces reoriented because their neighbours disagreed, non-orientable pieces. Faces are oriented
+    consistently per component (faces joined by edges of exactly two faces) and each component outward.
+    oriented_format: whether the input format gives faces an orientation (surfaces: OFF, OBJ, PLY, STL).
+    TetGen .poly/.smesh facets have none: pass False and they are oriented the same way, without the warning.
     Cost: O(m log m) plus the candidate pairs of the self-intersection sweep.
     """
     check_points(plc)
     check_faces(plc)
     ef = edge_faces(plc.triangles)
-    check_closed(plc, ef, require_manifold=require_manifold)
-    if require_manifold:
-        check_manifold_vertices(plc, ef)
-        plc = check_orientation(plc, ef, fix=fix_orientation)
-    elif (ef.count == 2).all() and (fans_per_vertex(plc, ef) <= 1).all():
-        plc = check_orientation(plc, ef, fix=True)
+    warnings = check_bounds_volume(plc, ef)
+    plc, oriented = orient_faces(plc, ef, warn_reversed=oriented_format)
     check_self_intersections(plc)
-    return plc
+    return replace(plc, warnings=(*plc.warnings, *warnings, *oriented))
