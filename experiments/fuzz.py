@@ -1,0 +1,337 @@
+"""Fuzzing the 2D and 3D refinements with random valid and near-degenerate inputs (hypothesis).
+
+Every run must end with a status (an InvalidInputError is allowed only for an input the validation refuses),
+and every converged output is re-checked here, independently of the C++ certificate, in exact arithmetic:
+
+- 2D (:func:`check_refine_2d`): no constraint side (boundary or either side of an interface) is obtuse and
+  every unconstrained edge is locally Delaunay (the rational oracle of ``tests/refine_helpers.py``), and the
+  mesh starts with the input points, unchanged.
+- 3D (:func:`check_refine_3d`): no mesh vertex lies strictly inside the diametral sphere of any boundary
+  subfacet or subsegment (:func:`gabriel_violations`, integer arithmetic on the stored doubles).
+
+Inputs (:func:`domains`, :func:`plcs`): star-shaped polygons with near-collinear vertices, tiny angles, points
+a relative 1e-3..1e-15 off a segment, interior points, a hole or radial interfaces; stacks of thin layers
+(thickness down to 1e-7 of the width) with bent interfaces; each scaled by 1e-8..1e9 and shifted up to 1e9.
+3D: convex hulls of 4..8 random points (flat ones included), scaled and shifted, and the termination-map
+families (``plc_families.py``) at random angles.
+
+Short mode: ``tests/test_fuzz.py`` (derandomized, a fixed number of examples). Long mode, for manual runs:
+``python experiments/fuzz.py --minutes N [--seed S] [--dims 2,3]``: fresh seeds until the time is up; every
+failure is printed with its falsifying input (hypothesis's shrunk example) and the run exits 1.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import sys
+import time
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import seed as hypothesis_seed
+from hypothesis import strategies as st
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path[:0] = [str(ROOT / "tests"), str(ROOT)]  # the oracle; experiments.plc_families
+
+import nonobtuse  # noqa: E402
+from experiments.plc_families import FAMILIES, make_plc  # noqa: E402
+from nonobtuse import Domain, InvalidInputError  # noqa: E402
+from nonobtuse.io.raw3d import Facet, RawInput  # noqa: E402
+from nonobtuse.mesh3d import PLC, refine_gabriel  # noqa: E402
+from nonobtuse.mesh3d.load import build_plc  # noqa: E402
+from nonobtuse.refine import STRATEGIES  # noqa: E402
+from nonobtuse.validate import validate_domain  # noqa: E402
+from refine_helpers import non_delaunay_edges, obtuse_constraint_sides  # noqa: E402
+
+STATUSES_2D = ("converged", "budget_exhausted", "stalled")
+STATUSES_3D = ("converged", "budget_exhausted", "min_length_reached", "stalled")
+MAX_STEINER_2D = 3000
+MAX_STEINER_3D, TIME_LIMIT_3D = 3000, 10.0
+# A hang is a failure; one example takes milliseconds (2D) to seconds (3D), on a machine shared with others.
+DEADLINE_MS = 60_000
+
+# ---- 2D inputs ---------------------------------------------------------------------------------------------
+
+exponents = st.integers(3, 15)
+
+
+@st.composite
+def star_polygon(draw) -> np.ndarray:
+    """n >= 6 vertices at angles 2 pi (k + u_k) / n (u_k in [0, 1): gaps below 2 pi / 3, so the polygon is
+    simple and the disk of radius r_min / 2 around the origin is inside), radii in [0.5, 1.5]; the jitter
+    may put two vertices at a tiny angle apart."""
+    n = draw(st.integers(6, 12))
+    u = draw(st.lists(st.one_of(st.floats(0, 1, exclude_max=True), st.just(1 - 1e-9), st.just(0.0)),
+                      min_size=n, max_size=n))
+    r = draw(st.lists(st.floats(0.5, 1.5), min_size=n, max_size=n))
+    a = 2 * math.pi * (np.arange(n) + np.array(u)) / n
+    return np.c_[np.array(r) * np.cos(a), np.array(r) * np.sin(a)]
+
+
+@st.composite
+def near_collinear(draw, loop: np.ndarray) -> np.ndarray:
+    """``loop`` with some edges bent at a point near their midpoint, 10^-e of the edge length off the line
+    (outward or inward: nearly collinear triples, a reflex vertex of angle nearly 180 degrees)."""
+    out = []
+    for i in range(len(loop)):
+        a, b = loop[i], loop[(i + 1) % len(loop)]
+        out.append(a)
+        if draw(st.booleans()):
+            normal = np.array([b[1] - a[1], a[0] - b[0]])
+            out.append((a + b) / 2 + draw(st.sampled_from((-1, 1))) * 10.0 ** -draw(exponents) * normal)
+    return np.array(out)
+
+
+def _loop(start: int, n: int) -> list[tuple[int, int]]:
+    return [(start + i, start + (i + 1) % n) for i in range(n)]
+
+
+@st.composite
+def star_domain(draw) -> Domain:
+    """A star polygon (maybe with near-collinear vertices), interior points (some 10^-e inside an edge) and
+    either a small square hole at the centre or radial interfaces from a centre point."""
+    outer = draw(near_collinear(draw(star_polygon())))
+    n = len(outer)
+    pts, seg, holes = [*outer], _loop(0, n), []
+    inner = 0.25 * float(np.min(np.hypot(outer[:, 0], outer[:, 1])))  # well inside the kernel disk
+    feature = draw(st.sampled_from(("none", "hole", "interfaces")))
+    if feature == "hole":
+        h = inner * draw(st.floats(1e-6, 0.3))
+        pts += [(-h, -h), (h, -h), (h, h), (-h, h)]
+        seg += _loop(n, 4)
+        holes.append((0.0, 0.0))
+    elif feature == "interfaces":
+        pts.append((0.0, 0.0))
+        ends = draw(st.sets(st.integers(0, n - 1), min_size=1, max_size=min(4, n)))
+        seg += [(n, e) for e in sorted(ends)]
+    lo = 0.5 * inner if feature == "hole" else 0.0
+    for _ in range(draw(st.integers(0, 5))):
+        ang, rad = draw(st.floats(0, 2 * math.pi)), draw(st.floats(lo, inner))
+        pts.append((rad * math.cos(ang), rad * math.sin(ang)))
+    for _ in range(draw(st.integers(0, 2))):  # a point a relative 10^-e inside the middle of an edge
+        i = draw(st.integers(0, n - 1))
+        a, b = outer[i], outer[(i + 1) % n]
+        inward = np.array([a[1] - b[1], b[0] - a[0]])  # the polygon is counter-clockwise
+        pts.append(tuple((a + b) / 2 + 10.0 ** -draw(exponents) * inward))
+    return Domain(np.array(pts, dtype=np.float64), np.array(seg, dtype=np.int64).reshape(-1, 2),
+                  np.array(holes, dtype=np.float64).reshape(-1, 2))
+
+
+@st.composite
+def thin_layers(draw) -> Domain:
+    """A unit-wide stack of 1..5 layers of thickness 10^-e (e in 0..7), its interfaces polylines through a
+    few breakpoints bent by under a third of the thinner neighbouring layer."""
+    t = [10.0 ** -draw(st.integers(0, 7)) * draw(st.floats(0.5, 1.0)) for _ in range(draw(st.integers(1, 5)))]
+    levels = np.concatenate([[0.0], np.cumsum(t)])
+    pts: list[tuple[float, float]] = []
+    rows = []  # per level: indices of its points, left to right
+    for i, y in enumerate(levels):
+        xs = sorted(set(draw(st.lists(st.floats(0.01, 0.99), max_size=3))))
+        room = min(t[max(i - 1, 0)], t[min(i, len(t) - 1)]) / 3
+        bends = [0.0 if i in (0, len(t)) else draw(st.floats(-1, 1)) * room for _ in xs]
+        row = [(0.0, y), *((x, y + b) for x, b in zip(xs, bends)), (1.0, y)]
+        rows.append(list(range(len(pts), len(pts) + len(row))))
+        pts += row
+    seg = [(r[j], r[j + 1]) for r in rows for j in range(len(r) - 1)]
+    seg += [(lo[end], hi[end]) for lo, hi in zip(rows, rows[1:]) for end in (0, -1)]  # the sides
+    return Domain(np.array(pts, dtype=np.float64), np.array(seg, dtype=np.int64))
+
+
+@st.composite
+def placed(draw, domain: Domain) -> Domain:
+    """``domain`` scaled by 10^k (k in -8..9), maybe rotated, and shifted by up to 1e9 (rounded: the
+    result may be invalid, which validation must then say)."""
+    s = 10.0 ** draw(st.integers(-8, 9))
+    c, sn = (1.0, 0.0) if draw(st.booleans()) else (math.cos(a := draw(st.floats(0, 6.3))), math.sin(a))
+    shift = np.array([draw(st.sampled_from((0.0, 1.0, 1e3, 1e6, 1e9))) * draw(st.sampled_from((-1, 1)))
+                      for _ in range(2)])
+    rot = np.array([[c, -sn], [sn, c]])
+    move = lambda p: (p @ rot.T) * s + shift  # noqa: E731
+    holes = move(domain.holes) if len(domain.holes) else domain.holes
+    return Domain(move(domain.points), domain.segments, holes)
+
+
+domains = st.one_of(star_domain(), thin_layers()).flatmap(placed)
+
+
+def check_refine_2d(domain: Domain, strategy: str) -> str:
+    """Validate and refine ``domain``; returns ``"invalid"`` or the status. Raises AssertionError when the run
+    ends otherwise than with a status, or a converged mesh fails the exact re-check."""
+    try:
+        d = validate_domain(domain)
+    except InvalidInputError:
+        return "invalid"
+    result = nonobtuse.refine(d, strategy=strategy, max_steiner=MAX_STEINER_2D)
+    assert result.status in STATUSES_2D, result.status
+    m = result.mesh
+    assert np.array_equal(m.points[: len(d.points)], d.points), "the input points moved"
+    if result.status == "converged":
+        assert result.stats["obtuse_boundary_triangles"] == 0
+        assert obtuse_constraint_sides(m) == 0, "converged, but an obtuse constraint side (exact)"
+        assert non_delaunay_edges(m) == 0, "converged, but an unconstrained edge is not locally Delaunay"
+    return result.status
+
+
+# ---- 3D inputs ---------------------------------------------------------------------------------------------
+
+
+@st.composite
+def hull_plc(draw) -> PLC:
+    """The convex hull of 4..8 random points (flattened by 10^-e in z with some probability), outward
+    triangles, scaled by 10^k (k in -6..6) and shifted by up to 1e6."""
+    from scipy.spatial import ConvexHull, QhullError
+
+    n = draw(st.integers(4, 8))
+    p = np.array(draw(st.lists(st.tuples(*[st.floats(-1, 1)] * 3), min_size=n, max_size=n)))
+    if draw(st.booleans()):
+        p[:, 2] *= 10.0 ** -draw(st.integers(1, 6))
+    p = p * 10.0 ** draw(st.integers(-6, 6)) + draw(st.sampled_from((0.0, 1.0, 1e3, 1e6)))
+    try:
+        hull = ConvexHull(p)
+    except QhullError:
+        assume(False)
+    keep = np.unique(hull.simplices)
+    index = np.full(n, -1)
+    index[keep] = np.arange(len(keep))
+    faces = []
+    for s, eq in zip(hull.simplices, hull.equations):
+        a, b, c = p[s]
+        faces.append(s if np.dot(np.cross(b - a, c - a), eq[:3]) > 0 else s[::-1])
+    raw = RawInput(p[keep], [Facet([index[f]]) for f in faces], source="hull")
+    try:
+        return build_plc(raw, surface=True, fix_orientation=True)
+    except InvalidInputError:
+        assume(False)
+
+
+@st.composite
+def family_plc(draw) -> PLC:
+    """A termination-map family member at a random angle of 5..120 degrees (k = 3..6 where used)."""
+    name = draw(st.sampled_from(sorted(FAMILIES)))
+    k = draw(st.integers(3, 6)) if FAMILIES[name].uses_k else None
+    theta = draw(st.floats(5, 120))
+    assume(FAMILIES[name].accepts(theta, k))
+    return make_plc(name, theta, k)
+
+
+plcs = st.one_of(hull_plc(), family_plc())
+
+
+def _integer_grid(points: np.ndarray) -> list[tuple[int, int, int]]:
+    """The points as exact integers: every coordinate times the common power-of-two denominator."""
+    fr = [[Fraction(float(x)) for x in p] for p in points]
+    den = max((f.denominator for p in fr for f in p), default=1)
+    return [tuple(int(f * den) for f in p) for p in fr]
+
+
+def _sub(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def _dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def _cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def gabriel_violations(points: np.ndarray, faces: np.ndarray, segments: np.ndarray) -> int:
+    """Boundary subfacets and subsegments with a vertex of ``points`` strictly inside their diametral sphere,
+    decided exactly in integers. For a triangle a, b, c (u = b - a, v = c - a, n = u x v) the sphere's centre
+    is a + w / (2 |n|^2) with w = (|u|^2 v - |v|^2 u) x n, so the power of p is
+    (|p - a|^2 |n|^2 - (p - a).w) / |n|^2: p is inside iff |p - a|^2 |n|^2 < (p - a).w. For a segment a, b:
+    (p - a).(p - b) < 0. Cost: O((f + k) n) big-integer operations: for small meshes only."""
+    q = _integer_grid(points)
+    bad = 0
+    for a, b, c in np.asarray(faces).tolist():
+        u, v = _sub(q[b], q[a]), _sub(q[c], q[a])
+        n = _cross(u, v)
+        nn = _dot(n, n)
+        w = _cross(tuple(_dot(u, u) * v[i] - _dot(v, v) * u[i] for i in range(3)), n)
+        bad += any(_dot(d := _sub(p, q[a]), d) * nn < _dot(d, w) for p in q)
+    for a, b in np.asarray(segments).tolist():
+        bad += any(_dot(_sub(p, q[a]), _sub(p, q[b])) < 0 for p in q)
+    return bad
+
+
+def check_refine_3d(plc: PLC) -> str:
+    """Refine ``plc`` with hard limits; returns the status. Raises AssertionError when the run ends otherwise
+    than with a status, or a converged mesh fails the exact re-check."""
+    result = refine_gabriel(plc, max_steiner=MAX_STEINER_3D, time_limit=TIME_LIMIT_3D)
+    assert result.status in STATUSES_3D, result.status
+    m = result.mesh
+    assert np.array_equal(m.points[: len(plc.points)], plc.points), "the input points moved"
+    if result.status == "converged":
+        assert result.stats["encroached_facets"] == 0 and result.stats["encroached_segments"] == 0
+        assert gabriel_violations(m.points, m.boundary_faces, m.segments) == 0, "converged, not Gabriel"
+    return result.status
+
+
+# ---- runners -----------------------------------------------------------------------------------------------
+
+
+def run_2d(examples: int, seed: int | None = None, outcomes: dict | None = None) -> None:
+    """``examples`` random domains, each refined by a random strategy; derandomized when ``seed`` is None.
+    Counts the outcomes (status or "invalid") in ``outcomes``. Raises the first failure, shrunk."""
+    outcomes = {} if outcomes is None else outcomes
+
+    @_settings(examples, seed)
+    @given(domains, st.sampled_from(STRATEGIES))
+    def prop(domain, strategy):
+        status = check_refine_2d(domain, strategy)
+        outcomes[status] = outcomes.get(status, 0) + 1
+
+    (prop if seed is None else hypothesis_seed(seed)(prop))()
+
+
+def run_3d(examples: int, seed: int | None = None, outcomes: dict | None = None) -> None:
+    """``examples`` random small PLCs, refined with hard limits; as :func:`run_2d`."""
+    outcomes = {} if outcomes is None else outcomes
+
+    @_settings(examples, seed)
+    @given(plcs)
+    def prop(plc):
+        status = check_refine_3d(plc)
+        outcomes[status] = outcomes.get(status, 0) + 1
+
+    (prop if seed is None else hypothesis_seed(seed)(prop))()
+
+
+def _settings(examples: int, seed: int | None) -> settings:
+    return settings(max_examples=examples, deadline=DEADLINE_MS, derandomize=seed is None, database=None,
+                    suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--minutes", type=float, default=5.0, help="run time (default 5)")
+    parser.add_argument("--seed", type=int, default=0, help="first seed; each round takes the next")
+    parser.add_argument("--dims", default="2,3", help="2, 3 or 2,3 (default)")
+    parser.add_argument("--examples", type=int, default=200, help="examples per round (default 200)")
+    args = parser.parse_args(argv)
+    runners = {"2": run_2d, "3": run_3d}
+    dims = args.dims.split(",")
+    end = time.monotonic() + 60 * args.minutes
+    failures, seed = 0, args.seed
+    outcomes: dict[str, dict[str, int]] = {d: {} for d in dims}
+    while time.monotonic() < end:
+        for d in dims:
+            examples = args.examples if d == "2" else max(1, args.examples // 10)
+            try:
+                runners[d](examples, seed, outcomes[d])
+            except Exception as e:  # a failure: hypothesis printed the shrunk input; keep fuzzing
+                failures += 1
+                print(f"FAILURE {d}D seed {seed}: {type(e).__name__}: {e}", flush=True)
+            print(f"{d}D seed {seed}: outcomes so far {outcomes[d]}", flush=True)
+        seed += 1
+    print(f"{failures} failure(s) in {seed - args.seed} round(s)")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,57 @@
+"""The fuzzer's short mode (experiments/fuzz.py): random valid and near-degenerate 2D domains and small 3D
+PLCs, derandomized. Every run ends with a status (or InvalidInputError for an input validation refuses), and
+every converged mesh passes the exact re-check (rational oracle in 2D, integer diametral-sphere test in 3D).
+The long mode: ``python experiments/fuzz.py --minutes N``."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from experiments import fuzz
+
+from nonobtuse import Domain
+
+
+def test_fuzz_2d_short():
+    outcomes: dict[str, int] = {}
+    fuzz.run_2d(examples=80, outcomes=outcomes)
+    # the generators mostly make valid inputs, and most of those converge
+    assert outcomes.get("converged", 0) > sum(outcomes.values()) / 2, outcomes
+
+
+def test_fuzz_3d_short():
+    outcomes: dict[str, int] = {}
+    fuzz.run_3d(examples=8, outcomes=outcomes)
+    assert outcomes.get("converged", 0) >= 1, outcomes
+
+
+def test_the_3d_oracle_sees_an_encroached_facet_and_segment():
+    # The low tet: the apex (1, 1, 2) is at distance sqrt(6) < 2 sqrt(2) from the circumcentre (2, 2, 0) of
+    # the base (0,0,0), (4,0,0), (0,4,0): inside the base's diametral sphere. The base edge (4,0,0)-(0,4,0)
+    # has centre (2, 2, 0), radius 2 sqrt(2): the apex is inside that sphere too; the other edges are
+    # not encroached ((p - a).(p - b) >= 0 for every vertex p), nor are the side faces.
+    pts = np.array([[0, 0, 0], [4, 0, 0], [0, 4, 0], [1, 1, 2]], dtype=np.float64)
+    faces = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+    edges = np.array([[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]])
+    assert fuzz.gabriel_violations(pts, faces[:1], edges[3:4]) == 2
+    assert fuzz.gabriel_violations(pts, faces[1:], edges[[0, 1, 2, 4, 5]]) == 0
+    # Raised to (1, 1, 3): |apex - (2,2,0)|^2 = 11 > 8, outside both spheres.
+    pts[3, 2] = 3
+    assert fuzz.gabriel_violations(pts, faces[:1], edges[3:4]) == 0
+
+
+def test_the_2d_check_refuses_a_mesh_that_lies(monkeypatch):
+    # A refinement that claims convergence on the obtuse triangle (0,0), (4,0), (2,1) (the apex angle is
+    # 126.87 degrees) without adding a point: the exact re-check must catch it.
+    domain = Domain(np.array([[0, 0], [4, 0], [2, 1]], dtype=np.float64), np.array([[0, 1], [1, 2], [2, 0]]))
+    real = fuzz.nonobtuse.refine
+
+    def lying_refine(d, **kw):
+        r = real(d, max_steiner=0)
+        r.status = "converged"
+        r.stats["obtuse_boundary_triangles"] = 0
+        return r
+
+    monkeypatch.setattr(fuzz.nonobtuse, "refine", lying_refine)
+    with pytest.raises(AssertionError, match="obtuse constraint side"):
+        fuzz.check_refine_2d(domain, "greedy")
