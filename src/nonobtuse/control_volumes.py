@@ -20,7 +20,7 @@ import numpy as np
 import scipy.sparse
 
 from nonobtuse import _core
-from nonobtuse.check import core_mesh_arguments
+from nonobtuse.certificate import core_mesh_arguments
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh import Mesh
 
@@ -33,7 +33,7 @@ class ControlVolumes:
     areas:        (n,) float64 > 0 for every vertex of a triangle: the Voronoi control volume of each vertex
                   clipped to the domain (see :func:`voronoi_areas`); sums to the domain area.
     edges:        (E, 2) int64, a < b, sorted.
-    kind:         (E,) int8 index into ``nonobtuse.check.KINDS`` (boundary, interface, interior).
+    kind:         (E,) int8 index into ``nonobtuse.certificate.KINDS`` (boundary, interface, interior).
     coefficients: (E,) float64 T_e (float evaluation).
     signs:        (E,) int8 exact sign of T_e: -1, 0, +1.
     """

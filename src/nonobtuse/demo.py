@@ -14,12 +14,12 @@ from collections.abc import Callable
 
 import numpy as np
 
-from nonobtuse.check import KINDS, check_mesh
+from nonobtuse.certificate import KINDS, check_mesh
 from nonobtuse.control_volumes import control_volumes
 from nonobtuse.domain import Domain
 from nonobtuse.mesh import Mesh
-from nonobtuse.refine import refine
-from nonobtuse.triangulate import triangulate
+from nonobtuse.refinement import refine
+from nonobtuse.triangulation import triangulate
 
 LENGTH_M = 4000.0
 # Curves from bottom to top: mean elevation (m), wave amplitude (m), wavelength (m), phase, sample count.

@@ -1,8 +1,16 @@
-"""The 2D input model: a planar straight-line graph (PSLG) and what lies inside it."""
+"""The 2D input model: a planar straight-line graph (PSLG) and what lies inside it.
+
+A :class:`Domain` is *validated* when :mod:`nonobtuse.validate` returned it (``load_domain`` and
+``validate_domain`` do): ``Domain.validated`` is then True, its arrays are its own (not the caller's), and
+assigning any field makes it unvalidated again (editing its arrays in place is not detected: don't). The API
+entry points (``triangulate``, ``check``, ``refine``) validate an unvalidated domain once and never validate a
+validated one again.
+"""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
+from typing import Any
 
 import numpy as np
 
@@ -53,6 +61,8 @@ class Domain:
     origin:   file lines of every item (set by the readers in :mod:`nonobtuse.io`), or None.
     repairs:  what validation changed (segments split at points lying on them, duplicate segments dropped),
               one sentence each; empty when the domain was used as given.
+    validated: read-only; True when :mod:`nonobtuse.validate` returned this domain and no field was assigned
+              since (see the module docstring). ``dataclasses.replace`` gives an unvalidated copy.
     """
 
     points: np.ndarray
@@ -63,6 +73,15 @@ class Domain:
     source: str = "<memory>"
     origin: SourceMap | None = None
     repairs: list[str] = field(default_factory=list)
+    _validated: bool = field(default=False, init=False, repr=False, compare=False)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        object.__setattr__(self, "_validated", False)  # any change voids the validator's word
+        object.__setattr__(self, name, value)
+
+    @property
+    def validated(self) -> bool:
+        return self._validated
 
     def __post_init__(self) -> None:
         self.points = _points(self.points, "points")
@@ -71,3 +90,17 @@ class Domain:
         self.holes = _points(self.holes, "holes")
         reg = np.asarray(self.regions, dtype=np.float64)
         self.regions = np.ascontiguousarray(reg.reshape(-1, 3) if reg.size else np.zeros((0, 3), np.float64))
+
+
+def mark_validated(domain: Domain) -> Domain:
+    """Set ``domain.validated``; only :mod:`nonobtuse.validate` calls this, on a domain it made and checked.
+    The arrays and ``repairs`` become copies, so that edits of the caller's arrays cannot change what was
+    checked (they stay writable: third-party code, e.g. Triangle's bindings, refuses read-only arrays).
+    Returns ``domain``. Cost: one copy of each array."""
+    for f in fields(domain):
+        value = getattr(domain, f.name)
+        if isinstance(value, np.ndarray):
+            object.__setattr__(domain, f.name, np.array(value))
+    object.__setattr__(domain, "repairs", list(domain.repairs))
+    object.__setattr__(domain, "_validated", True)
+    return domain

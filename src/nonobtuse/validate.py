@@ -26,8 +26,10 @@ dangling ends (points on exactly one segment) are named. Dangling segments insid
 face.poly's nostrils) have the domain on both sides and are allowed. With ``domain.convex_hull`` the hull
 edges close the boundary.
 
-Every repair is recorded as a sentence in ``Domain.repairs``. Cost: O(n log n) for sorting and the
-triangulation, plus the box-intersection search for segment pairs (near-linear for real inputs).
+Every repair is recorded as a sentence in ``Domain.repairs``. :func:`validate_domain` marks what it returns as
+validated (``Domain.validated``), so the API entry points (:func:`ensure_validated`) never check it twice.
+Cost: O(n log n) for sorting and the triangulation, plus the box-intersection search for segment pairs
+(near-linear for real inputs).
 """
 
 from __future__ import annotations
@@ -37,10 +39,10 @@ import dataclasses
 import numpy as np
 
 from nonobtuse import _core
-from nonobtuse.domain import Domain, SourceMap
+from nonobtuse.domain import Domain, SourceMap, mark_validated
 from nonobtuse.errors import InvalidInputError
 
-__all__ = ["check_coverage", "validate_domain", "validate_graph"]
+__all__ = ["check_coverage", "ensure_validated", "validate_domain", "validate_graph"]
 
 _SHOWN = 5  # how many offending items a message lists before "and N more"
 
@@ -49,22 +51,37 @@ _INSIDE, _OUTSIDE, _ON_BOUNDARY = 0, 1, 2
 
 
 def validate_domain(
-    domain: Domain, *, split_points_on_segments: bool = True, require_closed: bool = True
+    domain: Domain,
+    *,
+    split_points_on_segments: bool = True,
+    require_closed: bool = True,
+    decide_convex_hull: bool = False,
 ) -> Domain:
     """Check ``domain`` and return a repaired copy (``domain`` itself is not modified).
 
-    Inputs: a :class:`Domain`; its ``convex_hull`` flag says whether the convex hull closes the boundary.
+    Inputs: a :class:`Domain`; its ``convex_hull`` flag says whether the convex hull closes the boundary
+    (with ``decide_convex_hull``, the flag is decided instead, see :func:`check_coverage`).
     Output: a Domain whose segments are split at every point lying on them and free of duplicates, with the
-    repairs listed in ``repairs`` and ``origin`` line numbers following the split segments.
+    repairs listed in ``repairs`` and ``origin`` line numbers following the split segments. With
+    ``require_closed`` (the default) it is marked validated (``Domain.validated``: arrays of its own), and the
+    API entry points take it as it is; a domain checked with ``require_closed=False`` is not marked.
     Guarantees (all decided exactly): finite coordinates, pairwise distinct points, no zero-length, crossing,
     overlapping or duplicate segments, no point strictly inside a segment, hole and region seeds inside the
     domain; with ``require_closed``, a closed boundary and at least one triangle (see the module docstring).
     Raises :class:`InvalidInputError` naming the first problem found and where.
     """
-    return check_coverage(
+    d = check_coverage(
         validate_graph(domain, split_points_on_segments=split_points_on_segments),
         require_closed=require_closed,
+        decide_convex_hull=decide_convex_hull,
     )
+    return mark_validated(d) if require_closed else d
+
+
+def ensure_validated(domain: Domain) -> Domain:
+    """``domain`` itself when it is validated (``Domain.validated``), else ``validate_domain(domain)``: what
+    the API entry points call, so that a domain is validated exactly once. Raises as validate_domain."""
+    return domain if domain.validated else validate_domain(domain)
 
 
 def validate_graph(domain: Domain, *, split_points_on_segments: bool = True) -> Domain:
@@ -96,18 +113,17 @@ def validate_graph(domain: Domain, *, split_points_on_segments: bool = True) -> 
 def check_coverage(
     domain: Domain, *, require_closed: bool = True, decide_convex_hull: bool = False
 ) -> Domain:
-    """Check 6 of the module docstring on a domain that passed :func:`validate_graph`; returns ``domain``.
-
-    decide_convex_hull: set ``domain.convex_hull`` first: True when the segments enclose no area at all (a
-    point set, or only dangling segments), else False. Cost: one constrained Delaunay triangulation (two when
-    segments are present but enclose nothing).
+    """Check 6 of the module docstring on a domain that passed :func:`validate_graph`. Returns ``domain``,
+    or with ``decide_convex_hull`` a copy whose ``convex_hull`` is decided: True when the segments enclose no
+    area at all (a point set, or only dangling segments), else False. ``domain`` is not modified. Cost: one
+    constrained Delaunay triangulation (two when segments are present but enclose nothing).
     """
     d = domain
     if decide_convex_hull:
-        d.convex_hull = len(d.segments) == 0
+        d = dataclasses.replace(domain, convex_hull=len(domain.segments) == 0, repairs=list(domain.repairs))
     cov = _core.inspect_domain(d.points, d.segments, d.holes, d.regions, d.convex_hull)
     if decide_convex_hull and not d.convex_hull and not cov["encloses_area"]:
-        d.convex_hull = True
+        d = dataclasses.replace(d, convex_hull=True, repairs=list(d.repairs))
         cov = _core.inspect_domain(d.points, d.segments, d.holes, d.regions, True)
     for kind, places, inside in (
         (

@@ -45,7 +45,7 @@ from nonobtuse.io import json_formats, triangle
 from nonobtuse.io.meshio_formats import FORMATS as _MESHIO_FORMATS
 from nonobtuse.io.meshio_formats import read_meshio, write_meshio
 from nonobtuse.mesh import Mesh
-from nonobtuse.validate import check_coverage, validate_graph
+from nonobtuse.validate import validate_domain
 
 __all__ = ["is_mesh_file", "load_domain", "read_mesh", "write_mesh"]
 
@@ -62,16 +62,18 @@ def load_domain(
     does not close, like box.poly); False takes the domain to be what the closed segment loops enclose; None
     decides: the file's own ``convex_hull`` when it has one (domain .json), else True for a point set and for
     segments that enclose no area at all (only dangling constraints, as in the CDT library's inputs), else
-    False. Returns the validated, possibly repaired Domain (see its ``repairs``). Raises InvalidInputError
-    naming the file, and the line where known. Cost: reading plus validation, O(n log n).
+    False. Returns the validated (``Domain.validated``), possibly repaired Domain (see its ``repairs``).
+    Raises InvalidInputError naming the file, and the line where known. Cost: reading plus validation,
+    O(n log n).
     """
     path = Path(path)
     domain, file_hull = _read_domain(path)
     if convex_hull is None:
         convex_hull = file_hull
     domain.convex_hull = bool(convex_hull)
-    d = validate_graph(domain, split_points_on_segments=split_points_on_segments)
-    return check_coverage(d, require_closed=True, decide_convex_hull=convex_hull is None)
+    return validate_domain(
+        domain, split_points_on_segments=split_points_on_segments, decide_convex_hull=convex_hull is None
+    )
 
 
 def _read_domain(path: Path) -> tuple[Domain, bool | None]:

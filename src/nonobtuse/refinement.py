@@ -13,6 +13,7 @@ import numpy as np
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh import Mesh
+from nonobtuse.validate import ensure_validated
 
 STRATEGIES = ("greedy", "project-flip", "projection")
 CONVERGED, BUDGET_EXHAUSTED, STALLED = "converged", "budget_exhausted", "stalled"
@@ -70,7 +71,8 @@ def refine(
     Delaunay triangulation is nonobtuse opposite each constrained edge it has (boundary, interface or
     dangling segment).
 
-    domain:      a validated :class:`~nonobtuse.domain.Domain`: a PSLG with closed boundary loops (or
+    domain:      a :class:`~nonobtuse.domain.Domain`, validated once here unless it already is
+                 (``Domain.validated``; ``domain`` is not modified): a PSLG with closed boundary loops (or
                  ``convex_hull=True`` for point sets: the hull edges are the boundary), holes, interior
                  interfaces meeting at junctions, dangling segments, isolated points, region attributes.
                  Both sides of every interior constraint are refined, each nonobtuse on its own (each side
@@ -95,7 +97,7 @@ def refine(
     Deterministic. Cost: O(n log n) to triangulate plus, per Steiner point, the triangles meeting the
     diametral disk being refined.
     Raises InvalidInputError for an unknown strategy, a negative budget, a thread count below 1 or a domain
-    that cannot be triangulated.
+    that fails validation (it says what and where).
     """
     from nonobtuse import _core
 
@@ -105,6 +107,7 @@ def refine(
         raise InvalidInputError(f"max_steiner must be a non-negative integer, got {max_steiner!r}")
     if isinstance(threads, bool) or int(threads) != threads or threads < 1:
         raise InvalidInputError(f"threads must be a positive integer, got {threads!r}")
+    domain = ensure_validated(domain)
     r = _core.refine(
         domain.points,
         domain.segments,

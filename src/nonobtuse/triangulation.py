@@ -5,14 +5,16 @@ from __future__ import annotations
 from nonobtuse import _core
 from nonobtuse.domain import Domain
 from nonobtuse.mesh import Mesh
-from nonobtuse.validate import validate_domain
+from nonobtuse.validate import ensure_validated
 
 
 def triangulate(domain: Domain) -> Mesh:
     """Constrained Delaunay triangulation (CDT) of ``domain``, without Steiner points.
 
-    Input: a :class:`Domain`; it is validated first (``validate_domain``: duplicates, crossings, points inside
-    segments, open loops...), which may return a repaired copy (e.g. segments split at points lying on them).
+    Input: a :class:`Domain`; unless it is already validated (``Domain.validated``: from ``load_domain`` or
+    ``validate_domain``) it is validated once here (duplicates, crossings, points inside segments, open
+    loops...), which may give a repaired copy (e.g. segments split at points lying on them). ``domain`` is
+    not modified.
     Output: a :class:`Mesh` whose points are the validated domain's points in order, triangles (m, 3)
     counter-clockwise covering the domain minus holes, segments every constrained edge bordering the domain,
     ``regions`` the region attribute per triangle (0 where no seed reached), ``input_points`` /
@@ -20,7 +22,7 @@ def triangulate(domain: Domain) -> Mesh:
     Raises :class:`InvalidInputError` for a domain that cannot be triangulated (it says what and where).
     Cost: O(n log n) expected for n points.
     """
-    valid = validate_domain(domain)
+    valid = ensure_validated(domain)
     out = _core.triangulate(valid.points, valid.segments, valid.holes, valid.regions, valid.convex_hull)
     return Mesh(
         points=out["points"],

@@ -16,7 +16,7 @@ import numpy as np
 from nonobtuse import _core
 from nonobtuse.domain import Domain
 from nonobtuse.mesh import Mesh
-from nonobtuse.triangulate import triangulate
+from nonobtuse.triangulation import triangulate
 
 KINDS = ("boundary", "interface", "interior")  # index = EdgeKind in cpp/include/nonobtuse/check2d.h
 ANGLES = ("acute", "right", "obtuse")  # index = AngleClass in cpp/include/nonobtuse/types.h
@@ -153,8 +153,9 @@ def check_mesh(mesh: Mesh) -> CheckReport:
 
 
 def check(domain_or_mesh: Domain | Mesh) -> CheckReport:
-    """Exact nonobtuse-boundary check. A :class:`Domain` is validated and triangulated first (constrained
-    Delaunay, no Steiner points); a :class:`Mesh` is checked as given. See :func:`check_mesh`."""
+    """Exact nonobtuse-boundary check. A :class:`Domain` is validated (unless ``Domain.validated``) and
+    triangulated first (constrained Delaunay, no Steiner points); a :class:`Mesh` is checked as given. See
+    :func:`check_mesh`."""
     if isinstance(domain_or_mesh, Domain):
         return check_mesh(triangulate(domain_or_mesh))
     return check_mesh(domain_or_mesh)
