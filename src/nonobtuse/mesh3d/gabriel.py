@@ -9,12 +9,14 @@ the PLC and its control volumes see nonnegative boundary coefficients.
 from __future__ import annotations
 
 import sys
+import time
 from dataclasses import dataclass, field
 from typing import Any, Callable, Literal
 
 import numpy as np
 
 from nonobtuse import _core
+from nonobtuse.mesh3d.control_volumes3d import control_volumes3d
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
 Status = Literal["converged", "budget_exhausted", "min_length_reached", "stalled"]
@@ -96,9 +98,10 @@ class Gabriel3DResult:
             did not reach before time_limit; the status is then "budget_exhausted" or the earlier stop's),
             volume_mesh ("built", or why mesh.tets is empty: a stop left the Delaunay mesh not conforming to
             some facet; boundary_faces are then the subfacets, oriented like the input triangles),
-            smallest_subsegment, min_length (the value used), seconds,
-            diagnosis (smallest input angles with kind/degrees/vertices/facets, Steiner points per input
-            vertex and per input segment, stop_reason).
+            smallest_subsegment, min_length (the value used), seconds (wall time from refine_gabriel's
+            ``started``), diagnosis (smallest input angles with kind/degrees/vertices/facets, Steiner points
+            per input vertex and per input segment, stop_reason), negative_couplings (edges of mesh whose
+            control-volume coupling is negative, :func:`control_volumes3d`; floating point).
     report: the GabrielReport of mesh.
     """
 
@@ -126,6 +129,19 @@ def check_gabriel(mesh: TetMesh) -> GabrielReport:
     points = np.ascontiguousarray(np.asarray(mesh.points, dtype=np.float64).reshape(-1, 3))
     d = _core.check_gabriel(points, faces, segments)
     return GabrielReport._from_core(d, len(faces), len(segments))
+
+
+def boundary_certificate(mesh: TetMesh) -> dict[str, Any]:
+    """What ``nonobtuse check3d`` reports of a tetrahedral mesh, JSON-ready: points, tets, boundary_faces
+    (counts), steiner_points (from mesh.stats; None when the mesh does not say), encroached_facets,
+    encroached_segments (the exact :func:`check_gabriel`), gabriel (its ``to_dict()``) and control_volumes
+    (:func:`control_volumes3d`'s ``to_dict()``). The mesh is Gabriel iff both encroached counts are 0.
+    Cost: check_gabriel plus the control volumes, near-linear."""
+    report = check_gabriel(mesh)
+    return {"points": len(mesh.points), "tets": len(mesh.tets), "boundary_faces": len(mesh.boundary_faces),
+            "steiner_points": mesh.stats.get("steiner_points"), "encroached_facets": len(report.faces),
+            "encroached_segments": len(report.segments), "gabriel": report.to_dict(),
+            "control_volumes": control_volumes3d(mesh).to_dict()}
 
 
 def _print_progress(steiner: int, segments: int, facets: int, seconds: float) -> None:
@@ -158,6 +174,7 @@ def refine_gabriel(
     split: Literal["shells", "midpoint", "greedy"] = "shells",
     progress: Callable[[int, int, int, float], None] | bool | None = None,
     progress_every: int = 1000,
+    started: float | None = None,
 ) -> Gabriel3DResult:
     """Add Steiner points on the PLC's segments and facets until every subfacet and subsegment is Gabriel.
 
@@ -177,6 +194,8 @@ def refine_gabriel(
     stalled; the status says which. time_limit bounds the refinement and the exact check of
     the result (not the final Delaunay tetrahedralization, O(n log n)); rows the check did not reach are
     counted in stats["unchecked_faces"] / ["unchecked_segments"].
+    started: the time.perf_counter() at which the caller's work began (e.g. before loading the PLC):
+    time_limit and stats["seconds"] count from it. None: from this call.
     progress: True prints a line to stderr every progress_every insertions and after every exact check of the
     Delaunay mesh (once per repair round); a callable receives (steiner_points, encroached_subsegments,
     encroached_subfacets, seconds), the counts of the last scan or check.
@@ -185,6 +204,7 @@ def refine_gabriel(
     Raises InvalidInputError for malformed PLCs (indices, duplicate points, degenerate or crossing facet
     edges).
     """
+    started = time.perf_counter() if started is None else started
     callback = _print_progress if progress is True else (progress or None)
     min_length = default_min_length(plc.points) if min_length is None else float(min_length)
     d = _core.refine_gabriel(
@@ -196,7 +216,7 @@ def refine_gabriel(
         np.ascontiguousarray(np.asarray(plc.regions, dtype=np.float64).reshape(-1, 4)),
         int(default_steiner_budget(len(plc.points)) if max_steiner is None else max_steiner),
         float(min_length),
-        float(time_limit),
+        max(0.0, float(time_limit) - (time.perf_counter() - started)),
         split,
         int(progress_every),
         callback,
@@ -216,7 +236,7 @@ def refine_gabriel(
         "smallest_subsegment": d["smallest_subsegment"],
         "min_length": min_length,
         "volume_mesh": d["volume_mesh"],
-        "seconds": d["seconds"],
+        "seconds": None,  # set last, below
         "diagnosis": d["diagnosis"],
     }
     mesh = TetMesh(
@@ -228,4 +248,6 @@ def refine_gabriel(
         tet_regions=d["tet_regions"] if len(plc.regions) else None,
         stats=stats,
     )
+    stats["negative_couplings"] = control_volumes3d(mesh).negative_couplings
+    stats["seconds"] = time.perf_counter() - started
     return Gabriel3DResult(mesh=mesh, status=d["status"], stats=stats, report=report)
