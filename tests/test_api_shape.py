@@ -3,10 +3,15 @@ CLI adds nothing to them), check3d's report comes from the API."""
 
 from __future__ import annotations
 
+import ast
 import importlib
 import importlib.util
 import json
+import os
+import subprocess
+import sys
 import time
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -86,3 +91,40 @@ def test_cli_reports_what_the_api_returns(flat_tet, tmp_path, capsys):
     res = refine_gabriel(load_plc(flat_tet), max_steiner=40)
     assert printed.keys() == {"input", "output", *res.stats}
     assert json.loads(out.read_text())["stats"].keys() == res.stats.keys()
+
+
+SRC = Path(nonobtuse.__file__).parent
+
+
+def private_io_imports() -> list[str]:
+    """Modules of the package outside io/ that import a private module of nonobtuse.io."""
+    found = []
+    for path in sorted(SRC.rglob("*.py")):
+        if path.parent.name == "io":
+            continue
+        for node in ast.walk(ast.parse(path.read_text())):
+            names = [node.module or ""] if isinstance(node, ast.ImportFrom) else (
+                [a.name for a in node.names] if isinstance(node, ast.Import) else [])
+            found += [f"{path.relative_to(SRC)}: {n}" for n in names if n.startswith("nonobtuse.io._")]
+    return found
+
+
+def test_io_privates_stay_inside_io():
+    assert private_io_imports() == []
+
+
+def test_every_reading_entry_point_is_reached_through_io():
+    import nonobtuse.io as io
+    import nonobtuse.mesh3d as mesh3d
+
+    for name in ("load_plc", "read_tetmesh_json", "write_tetmesh"):
+        assert getattr(io, name) is getattr(mesh3d, name)
+    with pytest.raises(AttributeError, match="no attribute 'load_mesh3d'"):
+        io.load_mesh3d  # noqa: B018
+
+
+def test_2d_io_does_not_load_the_3d_pipeline():
+    code = "import sys, nonobtuse.io; print(any(m.startswith('nonobtuse.mesh3d') for m in sys.modules))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
+                         env={**os.environ, "PYTHONPATH": str(SRC.parent)})
+    assert out.stdout.strip() == "False"

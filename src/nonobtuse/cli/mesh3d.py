@@ -10,7 +10,7 @@ import time
 from typing import Any
 
 from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS
-from nonobtuse.io._files import jsonable
+from nonobtuse.io import jsonable
 
 
 def register(sub: argparse._SubParsersAction) -> None:

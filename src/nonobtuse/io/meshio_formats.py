@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import warnings
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 
@@ -13,7 +14,17 @@ from nonobtuse.errors import InvalidInputError
 from nonobtuse.io._files import atomic_path
 from nonobtuse.mesh import Mesh
 
-FORMATS = {".vtu": "vtu", ".msh": "gmsh22"}  # Gmsh 2.2 needs no entity topology for mixed cell types
+
+class MeshioFormat(NamedTuple):
+    """meshio's names of one file format: to read it, and to write it."""
+
+    read: str
+    write: str
+
+
+# The mesh formats written and read through meshio, by suffix: the one table the 2D and 3D readers and
+# writers use. Gmsh is written as format 2.2, which needs no entity topology for mixed cell types.
+FORMATS = {".vtu": MeshioFormat("vtu", "vtu"), ".msh": MeshioFormat("gmsh", "gmsh22")}
 
 
 def write_meshio(mesh: Mesh, path: Path) -> None:
@@ -34,9 +45,8 @@ def write_meshio(mesh: Mesh, path: Path) -> None:
     else:
         cell_data = {"region": [regions, np.zeros(len(mesh.segments))]} if mesh.regions is not None else {}
     with atomic_path(path) as tmp:
-        meshio.write(
-            tmp, meshio.Mesh(points, cells, cell_data=cell_data), file_format=FORMATS[path.suffix.lower()]
-        )
+        fmt = FORMATS[path.suffix.lower()].write
+        meshio.write(tmp, meshio.Mesh(points, cells, cell_data=cell_data), file_format=fmt)
 
 
 def read_meshio(path: Path) -> Mesh:
@@ -47,7 +57,7 @@ def read_meshio(path: Path) -> Mesh:
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # meshio warns about formats details it skips
-            m = meshio.read(path, file_format="gmsh" if path.suffix.lower() == ".msh" else "vtu")
+            m = meshio.read(path, file_format=FORMATS[path.suffix.lower()].read)
     except Exception as e:  # meshio raises many types (ReadError, ValueError, KeyError) for broken files
         raise InvalidInputError(f"{path}: cannot read the mesh ({type(e).__name__}: {e})") from None
     points = np.ascontiguousarray(m.points[:, :2], dtype=np.float64)
