@@ -10,6 +10,7 @@ from typing import Any
 
 import numpy as np
 
+from nonobtuse import _core
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh import Mesh
@@ -64,6 +65,20 @@ def _edge_stats(rows: np.ndarray) -> list[dict[str, Any]]:
             gc.enable()
 
 
+def _diagnosis(g: _core.Refine2DDiagnosis) -> dict[str, Any]:
+    """The ``stats["diagnosis"]`` dict (see :class:`RefineResult`) of the core's diagnosis."""
+    return {
+        "junctions": [{"vertex": j.vertex, "constraints": j.constraints,
+                       "min_angle_degrees": j.min_angle_degrees, "steiner_points": j.steiner_points}
+                      for j in g.junctions],
+        "angles": [{"vertex": a.vertex, "edge": (a.vertex, a.a), "neighbour": (a.vertex, a.b),
+                    "degrees": a.degrees, "steiner_points": a.steiner_points} for a in g.angles],
+        "initial_violations": g.initial_violations,
+        "propagation_depth": g.propagation_depth,
+        "propagation_splits": g.propagation_splits,
+    }
+
+
 def refine(
     domain: Domain, strategy: str = "greedy", max_steiner: int | None = None, threads: int = 2
 ) -> RefineResult:
@@ -99,8 +114,6 @@ def refine(
     Raises InvalidInputError for an unknown strategy, a negative budget, a thread count below 1 or a domain
     that fails validation (it says what and where).
     """
-    from nonobtuse import _core
-
     if strategy not in STRATEGIES:
         raise InvalidInputError(f"unknown strategy {strategy!r}; choose one of {', '.join(STRATEGIES)}")
     if max_steiner is not None and (int(max_steiner) != max_steiner or max_steiner < 0):
@@ -119,24 +132,24 @@ def refine(
         min(int(threads), 2),
     )
     stats: dict[str, Any] = {
-        "status": r["status"],
+        "status": r.status,
         "strategy": strategy,
-        "steiner_points": int(r["steiner_points"]),
-        "lower_bound": int(r["lower_bound"]),
-        "optimal": r["optimal"],
-        "seconds": float(r["seconds"]),
-        "obtuse_boundary_triangles": int(r["obtuse_boundary_triangles"]),
-        "edges": _edge_stats(np.asarray(r["edges"]).reshape(-1, 4)),
-        "diagnosis": r["diagnosis"],
+        "steiner_points": r.steiner_points,
+        "lower_bound": r.lower_bound,
+        "optimal": r.optimal,
+        "seconds": r.seconds,
+        "obtuse_boundary_triangles": r.obtuse_boundary_triangles,
+        "edges": _edge_stats(r.edges),
+        "diagnosis": _diagnosis(r.diagnosis),
     }
-    m = r["mesh"]
+    m = r.mesh
     mesh = Mesh(
-        points=m["points"],
-        triangles=m["triangles"],
-        segments=m["segments"],
+        points=m.points,
+        triangles=m.triangles,
+        segments=m.segments,
         input_points=domain.points.copy(),
         input_segments=domain.segments.copy(),
-        regions=m["triangle_region"] if len(domain.regions) else None,
+        regions=m.triangle_region if len(domain.regions) else None,
         stats=stats,
     )
-    return RefineResult(mesh=mesh, stats=stats, status=r["status"])
+    return RefineResult(mesh=mesh, stats=stats, status=r.status)

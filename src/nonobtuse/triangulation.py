@@ -25,11 +25,11 @@ def triangulate(domain: Domain) -> Mesh:
     valid = ensure_validated(domain)
     out = _core.triangulate(valid.points, valid.segments, valid.holes, valid.regions, valid.convex_hull)
     return Mesh(
-        points=out["points"],
-        triangles=out["triangles"],
-        segments=out["segments"],
+        points=out.points,
+        triangles=out.triangles,
+        segments=out.segments,
         input_points=valid.points.copy(),
         input_segments=valid.segments.copy(),
-        regions=out["triangle_region"],
+        regions=out.triangle_region,
         stats={"source": valid.source, "repairs": list(valid.repairs)},
     )

@@ -35,6 +35,7 @@ Cost: O(n log n) for sorting and the triangulation, plus the box-intersection se
 from __future__ import annotations
 
 import dataclasses
+from typing import Any
 
 import numpy as np
 
@@ -91,13 +92,12 @@ def validate_graph(domain: Domain, *, split_points_on_segments: bool = True) -> 
     _check_duplicate_points(d)
     _check_zero_length_segments(d)
     found = _core.find_segment_intersections(d.points, d.segments)
-    if len(found["crossings"]):
-        s, t = found["crossings"][0]
-        raise _invalid(
-            d, f"{_seg(d, s)} and {_seg(d, t)} cross away from their endpoints" + _more(found["crossings"])
-        )
-    overlaps = [(s, t) for s, t in found["overlaps"] if sorted(d.segments[s]) != sorted(d.segments[t])]
-    on_segments = found["points_on_segments"]
+    crossings = found.crossings
+    if len(crossings):
+        s, t = crossings[0]
+        raise _invalid(d, f"{_seg(d, s)} and {_seg(d, t)} cross away from their endpoints" + _more(crossings))
+    overlaps = [(s, t) for s, t in found.overlaps if sorted(d.segments[s]) != sorted(d.segments[t])]
+    on_segments = found.points_on_segments
     if not split_points_on_segments and overlaps:
         s, t = overlaps[0]
         raise _invalid(d, f"{_seg(d, s)} and {_seg(d, t)} are collinear and overlap" + _more(overlaps))
@@ -122,16 +122,16 @@ def check_coverage(
     if decide_convex_hull:
         d = dataclasses.replace(domain, convex_hull=len(domain.segments) == 0, repairs=list(domain.repairs))
     cov = _core.inspect_domain(d.points, d.segments, d.holes, d.regions, d.convex_hull)
-    if decide_convex_hull and not d.convex_hull and not cov["encloses_area"]:
+    if decide_convex_hull and not d.convex_hull and not cov.encloses_area:
         d = dataclasses.replace(d, convex_hull=True, repairs=list(d.repairs))
         cov = _core.inspect_domain(d.points, d.segments, d.holes, d.regions, True)
     for kind, places, inside in (
         (
             "hole",
-            cov["holes"],
+            cov.holes,
             "inside the convex hull" if d.convex_hull else "inside a closed loop of segments",
         ),
-        ("region", cov["regions"], "inside the domain (not in the exterior nor in a hole)"),
+        ("region", cov.regions, "inside the domain (not in the exterior nor in a hole)"),
     ):
         bad = np.flatnonzero(places != _INSIDE)
         if len(bad):
@@ -140,10 +140,10 @@ def check_coverage(
             raise _invalid(d, f"{_seed(d, kind, i)} lies {where}" + _more(bad))
     if not require_closed:
         return d
-    outside = cov["segments_outside"]
+    outside = cov.segments_outside
     if len(outside):
         raise _invalid(d, _open_boundary_message(d, outside))
-    if cov["domain_triangles"] == 0:
+    if cov.domain_triangles == 0:
         raise _invalid(d, "the domain contains no triangle (are all points collinear?)")
     return d
 
@@ -209,7 +209,8 @@ def _split_segments(d: Domain, on_segments: np.ndarray, overlaps: list[tuple[int
     inside: dict[int, list[int]] = {}
     for p, s in on_segments:
         inside.setdefault(int(s), []).append(int(p))
-    rows, lines = [], []
+    rows: list[tuple[int, int]] = []
+    lines: list[int] = []
     seg_lines = _lines(d, "segments")
     for s, (a, b) in enumerate(d.segments):
         chain = [int(a), *sorted(inside.get(s, []), key=lambda v: tuple(d.points[v])), int(b)]
@@ -262,7 +263,8 @@ def _lines(d: Domain, kind: str) -> list[int]:
 
 def _set_lines(d: Domain, kind: str, lines: list[int]) -> None:
     if d.origin is not None:
-        d.origin = dataclasses.replace(d.origin, **{kind: np.array(lines, dtype=np.int64)})
+        changes: dict[str, Any] = {kind: np.array(lines, dtype=np.int64)}
+        d.origin = dataclasses.replace(d.origin, **changes)
 
 
 def _line(d: Domain, kind: str, i: int) -> str:

@@ -41,7 +41,7 @@ def write_meshio(mesh: Mesh, path: Path) -> None:
                 f"{path}: .msh stores regions as integer physical tags; these are not integers"
             )
         tags = [regions.astype(np.int32), np.zeros(len(mesh.segments), np.int32)]
-        cell_data = {"gmsh:physical": tags, "gmsh:geometrical": tags}
+        cell_data: dict[str, list[np.ndarray]] = {"gmsh:physical": tags, "gmsh:geometrical": tags}
     else:
         cell_data = {"region": [regions, np.zeros(len(mesh.segments))]} if mesh.regions is not None else {}
     with atomic_path(path) as tmp:

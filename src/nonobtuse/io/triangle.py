@@ -52,11 +52,8 @@ def read_poly(path: Path) -> Domain:
             raise InvalidInputError(
                 f"{path}: the vertex count is 0, so the vertices come from {node}: {e}"
             ) from None
-        points, point_lines, first_id = (
-            node_domain.points,
-            node_domain.origin.points,
-            node_domain.origin.first_id,
-        )
+        origin = node_domain.origin or SourceMap(str(node))  # read_node records the lines
+        points, point_lines, first_id = node_domain.points, origin.points, origin.first_id
         points_file = str(node)
     segments, segment_lines = _read_segments(lines, len(points), first_id)
     holes, hole_lines = _read_rows(lines, "hole", 3, required=True)
@@ -158,10 +155,10 @@ def write_triangle(mesh: Mesh, path: Path) -> list[Path]:
         f.write(f"# written by nonobtuse\n{len(mesh.points)} 2 0 0\n")
         f.writelines(f"{i} {x!r} {y!r}\n" for i, (x, y) in enumerate(mesh.points.tolist(), start=1))
     with atomic_text(ele) as f:
-        regions = mesh.regions is not None
-        f.write(f"# written by nonobtuse\n{len(mesh.triangles)} 3 {int(regions)}\n")
+        regions = mesh.regions
+        f.write(f"# written by nonobtuse\n{len(mesh.triangles)} 3 {int(regions is not None)}\n")
         tri = (mesh.triangles + 1).tolist()
-        attr = [f" {r!r}" for r in mesh.regions.tolist()] if regions else [""] * len(tri)
+        attr = [f" {r!r}" for r in regions.tolist()] if regions is not None else [""] * len(tri)
         f.writelines(f"{i} {a} {b} {c}{r}\n" for i, ((a, b, c), r) in enumerate(zip(tri, attr), start=1))
     with atomic_text(poly) as f:
         f.write(f"# written by nonobtuse; vertices in {node.name}\n0 2 0 0\n{len(mesh.segments)} 0\n")

@@ -11,7 +11,7 @@ from __future__ import annotations
 import sys
 import time
 from dataclasses import dataclass, field
-from typing import Any, Callable, Literal
+from typing import Any, Callable, Literal, cast
 
 import numpy as np
 
@@ -70,14 +70,14 @@ class GabrielReport:
         }
 
     @classmethod
-    def _from_core(cls, d: dict[str, Any], n_faces: int, n_segments: int) -> GabrielReport:
+    def _from_core(cls, c: _core.GabrielCertificate, n_faces: int, n_segments: int) -> GabrielReport:
         return cls(
-            faces=d["faces_index"],
-            face_vertices=d["faces_vertex"],
-            face_depths=d["faces_depth"],
-            segments=d["segments_index"],
-            segment_vertices=d["segments_vertex"],
-            segment_depths=d["segments_depth"],
+            faces=c.faces,
+            face_vertices=c.face_vertices,
+            face_depths=c.face_depths,
+            segments=c.segments,
+            segment_vertices=c.segment_vertices,
+            segment_depths=c.segment_depths,
             n_faces=n_faces,
             n_segments=n_segments,
         )
@@ -166,6 +166,17 @@ def default_min_length(points: np.ndarray) -> float:
     return 1e-6 * float(np.linalg.norm(p.max(axis=0) - p.min(axis=0))) if len(p) else 0.0
 
 
+def _diagnosis(g: _core.Refine3DDiagnosis) -> dict[str, Any]:
+    """The ``stats["diagnosis"]`` dict (see :class:`Gabriel3DResult`) of the core's diagnosis."""
+    return {
+        "smallest_angles": [{"kind": a.kind, "degrees": a.degrees, "vertices": a.vertices, "facets": a.facets}
+                            for a in g.smallest_angles],
+        "steiner_per_vertex": [{"where": c.where, "count": c.count} for c in g.steiner_per_vertex],
+        "steiner_per_segment": [{"where": c.where, "count": c.count} for c in g.steiner_per_segment],
+        "stop_reason": g.stop_reason,
+    }
+
+
 def refine_gabriel(
     plc: PLC,
     max_steiner: int | None = None,
@@ -207,7 +218,7 @@ def refine_gabriel(
     started = time.perf_counter() if started is None else started
     callback = _print_progress if progress is True else (progress or None)
     min_length = default_min_length(plc.points) if min_length is None else float(min_length)
-    d = _core.refine_gabriel(
+    r = _core.refine_gabriel(
         np.ascontiguousarray(np.asarray(plc.points, dtype=np.float64).reshape(-1, 3)),
         _index_array(plc.triangles, 3),
         np.ascontiguousarray(np.asarray(plc.facet_ids, dtype=np.int64).reshape(-1)),
@@ -221,33 +232,34 @@ def refine_gabriel(
         int(progress_every),
         callback,
     )
-    report = GabrielReport._from_core(d["certificate"], len(d["boundary_faces"]), len(d["segments"]))
-    stats = {
+    faces, segments, certificate = r.boundary_faces, r.segments, r.certificate
+    report = GabrielReport._from_core(certificate, len(faces), len(segments))
+    stats: dict[str, Any] = {
         "backend": "cgal-gabriel",
-        "status": d["status"],
-        "steiner_points": d["steiner_on_segments"] + d["steiner_on_facets"],
-        "steiner_on_segments": d["steiner_on_segments"],
-        "greedy_splits": d["greedy_splits"],
-        "steiner_on_facets": d["steiner_on_facets"],
+        "status": r.status,
+        "steiner_points": r.steiner_on_segments + r.steiner_on_facets,
+        "steiner_on_segments": r.steiner_on_segments,
+        "greedy_splits": r.greedy_splits,
+        "steiner_on_facets": r.steiner_on_facets,
         "encroached_facets": len(report.faces),
         "encroached_segments": len(report.segments),
-        "unchecked_faces": d["certificate"]["unchecked_faces"],
-        "unchecked_segments": d["certificate"]["unchecked_segments"],
-        "smallest_subsegment": d["smallest_subsegment"],
+        "unchecked_faces": certificate.unchecked_faces,
+        "unchecked_segments": certificate.unchecked_segments,
+        "smallest_subsegment": r.smallest_subsegment,
         "min_length": min_length,
-        "volume_mesh": d["volume_mesh"],
+        "volume_mesh": r.volume_mesh,
         "seconds": None,  # set last, below
-        "diagnosis": d["diagnosis"],
+        "diagnosis": _diagnosis(r.diagnosis),
     }
     mesh = TetMesh(
-        points=d["points"],
-        tets=d["tets"],
-        boundary_faces=d["boundary_faces"],
-        face_markers=d["face_markers"],
-        segments=d["segments"],
-        tet_regions=d["tet_regions"] if len(plc.regions) else None,
+        points=r.points,
+        tets=r.tets,
+        boundary_faces=faces,
+        face_markers=r.face_markers,
+        segments=segments,
+        tet_regions=r.tet_regions if len(plc.regions) else None,
         stats=stats,
     )
     stats["negative_couplings"] = control_volumes3d(mesh).negative_couplings
     stats["seconds"] = time.perf_counter() - started
-    return Gabriel3DResult(mesh=mesh, status=d["status"], stats=stats, report=report)
+    return Gabriel3DResult(mesh=mesh, status=cast(Status, r.status), stats=stats, report=report)
