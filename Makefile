@@ -2,6 +2,8 @@
 # make test  : install what is missing, build, run the C++ tests (ctest) and the Python tests (pytest)
 # make dev   : incremental developer build (through ccache when installed); puts _core next to the sources
 #              (use PYTHONPATH=src)
+# make stubs : regenerate src/nonobtuse/_core.pyi from the built _core (after make dev; commit the result)
+# make mypy  : type-check src/nonobtuse against those stubs
 SHELL := /bin/bash
 PYTHON ?= python3
 VENV := .venv
@@ -10,7 +12,7 @@ APT_PACKAGES := libcgal-dev libgmp-dev libmpfr-dev libboost-dev libgtest-dev cma
                 libusb-1.0-0 libvulkan1 mesa-vulkan-drivers
 BUILD := build/pkg
 
-.PHONY: run test dev deps install clean
+.PHONY: run test dev deps install clean stubs mypy
 
 run: install
 	$(VENV)/bin/nonobtuse demo
@@ -41,6 +43,12 @@ dev: deps $(PY)
 	  $$(command -v ccache >/dev/null && echo -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 	cmake --build build/dev
 	cp build/dev/_core*.so src/nonobtuse/
+
+stubs:
+	PYTHONPATH=src $(PY) -m pybind11_stubgen nonobtuse._core -o src --exit-code
+
+mypy:
+	$(PY) -m mypy
 
 clean:
 	rm -rf build src/nonobtuse/_core*.so

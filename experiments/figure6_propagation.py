@@ -93,7 +93,7 @@ sys.path[:0] = [str(ROOT / "experiments")]  # nonobtuse: installed or PYTHONPATH
 import nonobtuse  # noqa: E402
 from bench_refine2d import cgal_gabriel  # noqa: E402
 from nonobtuse import Domain  # noqa: E402
-from nonobtuse.check import check_mesh  # noqa: E402
+from nonobtuse.certificate import check_mesh  # noqa: E402
 from nonobtuse.peers import triangle_pd  # noqa: E402
 
 STACK_HEIGHT = 0.3  # H: total height of the n layers (segment length 2)

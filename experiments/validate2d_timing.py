@@ -2,7 +2,9 @@
 
 Run: PYTHONPATH=src .venv/bin/python experiments/validate2d_timing.py [n]   (default n = 1_000_000)
 Prints seconds for: n uniform random points (convex hull), a smooth star-shaped n-gon
-(r = 1 + 0.2 sin 7t), and cdt_Constrained_Sweden.poly with convex_hull=True when ../shared/data is present.
+(r = 1 + 0.2 sin 7t), and cdt_Constrained_Sweden.poly with convex_hull=True when ../shared/data is present;
+then what validating once saves: triangulate on the n-gon as validated (not checked again) and as built
+(validated once inside).
 """
 
 from __future__ import annotations
@@ -13,6 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
+from nonobtuse import triangulate
 from nonobtuse.domain import Domain
 from nonobtuse.io import load_domain
 from nonobtuse.validate import validate_domain
@@ -32,6 +35,9 @@ def main(n: int) -> None:
     polygon = Domain(np.column_stack([r * np.cos(t), r * np.sin(t)]),
                      np.column_stack([np.arange(n), (np.arange(n) + 1) % n]))  # fmt: skip
     timed(f"{n}-gon", lambda: validate_domain(polygon))
+    valid = validate_domain(polygon)
+    timed(f"{n}-gon triangulate, validated domain (no second check)", lambda: triangulate(valid))
+    timed(f"{n}-gon triangulate, unvalidated domain (checked once inside)", lambda: triangulate(polygon))
     shared = Path(__file__).resolve().parents[1] / ".." / "shared" / "data"
     sweden = shared / "2d" / "cdt_Constrained_Sweden.poly"
     if sweden.exists():

@@ -10,7 +10,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from nonobtuse import Domain, InvalidInputError, Mesh, check
-from nonobtuse.check import ANGLES, KINDS, classify_edges
+from nonobtuse.certificate import ANGLES, KINDS, classify_edges
 from point_sets import point_set_mesh
 
 

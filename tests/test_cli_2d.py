@@ -86,7 +86,7 @@ def test_demo_refinement_removes_every_wrong_sign_boundary_coefficient():
     before = control_volumes(triangulate(domain), CONDUCTIVITY)
     result = refine(domain)
     after = control_volumes(result.mesh, CONDUCTIVITY)
-    boundary = 0  # edge kind index of boundary edges (nonobtuse.check.KINDS)
+    boundary = 0  # edge kind index of boundary edges (nonobtuse.certificate.KINDS)
     assert (before.kind[before.wrong_sign] == boundary).any()  # the demo starts with a real problem
     assert not (after.kind[after.wrong_sign] == boundary).any()
     assert result.stats["steiner_points"] >= result.stats["lower_bound"] > 0

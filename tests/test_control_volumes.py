@@ -10,7 +10,7 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 from nonobtuse import Domain, InvalidInputError, Mesh, control_volumes, triangulate
-from nonobtuse.check import ANGLES, KINDS, classify_edges
+from nonobtuse.certificate import ANGLES, KINDS, classify_edges
 from nonobtuse.demo import CONDUCTIVITY, CURVES, cross_section
 from nonobtuse.io import load_domain
 from point_sets import point_set_mesh

@@ -12,8 +12,8 @@ import numpy as np
 import pytest
 
 import nonobtuse
-from nonobtuse.check import check_mesh
-from nonobtuse.triangulate import triangulate
+from nonobtuse.certificate import check_mesh
+from nonobtuse.triangulation import triangulate
 from nonobtuse.validate import validate_domain
 from refine_helpers import obtuse_constraint_sides
 

@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import nonobtuse
-from nonobtuse import Domain, InvalidInputError
+from nonobtuse import Domain, InvalidInputError, _core
 from refine_helpers import non_delaunay_edges, obtuse_boundary_sides
 
 STRATEGIES = ["greedy", "project-flip", "projection"]
@@ -171,9 +171,12 @@ SQUARE_LOOP = [(0, 1), (1, 2), (2, 3), (3, 0)]
 )
 @pytest.mark.parametrize("strategy", ["greedy", "project-flip", "projection"])
 def test_unvalidated_bad_domains_raise_instead_of_crashing(points, segments, message, strategy):
-    # refine expects a validated domain; the C++ core still refuses what would corrupt its triangulation.
+    # nonobtuse.refine validates first; the C++ core, given what validation would refuse, still refuses what
+    # would corrupt its triangulation.
     d = Domain(points=np.array(points, dtype=float), segments=np.array(segments))
     with pytest.raises(InvalidInputError, match=re.escape(message)):
+        _core.refine(d.points, d.segments, d.holes, d.regions, False, strategy, -1, 2)
+    with pytest.raises(InvalidInputError):
         nonobtuse.refine(d, strategy=strategy)
 
 

@@ -19,7 +19,7 @@ import pytest
 
 import nonobtuse
 from nonobtuse import Domain
-from nonobtuse.check import check_mesh
+from nonobtuse.certificate import check_mesh
 
 SQUARE = [(-10.0, -10.0), (10.0, -10.0), (10.0, 10.0), (-10.0, 10.0)]
 SQUARE_LOOP = [(0, 1), (1, 2), (2, 3), (3, 0)]

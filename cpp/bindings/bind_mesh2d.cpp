@@ -1,19 +1,12 @@
-// 2D domains and meshes: triangulate.
+// 2D domains and meshes: the Mesh2D result class, triangulate.
 #include <pybind11/pybind11.h>
+
+#include <string>
 
 #include "bind_mesh2d.h"
 #include "nonobtuse/triangulate.h"
 
 namespace nonobtuse::bindings {
-
-py::dict mesh_to_dict(const Mesh2& mesh) {
-  py::dict d;
-  d["points"] = from_points2(mesh.points);
-  d["triangles"] = from_index_rows<3>(mesh.triangles);
-  d["segments"] = from_index_rows<2>(mesh.segments);
-  d["triangle_region"] = from_vector(mesh.triangle_region);
-  return d;
-}
 
 Domain2 domain_from_arrays(const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes,
                            const DoubleArray& region_seeds, bool convex_hull_boundary) {
@@ -30,23 +23,33 @@ Domain2 domain_from_arrays(const DoubleArray& points, const IndexArray& segments
 }
 
 void bind_mesh2d(py::module_& m) {
+  py::class_<Mesh2>(m, "Mesh2D",
+                    "A triangulated 2D domain (read-only; each array attribute is a new array on each access).")
+      .def_property_readonly("points", [](const Mesh2& s) { return from_points2(s.points); },
+                             "(n, 2) float64: the domain's points in input order, then Steiner points.")
+      .def_property_readonly("triangles", [](const Mesh2& s) { return from_index_rows<3>(s.triangles); },
+                             "(m, 3) int64, counter-clockwise, domain triangles only.")
+      .def_property_readonly("segments", [](const Mesh2& s) { return from_index_rows<2>(s.segments); },
+                             "(k, 2) int64: every constrained subsegment (boundary, interface, dangling).")
+      .def_property_readonly("triangle_region", [](const Mesh2& s) { return from_vector(s.triangle_region); },
+                             "(m,) float64 region attribute per triangle (0 where no region seed reached).")
+      .def("__repr__", [](const Mesh2& s) {
+        return "<Mesh2D points=" + std::to_string(s.points.size()) +
+               " triangles=" + std::to_string(s.triangles.size()) + " segments=" + std::to_string(s.segments.size()) +
+               ">";
+      });
   m.def(
       "triangulate",
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes,
          const DoubleArray& regions, bool convex_hull_boundary) {
         Domain2 d = domain_from_arrays(points, segments, holes, regions, convex_hull_boundary);
-        Mesh2 mesh;
-        {
-          py::gil_scoped_release release;
-          mesh = triangulate(d);
-        }
-        return mesh_to_dict(mesh);
+        py::gil_scoped_release release;
+        return triangulate(d);
       },
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("regions"),
       py::arg("convex_hull_boundary"),
       "Constrained Delaunay triangulation of a validated domain. regions: (r, 3) rows x, y, attribute.\n"
-      "Returns a dict: points (n,2) float64, triangles (m,3) int64 ccw, segments (k,2) int64,\n"
-      "triangle_region (m,) float64.");
+      "Returns a Mesh2D.");
 }
 
 }  // namespace nonobtuse::bindings

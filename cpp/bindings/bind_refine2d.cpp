@@ -1,6 +1,9 @@
-// Boundary refinement: refine.
+// Boundary refinement: the result classes (Refine2DResult, its diagnosis), refine.
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
 
 #include "bind_mesh2d.h"
 #include "nonobtuse/refine2d.h"
@@ -14,68 +17,86 @@ RefineStrategy strategy_from(const std::string& name) {
   throw InvalidInput("unknown refinement strategy '" + name + "' (greedy, project-flip, projection)");
 }
 
-py::dict diagnosis_to_dict(const Refine2DDiagnosis& g) {
-  py::list junctions, angles;
-  for (const auto& j : g.junctions)
-    junctions.append(py::dict(py::arg("vertex") = j.vertex, py::arg("constraints") = j.constraints,
-                              py::arg("min_angle_degrees") = j.min_angle_degrees,
-                              py::arg("steiner_points") = j.steiner_points));
-  for (const auto& a : g.angles)
-    angles.append(py::dict(py::arg("vertex") = a.vertex, py::arg("edge") = py::make_tuple(a.vertex, a.a),
-                           py::arg("neighbour") = py::make_tuple(a.vertex, a.b), py::arg("degrees") = a.degrees,
-                           py::arg("steiner_points") = a.steiner_points));
-  py::dict d;
-  d["junctions"] = junctions;
-  d["angles"] = angles;
-  d["initial_violations"] = g.initial_violations;
-  d["propagation_depth"] = g.propagation_depth;
-  d["propagation_splits"] = g.propagation_splits;
-  return d;
-}
-
-py::dict result_to_dict(const Refine2DResult& r) {
-  py::dict d;
-  d["mesh"] = mesh_to_dict(r.mesh);
-  d["status"] = to_string(r.status);
-  d["steiner_points"] = r.steiner_points;
-  d["max_steiner"] = r.max_steiner;
-  d["lower_bound"] = r.lower_bound;
-  d["optimal"] = r.optimal < 0 ? py::object(py::none()) : py::object(py::bool_(r.optimal == 1));
-  d["obtuse_boundary_sides"] = r.obtuse_boundary_sides;
-  d["seconds"] = r.seconds;
-  std::vector<std::array<int, 4>> rows;
-  for (const auto& e : r.edges) rows.push_back({e.edge[0], e.edge[1], e.steiner_points, e.lower_bound});
-  d["edges"] = from_index_rows<4>(rows);
-  d["diagnosis"] = diagnosis_to_dict(r.diagnosis);
-  return d;
+void bind_result_classes(py::module_& m) {
+  py::class_<JunctionStats>(m, "Junction", "An input vertex where at least two input constraints meet.")
+      .def_readonly("vertex", &JunctionStats::vertex, "input point index")
+      .def_readonly("constraints", &JunctionStats::constraints, "input constraints meeting there")
+      .def_readonly("min_angle_degrees", &JunctionStats::min_angle_degrees,
+                    "smallest angle between two of them (float, for reporting only)")
+      .def_readonly("steiner_points", &JunctionStats::steiner_points,
+                    "Steiner points whose nearest end on their input edge is this vertex")
+      .def("__repr__", [](const JunctionStats& j) {
+        return "<Junction vertex=" + std::to_string(j.vertex) + " steiner_points=" + std::to_string(j.steiner_points) +
+               ">";
+      });
+  py::class_<InputAngleStats>(m, "InputAngle2D",
+                              "The angle at vertex between input constraints (vertex, a) and (vertex, b).")
+      .def_readonly("vertex", &InputAngleStats::vertex)
+      .def_readonly("a", &InputAngleStats::a)
+      .def_readonly("b", &InputAngleStats::b, "the constraint closest in angle to (vertex, a)")
+      .def_readonly("degrees", &InputAngleStats::degrees)
+      .def_readonly("steiner_points", &InputAngleStats::steiner_points,
+                    "Steiner points on (vertex, a) nearest to vertex")
+      .def("__repr__", [](const InputAngleStats& a) {
+        return "<InputAngle2D vertex=" + std::to_string(a.vertex) + " degrees=" + std::to_string(a.degrees) + ">";
+      });
+  py::class_<Refine2DDiagnosis>(m, "Refine2DDiagnosis", "Where the Steiner points of a 2D refinement went.")
+      .def_readonly("junctions", &Refine2DDiagnosis::junctions, "at most 10, by decreasing Steiner count")
+      .def_readonly("angles", &Refine2DDiagnosis::angles, "at most 10, likewise")
+      .def_readonly("initial_violations", &Refine2DDiagnosis::initial_violations)
+      .def_readonly("propagation_depth", &Refine2DDiagnosis::propagation_depth)
+      .def_readonly("propagation_splits", &Refine2DDiagnosis::propagation_splits)
+      .def("__repr__", [](const Refine2DDiagnosis& g) {
+        return "<Refine2DDiagnosis initial_violations=" + std::to_string(g.initial_violations) +
+               " propagation_depth=" + std::to_string(g.propagation_depth) + ">";
+      });
+  py::class_<Refine2DResult>(m, "Refine2DResult", "What refine returns (read-only; see nonobtuse.refine).")
+      .def_readonly("mesh", &Refine2DResult::mesh, "the constrained Delaunay triangulation of the refined domain")
+      .def_property_readonly("status", [](const Refine2DResult& r) { return to_string(r.status); },
+                             "'converged', 'budget_exhausted' or 'stalled'")
+      .def_readonly("steiner_points", &Refine2DResult::steiner_points)
+      .def_readonly("max_steiner", &Refine2DResult::max_steiner, "the Steiner budget used (its default resolved)")
+      .def_readonly("lower_bound", &Refine2DResult::lower_bound)
+      .def_property_readonly(
+          "optimal",
+          [](const Refine2DResult& r) { return r.optimal < 0 ? std::nullopt : std::optional<bool>(r.optimal == 1); },
+          "True when certainly optimal, None when unknown")
+      .def_readonly("obtuse_boundary_sides", &Refine2DResult::obtuse_boundary_sides,
+                    "exact certificate of mesh: obtuse boundary sides (0 when converged)")
+      .def_property_readonly(
+          "edges",
+          [](const Refine2DResult& r) {
+            std::vector<std::array<int, 4>> rows;
+            rows.reserve(r.edges.size());
+            for (const auto& e : r.edges) rows.push_back({e.edge[0], e.edge[1], e.steiner_points, e.lower_bound});
+            return from_index_rows<4>(rows);
+          },
+          "(k, 4) int64 rows a, b, steiner_points, lower_bound per input boundary edge (a new array on each access)")
+      .def_readonly("diagnosis", &Refine2DResult::diagnosis)
+      .def_readonly("seconds", &Refine2DResult::seconds)
+      .def("__repr__", [](const Refine2DResult& r) {
+        return std::string("<Refine2DResult status=") + to_string(r.status) + " steiner_points=" + std::to_string(r.steiner_points) +
+               " lower_bound=" + std::to_string(r.lower_bound) + ">";
+      });
 }
 
 }  // namespace
 
 void bind_refine2d(py::module_& m) {
+  bind_result_classes(m);
   m.def(
       "refine",
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,
          bool convex_hull_boundary, const std::string& strategy, long long max_steiner, int threads) {
         Domain2 d = domain_from_arrays(points, segments, holes, regions, convex_hull_boundary);
-        Refine2DOptions options;
-        options.strategy = strategy_from(strategy);
-        options.max_steiner = max_steiner;
-        options.threads = threads;
-        Refine2DResult r;
-        {
-          py::gil_scoped_release release;
-          r = refine(d, options);
-        }
-        return result_to_dict(r);
+        Refine2DOptions options{strategy_from(strategy), max_steiner, threads};
+        py::gil_scoped_release release;
+        return refine(d, options);
       },
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("regions"), py::arg("convex_hull_boundary"),
       py::arg("strategy") = "greedy", py::arg("max_steiner") = -1, py::arg("threads") = 2,
       "Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0:\n"
-      "default_steiner_budget(n). Returns a dict: mesh (as triangulate), status ('converged' |\n"
-      "'budget_exhausted' | 'stalled'), steiner_points, max_steiner (the budget used), lower_bound, optimal\n"
-      "(True | None), obtuse_boundary_sides (exact certificate), edges (k, 4) int64 rows a, b, steiner_points,\n"
-      "lower_bound per input boundary edge, seconds, diagnosis.");
+      "default_steiner_budget(n). Returns a Refine2DResult.");
   m.def(
       "conforming_gabriel_steiner_points",
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,

@@ -1,4 +1,6 @@
 // nonobtuse._core: thin conversion layer. One file per API area; errors are mapped to nonobtuse.errors types.
+// Results cross as read-only classes over the core's result structs (their attribute names are defined once,
+// here in the bindings); src/nonobtuse/_core.pyi is generated from this module (make stubs), never by hand.
 #include <pybind11/pybind11.h>
 
 #include "nonobtuse/types.h"

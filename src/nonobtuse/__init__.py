@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-from nonobtuse.check import CheckReport, check
+from nonobtuse.certificate import CheckReport, check
 from nonobtuse.control_volumes import ControlVolumes, control_volumes
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InternalError, InvalidInputError, NonobtuseError
 from nonobtuse.mesh import Mesh
-from nonobtuse.refine import RefineResult, refine
-from nonobtuse.triangulate import triangulate
+from nonobtuse.refinement import RefineResult, refine
+from nonobtuse.triangulation import triangulate
 
 __all__ = [
     "CheckReport", "ControlVolumes", "Domain", "InternalError", "InvalidInputError", "Mesh", "NonobtuseError",

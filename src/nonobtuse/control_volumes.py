@@ -20,7 +20,7 @@ import numpy as np
 import scipy.sparse
 
 from nonobtuse import _core
-from nonobtuse.check import core_mesh_arguments
+from nonobtuse.certificate import core_mesh_arguments
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh import Mesh
 
@@ -33,7 +33,7 @@ class ControlVolumes:
     areas:        (n,) float64 > 0 for every vertex of a triangle: the Voronoi control volume of each vertex
                   clipped to the domain (see :func:`voronoi_areas`); sums to the domain area.
     edges:        (E, 2) int64, a < b, sorted.
-    kind:         (E,) int8 index into ``nonobtuse.check.KINDS`` (boundary, interface, interior).
+    kind:         (E,) int8 index into ``nonobtuse.certificate.KINDS`` (boundary, interface, interior).
     coefficients: (E,) float64 T_e (float evaluation).
     signs:        (E,) int8 exact sign of T_e: -1, 0, +1.
     """
@@ -136,20 +136,20 @@ def control_volumes(mesh: Mesh, conductivity: Conductivity = None) -> ControlVol
     c = _core.coupling_signs(*core_mesh_arguments(mesh), k)
     cot, _, _ = _corner_terms(mesh)
     # Add each side's k_t cot(apex) / 2; `corner` is the apex's position (0, 1, 2) in its triangle.
-    coefficients = np.zeros(len(c["edges"]))
+    coefficients = np.zeros(len(c.edges))
     for side in (0, 1):
-        has = np.flatnonzero(c["triangle"][:, side] >= 0)
-        t, apex = c["triangle"][has, side], c["apex"][has, side]
+        has = np.flatnonzero(c.triangle[:, side] >= 0)
+        t, apex = c.triangle[has, side], c.apex[has, side]
         corner = np.argmax(mesh.triangles[t] == apex[:, None], axis=1)
         coefficients[has] += k[t] * cot[t, corner] / 2
     n = len(mesh.points)
-    a, b = c["edges"][:, 0], c["edges"][:, 1]
+    a, b = c.edges[:, 0], c.edges[:, 1]
     off = scipy.sparse.coo_matrix((-coefficients, (a, b)), shape=(n, n))
     off = (off + off.T).tocsr()
     diagonal = -np.asarray(off.sum(axis=1)).ravel()
     matrix = (off + scipy.sparse.diags(diagonal)).tocsr()
-    return ControlVolumes(matrix=matrix, areas=voronoi_areas(mesh), edges=c["edges"], kind=c["kind"],
-                          coefficients=coefficients, signs=c["sign"])
+    return ControlVolumes(matrix=matrix, areas=voronoi_areas(mesh), edges=c.edges, kind=c.kind,
+                          coefficients=coefficients, signs=c.sign)
 
 
 __all__ = ["ControlVolumes", "control_volumes", "triangle_conductivity", "voronoi_areas"]

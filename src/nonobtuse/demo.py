@@ -14,12 +14,12 @@ from collections.abc import Callable
 
 import numpy as np
 
-from nonobtuse.check import KINDS, check_mesh
+from nonobtuse.certificate import KINDS, check_mesh
 from nonobtuse.control_volumes import control_volumes
 from nonobtuse.domain import Domain
 from nonobtuse.mesh import Mesh
-from nonobtuse.refine import refine
-from nonobtuse.triangulate import triangulate
+from nonobtuse.refinement import refine
+from nonobtuse.triangulation import triangulate
 
 LENGTH_M = 4000.0
 # Curves from bottom to top: mean elevation (m), wave amplitude (m), wavelength (m), phase, sample count.
@@ -51,7 +51,8 @@ def cross_section() -> Domain:
     segments.append(np.column_stack([right[:-1], right[1:]]))
     middle = LENGTH_M / 2
     mid_y = [c[np.argmin(np.abs(c[:, 0] - middle)), 1] for c in curves]  # the curves' heights near x = L/2
-    regions = [(middle, (lo + hi) / 2, layer + 1.0) for layer, (lo, hi) in enumerate(zip(mid_y, mid_y[1:]))]
+    layers = enumerate(zip(mid_y, mid_y[1:]))
+    regions = np.array([(middle, (lo + hi) / 2, layer + 1.0) for layer, (lo, hi) in layers])
     return Domain(points=np.vstack(curves), segments=np.vstack(segments), regions=regions,
                   source="built-in cross-section")
 

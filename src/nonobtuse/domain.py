@@ -1,8 +1,16 @@
-"""The 2D input model: a planar straight-line graph (PSLG) and what lies inside it."""
+"""The 2D input model: a planar straight-line graph (PSLG) and what lies inside it.
+
+A :class:`Domain` is *validated* when :mod:`nonobtuse.validate` returned it (``load_domain`` and
+``validate_domain`` do): ``Domain.validated`` is then True, its arrays are its own (not the caller's), and
+assigning any field makes it unvalidated again (editing its arrays in place is not detected: don't). The API
+entry points (``triangulate``, ``check``, ``refine``) validate an unvalidated domain once and never validate a
+validated one again.
+"""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
+from typing import Any
 
 import numpy as np
 
@@ -59,6 +67,8 @@ class Domain:
     segment_markers: (m,) int64 boundary marker per segment (Triangle's segment markers, e.g. a boundary
               condition id), or None. Validation carries them through its repairs (a split segment's pieces
               keep its marker); refinement and the writers carry them on (:mod:`nonobtuse.markers`).
+    validated: read-only; True when :mod:`nonobtuse.validate` returned this domain and no field was assigned
+              since (see the module docstring). ``dataclasses.replace`` gives an unvalidated copy.
     """
 
     points: np.ndarray
@@ -71,6 +81,15 @@ class Domain:
     repairs: list[str] = field(default_factory=list)
     point_markers: np.ndarray | None = None
     segment_markers: np.ndarray | None = None
+    _validated: bool = field(default=False, init=False, repr=False, compare=False)
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        object.__setattr__(self, "_validated", False)  # any change voids the validator's word
+        object.__setattr__(self, name, value)
+
+    @property
+    def validated(self) -> bool:
+        return self._validated
 
     def __post_init__(self) -> None:
         self.points = _points(self.points, "points")
@@ -83,7 +102,7 @@ class Domain:
         self.segment_markers = marker_array(self.segment_markers, len(self.segments), "segment_markers")
 
 
-def marker_array(a, n: int, name: str) -> np.ndarray | None:
+def marker_array(a: Any, n: int, name: str) -> np.ndarray | None:
     """``a`` as (n,) int64 (a Triangle-style (n, 1) column is accepted), or None."""
     if a is None:
         return None
@@ -94,3 +113,17 @@ def marker_array(a, n: int, name: str) -> np.ndarray | None:
     if arr.shape != (n,) or (arr.size and not integral):
         raise InvalidInputError(f"{name} must be {n} integers (one per item), got {arr.shape} {arr.dtype}")
     return np.ascontiguousarray(arr, dtype=np.int64)
+
+
+def mark_validated(domain: Domain) -> Domain:
+    """Set ``domain.validated``; only :mod:`nonobtuse.validate` calls this, on a domain it made and checked.
+    The arrays and ``repairs`` become copies, so that edits of the caller's arrays cannot change what was
+    checked (they stay writable: third-party code, e.g. Triangle's bindings, refuses read-only arrays).
+    Returns ``domain``. Cost: one copy of each array."""
+    for f in fields(domain):
+        value = getattr(domain, f.name)
+        if isinstance(value, np.ndarray):
+            object.__setattr__(domain, f.name, np.array(value))
+    object.__setattr__(domain, "repairs", list(domain.repairs))
+    object.__setattr__(domain, "_validated", True)
+    return domain

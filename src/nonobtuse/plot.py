@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
-from nonobtuse.check import CheckReport
+from nonobtuse.certificate import CheckReport
 from nonobtuse.mesh import Mesh
 
 

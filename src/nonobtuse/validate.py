@@ -26,21 +26,24 @@ dangling ends (points on exactly one segment) are named. Dangling segments insid
 face.poly's nostrils) have the domain on both sides and are allowed. With ``domain.convex_hull`` the hull
 edges close the boundary.
 
-Every repair is recorded as a sentence in ``Domain.repairs``. Cost: O(n log n) for sorting and the
-triangulation, plus the box-intersection search for segment pairs (near-linear for real inputs).
+Every repair is recorded as a sentence in ``Domain.repairs``. :func:`validate_domain` marks what it returns as
+validated (``Domain.validated``), so the API entry points (:func:`ensure_validated`) never check it twice.
+Cost: O(n log n) for sorting and the triangulation, plus the box-intersection search for segment pairs
+(near-linear for real inputs).
 """
 
 from __future__ import annotations
 
 import dataclasses
+from typing import Any
 
 import numpy as np
 
 from nonobtuse import _core
-from nonobtuse.domain import Domain, SourceMap
+from nonobtuse.domain import Domain, SourceMap, mark_validated
 from nonobtuse.errors import InvalidInputError
 
-__all__ = ["check_coverage", "validate_domain", "validate_graph"]
+__all__ = ["check_coverage", "ensure_validated", "validate_domain", "validate_graph"]
 
 _SHOWN = 5  # how many offending items a message lists before "and N more"
 
@@ -49,22 +52,37 @@ _INSIDE, _OUTSIDE, _ON_BOUNDARY = 0, 1, 2
 
 
 def validate_domain(
-    domain: Domain, *, split_points_on_segments: bool = True, require_closed: bool = True
+    domain: Domain,
+    *,
+    split_points_on_segments: bool = True,
+    require_closed: bool = True,
+    decide_convex_hull: bool = False,
 ) -> Domain:
     """Check ``domain`` and return a repaired copy (``domain`` itself is not modified).
 
-    Inputs: a :class:`Domain`; its ``convex_hull`` flag says whether the convex hull closes the boundary.
+    Inputs: a :class:`Domain`; its ``convex_hull`` flag says whether the convex hull closes the boundary
+    (with ``decide_convex_hull``, the flag is decided instead, see :func:`check_coverage`).
     Output: a Domain whose segments are split at every point lying on them and free of duplicates, with the
-    repairs listed in ``repairs`` and ``origin`` line numbers following the split segments.
+    repairs listed in ``repairs`` and ``origin`` line numbers following the split segments. With
+    ``require_closed`` (the default) it is marked validated (``Domain.validated``: arrays of its own), and the
+    API entry points take it as it is; a domain checked with ``require_closed=False`` is not marked.
     Guarantees (all decided exactly): finite coordinates, pairwise distinct points, no zero-length, crossing,
     overlapping or duplicate segments, no point strictly inside a segment, hole and region seeds inside the
     domain; with ``require_closed``, a closed boundary and at least one triangle (see the module docstring).
     Raises :class:`InvalidInputError` naming the first problem found and where.
     """
-    return check_coverage(
+    d = check_coverage(
         validate_graph(domain, split_points_on_segments=split_points_on_segments),
         require_closed=require_closed,
+        decide_convex_hull=decide_convex_hull,
     )
+    return mark_validated(d) if require_closed else d
+
+
+def ensure_validated(domain: Domain) -> Domain:
+    """``domain`` itself when it is validated (``Domain.validated``), else ``validate_domain(domain)``: what
+    the API entry points call, so that a domain is validated exactly once. Raises as validate_domain."""
+    return domain if domain.validated else validate_domain(domain)
 
 
 def validate_graph(domain: Domain, *, split_points_on_segments: bool = True) -> Domain:
@@ -74,13 +92,12 @@ def validate_graph(domain: Domain, *, split_points_on_segments: bool = True) -> 
     _check_duplicate_points(d)
     _check_zero_length_segments(d)
     found = _core.find_segment_intersections(d.points, d.segments)
-    if len(found["crossings"]):
-        s, t = found["crossings"][0]
-        raise _invalid(
-            d, f"{_seg(d, s)} and {_seg(d, t)} cross away from their endpoints" + _more(found["crossings"])
-        )
-    overlaps = [(s, t) for s, t in found["overlaps"] if sorted(d.segments[s]) != sorted(d.segments[t])]
-    on_segments = found["points_on_segments"]
+    crossings = found.crossings
+    if len(crossings):
+        s, t = crossings[0]
+        raise _invalid(d, f"{_seg(d, s)} and {_seg(d, t)} cross away from their endpoints" + _more(crossings))
+    overlaps = [(s, t) for s, t in found.overlaps if sorted(d.segments[s]) != sorted(d.segments[t])]
+    on_segments = found.points_on_segments
     if not split_points_on_segments and overlaps:
         s, t = overlaps[0]
         raise _invalid(d, f"{_seg(d, s)} and {_seg(d, t)} are collinear and overlap" + _more(overlaps))
@@ -96,26 +113,25 @@ def validate_graph(domain: Domain, *, split_points_on_segments: bool = True) -> 
 def check_coverage(
     domain: Domain, *, require_closed: bool = True, decide_convex_hull: bool = False
 ) -> Domain:
-    """Check 6 of the module docstring on a domain that passed :func:`validate_graph`; returns ``domain``.
-
-    decide_convex_hull: set ``domain.convex_hull`` first: True when the segments enclose no area at all (a
-    point set, or only dangling segments), else False. Cost: one constrained Delaunay triangulation (two when
-    segments are present but enclose nothing).
+    """Check 6 of the module docstring on a domain that passed :func:`validate_graph`. Returns ``domain``,
+    or with ``decide_convex_hull`` a copy whose ``convex_hull`` is decided: True when the segments enclose no
+    area at all (a point set, or only dangling segments), else False. ``domain`` is not modified. Cost: one
+    constrained Delaunay triangulation (two when segments are present but enclose nothing).
     """
     d = domain
     if decide_convex_hull:
-        d.convex_hull = len(d.segments) == 0
+        d = dataclasses.replace(domain, convex_hull=len(domain.segments) == 0, repairs=list(domain.repairs))
     cov = _core.inspect_domain(d.points, d.segments, d.holes, d.regions, d.convex_hull)
-    if decide_convex_hull and not d.convex_hull and not cov["encloses_area"]:
-        d.convex_hull = True
+    if decide_convex_hull and not d.convex_hull and not cov.encloses_area:
+        d = dataclasses.replace(d, convex_hull=True, repairs=list(d.repairs))
         cov = _core.inspect_domain(d.points, d.segments, d.holes, d.regions, True)
     for kind, places, inside in (
         (
             "hole",
-            cov["holes"],
+            cov.holes,
             "inside the convex hull" if d.convex_hull else "inside a closed loop of segments",
         ),
-        ("region", cov["regions"], "inside the domain (not in the exterior nor in a hole)"),
+        ("region", cov.regions, "inside the domain (not in the exterior nor in a hole)"),
     ):
         bad = np.flatnonzero(places != _INSIDE)
         if len(bad):
@@ -124,10 +140,10 @@ def check_coverage(
             raise _invalid(d, f"{_seed(d, kind, i)} lies {where}" + _more(bad))
     if not require_closed:
         return d
-    outside = cov["segments_outside"]
+    outside = cov.segments_outside
     if len(outside):
         raise _invalid(d, _open_boundary_message(d, outside))
-    if cov["domain_triangles"] == 0:
+    if cov.domain_triangles == 0:
         raise _invalid(d, "the domain contains no triangle (are all points collinear?)")
     return d
 
@@ -193,7 +209,8 @@ def _split_segments(d: Domain, on_segments: np.ndarray, overlaps: list[tuple[int
     inside: dict[int, list[int]] = {}
     for p, s in on_segments:
         inside.setdefault(int(s), []).append(int(p))
-    rows, lines = [], []
+    rows: list[tuple[int, int]] = []
+    lines: list[int] = []
     seg_lines = _lines(d, "segments")
     for s, (a, b) in enumerate(d.segments):
         chain = [int(a), *sorted(inside.get(s, []), key=lambda v: tuple(d.points[v])), int(b)]
@@ -251,7 +268,8 @@ def _lines(d: Domain, kind: str) -> list[int]:
 
 def _set_lines(d: Domain, kind: str, lines: list[int]) -> None:
     if d.origin is not None:
-        d.origin = dataclasses.replace(d.origin, **{kind: np.array(lines, dtype=np.int64)})
+        changes: dict[str, Any] = {kind: np.array(lines, dtype=np.int64)}
+        d.origin = dataclasses.replace(d.origin, **changes)
 
 
 def _line(d: Domain, kind: str, i: int) -> str:

@@ -7,11 +7,11 @@ import json
 from pathlib import Path
 
 from nonobtuse import demo
-from nonobtuse.check import check
+from nonobtuse.certificate import check
 from nonobtuse.cli.exit_codes import EXIT_OK, EXIT_VIOLATIONS
 from nonobtuse.domain import Domain
 from nonobtuse.io import is_mesh_file, load_domain, read_mesh, write_mesh
-from nonobtuse.triangulate import triangulate
+from nonobtuse.triangulation import triangulate
 
 
 def _load(args: argparse.Namespace) -> Domain:

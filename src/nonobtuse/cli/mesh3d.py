@@ -7,11 +7,10 @@ import argparse
 import json
 import sys
 import time
-from dataclasses import replace
 from typing import Any
 
 from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS
-from nonobtuse.io._files import jsonable
+from nonobtuse.io import jsonable
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -49,24 +48,18 @@ def _print(summary: dict[str, Any], as_json: bool) -> None:
 
 
 def run_check3d(args: argparse.Namespace) -> int:
-    from nonobtuse.mesh3d import check_gabriel, control_volumes3d, load_plc, tetrahedralize
+    from nonobtuse.mesh3d import boundary_certificate, load_plc, tetrahedralize
 
     plc = load_plc(args.input)
     mesh = tetrahedralize(plc, args.backend)
-    report = check_gabriel(mesh)
-    facets, segments = len(report.faces), len(report.segments)
-    summary = {"input": args.input, "backend": args.backend, "points": len(mesh.points),
-               "tets": len(mesh.tets),
-               "boundary_faces": len(mesh.boundary_faces), "steiner_points": mesh.stats["steiner_points"],
-               "encroached_facets": facets, "encroached_segments": segments,
-               "warnings": mesh.stats["warnings"],
-               "gabriel": report.to_dict(), "control_volumes": control_volumes3d(mesh).to_dict()}
+    summary = {"input": args.input, "backend": args.backend, **boundary_certificate(mesh)}
     _print(summary, args.json)
-    return EXIT_OK if facets == 0 and segments == 0 else EXIT_VIOLATIONS
+    gabriel = summary["encroached_facets"] == 0 and summary["encroached_segments"] == 0
+    return EXIT_OK if gabriel else EXIT_VIOLATIONS
 
 
 def run_refine3d(args: argparse.Namespace) -> int:
-    from nonobtuse.mesh3d import control_volumes3d, load_plc, refine_gabriel, write_tetmesh
+    from nonobtuse.mesh3d import load_plc, refine_gabriel, write_tetmesh
 
     t0 = time.perf_counter()
     plc = load_plc(args.input)
@@ -74,15 +67,13 @@ def run_refine3d(args: argparse.Namespace) -> int:
                                   ("time_limit", args.time_limit)) if v is not None}
     print(f"refine3d: {args.input}: {len(plc.points)} points, {len(plc.triangles)} triangles; refining "
           f"({', '.join(f'{k}={v}' for k, v in limits.items()) or 'default limits'})", file=sys.stderr)
-    if args.time_limit is not None:  # --time-limit covers loading too
-        limits["time_limit"] = max(0.0, args.time_limit - (time.perf_counter() - t0))
-    result = refine_gabriel(plc, split=args.split, progress=True, **limits)
+    # started=t0: --time-limit and stats["seconds"] cover loading too
+    result = refine_gabriel(plc, split=args.split, progress=True, started=t0, **limits)
     # The certificate is refine_gabriel's exact check of result.mesh, the arrays written below unchanged
     # (float64 coordinates, written exactly); it ran within the time limit, and rows it did not reach make the
     # status budget_exhausted. A second, unbounded check here would break --time-limit.
-    stats = {**result.stats, "seconds": time.perf_counter() - t0,
-             "negative_couplings": control_volumes3d(result.mesh).negative_couplings}
-    write_tetmesh(replace(result.mesh, stats={**result.mesh.stats, **stats}), args.output)
+    stats = result.stats
+    write_tetmesh(result.mesh, args.output)
     print(f"refine3d: {result.status} after {stats['seconds']:.2f} s; wrote {args.output}", file=sys.stderr)
     _print({"input": args.input, "output": args.output, **stats}, args.json)
     return EXIT_OK if result.status == "converged" else EXIT_NOT_CONVERGED

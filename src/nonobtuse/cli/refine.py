@@ -7,7 +7,7 @@ import json
 import sys
 
 from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK
-from nonobtuse.refine import STRATEGIES, default_steiner_budget
+from nonobtuse.refinement import STRATEGIES, default_steiner_budget
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -32,7 +32,7 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from nonobtuse.io import load_domain, write_mesh
-    from nonobtuse.refine import refine
+    from nonobtuse.refinement import refine
 
     result = refine(load_domain(args.input), strategy=args.strategy, max_steiner=args.max_steiner,
                     threads=args.threads)

@@ -38,6 +38,16 @@ Meshes (:func:`write_mesh`, :func:`read_mesh`), chosen by suffix:
   markers; in ``.msh`` the region and segment marker are physical tags and the tag-to-region map is written
   beside it as ``NAME.msh.regions.json``; see :mod:`nonobtuse.io.meshio_formats`).
 
+3D: :func:`load_plc` (OFF, OBJ, PLY, STL surfaces and TetGen .poly/.smesh PLCs, see
+:mod:`nonobtuse.mesh3d.load`), :func:`write_tetmesh` and :func:`read_tetmesh_json` (see
+:mod:`nonobtuse.io.tetmesh`); they are imported on first use, so 2D work does not load the 3D pipeline.
+
+One module per format family: :mod:`~nonobtuse.io.triangle`, :mod:`~nonobtuse.io.json_formats`,
+:mod:`~nonobtuse.io.meshio_formats` (the one table of meshio formats), :mod:`~nonobtuse.io.surfaces`,
+:mod:`~nonobtuse.io.tetgen`, :mod:`~nonobtuse.io.tetmesh`; :mod:`~nonobtuse.io.raw3d` is what a 3D file holds
+before its facets are triangulated. Shared plumbing for every writer, public here: :func:`atomic_path`,
+:func:`atomic_text` (atomic writes) and :func:`jsonable` (numpy values to JSON ones).
+
 Floats are written in shortest round-trip form, so reading gives back the same float64 values. Writes are
 atomic (a temporary file beside the target, then os.replace); input files are never modified. Every problem
 with a file is an :class:`~nonobtuse.errors.InvalidInputError` naming the file (and line, for text formats).
@@ -47,16 +57,38 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import json_formats, triangle
+from nonobtuse.io._files import atomic_path, atomic_text, jsonable
 from nonobtuse.io.meshio_formats import FORMATS as _MESHIO_FORMATS
 from nonobtuse.io.meshio_formats import read_meshio, write_meshio
 from nonobtuse.mesh import Mesh
-from nonobtuse.validate import check_coverage, validate_graph
+from nonobtuse.validate import validate_domain
 
-__all__ = ["is_mesh_file", "load_domain", "read_mesh", "write_mesh"]
+if TYPE_CHECKING:
+    from nonobtuse.io.tetmesh import read_tetmesh_json, write_tetmesh
+    from nonobtuse.mesh3d.load import load_plc
+
+__all__ = [
+    "atomic_path", "atomic_text", "is_mesh_file", "jsonable", "load_domain", "load_plc", "read_mesh",
+    "read_tetmesh_json", "write_mesh", "write_tetmesh",
+]
+
+_3D_ENTRY_POINTS = {"load_plc": "nonobtuse.mesh3d.load", "read_tetmesh_json": "nonobtuse.io.tetmesh",
+                    "write_tetmesh": "nonobtuse.io.tetmesh"}
+
+
+def __getattr__(name: str) -> Any:
+    """The 3D entry points, imported on first use (PEP 562)."""
+    if name in _3D_ENTRY_POINTS:
+        import importlib
+
+        return getattr(importlib.import_module(_3D_ENTRY_POINTS[name]), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 _TRIANGLE_SUFFIXES = (".node", ".ele", ".poly")
 
@@ -71,16 +103,18 @@ def load_domain(
     does not close, like box.poly); False takes the domain to be what the closed segment loops enclose; None
     decides: the file's own ``convex_hull`` when it has one (domain .json), else True for a point set and for
     segments that enclose no area at all (only dangling constraints, as in the CDT library's inputs), else
-    False. Returns the validated, possibly repaired Domain (see its ``repairs``). Raises InvalidInputError
-    naming the file, and the line where known. Cost: reading plus validation, O(n log n).
+    False. Returns the validated (``Domain.validated``), possibly repaired Domain (see its ``repairs``).
+    Raises InvalidInputError naming the file, and the line where known. Cost: reading plus validation,
+    O(n log n).
     """
     path = Path(path)
     domain, file_hull = _read_domain(path)
     if convex_hull is None:
         convex_hull = file_hull
     domain.convex_hull = bool(convex_hull)
-    d = validate_graph(domain, split_points_on_segments=split_points_on_segments)
-    return check_coverage(d, require_closed=True, decide_convex_hull=convex_hull is None)
+    return validate_domain(
+        domain, split_points_on_segments=split_points_on_segments, decide_convex_hull=convex_hull is None
+    )
 
 
 def _read_domain(path: Path) -> tuple[Domain, bool | None]:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import builtins
 import contextlib
 import math
 import os
@@ -51,7 +52,7 @@ class Line:
         except ValueError:
             raise self.error(f"{what} must be an integer, found '{self.tokens[k]}'") from None
 
-    def float(self, k: int, what: str) -> float:
+    def float(self, k: builtins.int, what: str) -> builtins.float:
         """Token ``k`` as a float (NaN and infinity are accepted here and refused by validation)."""
         token = self.tokens[k]
         try:
@@ -61,7 +62,7 @@ class Line:
         except ValueError:
             raise self.error(f"{what} must be a number, found '{token}'") from None
 
-    def count(self, k: int, what: str) -> int:
+    def count(self, k: builtins.int, what: str) -> builtins.int:
         """Token ``k`` as a non-negative integer."""
         n = self.int(k, what)
         if n < 0:

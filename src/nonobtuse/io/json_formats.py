@@ -162,7 +162,7 @@ def mesh_from_json(path: Path, data: Any) -> Mesh:
         ("triangles", triangles, len(points)), ("segments", segments, len(points)),
         ("input_segments", input_segments, len(input_points)),
     ):  # fmt: skip
-        bad = np.flatnonzero(((idx < 0) | (idx >= n)).any(axis=1)) if len(idx) else []
+        bad = np.flatnonzero(((idx < 0) | (idx >= n)).any(axis=1)) if len(idx) else np.zeros(0, np.int64)
         if len(bad):
             raise InvalidInputError(
                 f"{path}: {name}[{bad[0]}] = {idx[bad[0]].tolist()} refers to a missing point"

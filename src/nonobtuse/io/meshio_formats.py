@@ -18,7 +18,7 @@ from __future__ import annotations
 import json
 import warnings
 from pathlib import Path
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -26,7 +26,18 @@ from nonobtuse.errors import InvalidInputError
 from nonobtuse.io._files import atomic_path, atomic_text, read_text
 from nonobtuse.mesh import Mesh
 
-FORMATS = {".vtu": "vtu", ".msh": "gmsh22"}  # Gmsh 2.2 needs no entity topology for mixed cell types
+
+
+class MeshioFormat(NamedTuple):
+    """meshio's names of one file format: to read it, and to write it."""
+
+    read: str
+    write: str
+
+
+# The mesh formats written and read through meshio, by suffix: the one table the 2D and 3D readers and
+# writers use. Gmsh is written as format 2.2, which needs no entity topology for mixed cell types.
+FORMATS = {".vtu": MeshioFormat("vtu", "vtu"), ".msh": MeshioFormat("gmsh", "gmsh22")}
 _INT32 = np.iinfo(np.int32)
 
 
@@ -141,7 +152,7 @@ def write_meshio(mesh: Mesh, path: Path) -> list[Path]:
 
     gmsh = path.suffix.lower() == ".msh"
     with atomic_path(path) as tmp:
-        meshio.write(tmp, to_meshio(mesh, gmsh=gmsh), file_format=FORMATS[path.suffix.lower()])
+        meshio.write(tmp, to_meshio(mesh, gmsh=gmsh), file_format=FORMATS[path.suffix.lower()].write)
     if not (gmsh and mesh.regions is not None):
         return [path]
     table = region_map_path(path)
@@ -172,7 +183,7 @@ def read_meshio(path: Path) -> Mesh:
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # meshio warns about formats details it skips
-            m = meshio.read(path, file_format="gmsh" if path.suffix.lower() == ".msh" else "vtu")
+            m = meshio.read(path, file_format=FORMATS[path.suffix.lower()].read)
     except Exception as e:  # meshio raises many types (ReadError, ValueError, KeyError) for broken files
         raise InvalidInputError(f"{path}: cannot read the mesh ({type(e).__name__}: {e})") from None
     region_map = read_region_map(path) if path.suffix.lower() == ".msh" else None

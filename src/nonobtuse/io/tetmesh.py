@@ -47,7 +47,7 @@ def write_tetmesh(mesh: TetMesh, path: str | Path) -> None:
             f.write(text)
     elif suffix in MESHIO_FORMATS:
         with atomic_path(path) as tmp:
-            _write_meshio(mesh, tmp, MESHIO_FORMATS[suffix])
+            _write_meshio(mesh, tmp, MESHIO_FORMATS[suffix].write)
     else:
         raise InvalidInputError(f"{path}: unknown mesh format {suffix!r}; expected .json, .vtu or .msh")
 

@@ -56,12 +56,9 @@ def read_poly(path: Path) -> Domain:
             raise InvalidInputError(
                 f"{path}: the vertex count is 0, so the vertices come from {node}: {e}"
             ) from None
-        points, point_lines, first_id, point_markers = (
-            node_domain.points,
-            node_domain.origin.points,
-            node_domain.origin.first_id,
-            node_domain.point_markers,
-        )
+        origin = node_domain.origin or SourceMap(str(node))  # read_node records the lines
+        points, point_lines, first_id = node_domain.points, origin.points, origin.first_id
+        point_markers = node_domain.point_markers
         points_file = str(node)
     segments, segment_lines, segment_markers = _read_segments(lines, len(points), first_id)
     holes, hole_lines = _read_rows(lines, "hole", 3, required=True)
@@ -176,8 +173,8 @@ def write_triangle(mesh: Mesh, path: Path) -> list[Path]:
         rows = zip(mesh.points.tolist(), markers)
         f.writelines(f"{i} {x!r} {y!r}{m}\n" for i, ((x, y), m) in enumerate(rows, start=1))
     with atomic_text(ele) as f:
-        regions = mesh.regions is not None
-        f.write(f"# written by nonobtuse\n{len(mesh.triangles)} 3 {int(regions)}\n")
+        regions = mesh.regions
+        f.write(f"# written by nonobtuse\n{len(mesh.triangles)} 3 {int(regions is not None)}\n")
         tri = (mesh.triangles + 1).tolist()
         attr = _column(None if mesh.regions is None else np.asarray(mesh.regions, np.float64), len(tri))
         f.writelines(f"{i} {a} {b} {c}{r}\n" for i, ((a, b, c), r) in enumerate(zip(tri, attr), start=1))

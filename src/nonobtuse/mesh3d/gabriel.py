@@ -9,13 +9,15 @@ the PLC and its control volumes see nonnegative boundary coefficients.
 from __future__ import annotations
 
 import sys
+import time
 from dataclasses import dataclass, field
-from typing import Any, Callable, Literal
+from typing import Any, Callable, Literal, cast
 
 import numpy as np
 
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
+from nonobtuse.mesh3d.control_volumes3d import control_volumes3d
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
 Status = Literal["converged", "budget_exhausted", "min_length_reached", "stalled"]
@@ -69,14 +71,14 @@ class GabrielReport:
         }
 
     @classmethod
-    def _from_core(cls, d: dict[str, Any], n_faces: int, n_segments: int) -> GabrielReport:
+    def _from_core(cls, c: _core.GabrielCertificate, n_faces: int, n_segments: int) -> GabrielReport:
         return cls(
-            faces=d["faces_index"],
-            face_vertices=d["faces_vertex"],
-            face_depths=d["faces_depth"],
-            segments=d["segments_index"],
-            segment_vertices=d["segments_vertex"],
-            segment_depths=d["segments_depth"],
+            faces=c.faces,
+            face_vertices=c.face_vertices,
+            face_depths=c.face_depths,
+            segments=c.segments,
+            segment_vertices=c.segment_vertices,
+            segment_depths=c.segment_depths,
             n_faces=n_faces,
             n_segments=n_segments,
         )
@@ -97,9 +99,11 @@ class Gabriel3DResult:
             did not reach before time_limit; the status is then "budget_exhausted" or the earlier stop's),
             volume_mesh ("built", or why mesh.tets is empty: a stop left the Delaunay mesh not conforming to
             some facet; boundary_faces are then the subfacets, oriented like the input triangles),
-            smallest_subsegment, min_length (the value used), seconds,
-            diagnosis (smallest input angles with kind/degrees/vertices/facets, Steiner points per input
-            vertex and per input segment, stop_reason), warnings (the PLC's, from validation).
+            smallest_subsegment, max_steiner and min_length (the values used), seconds (wall time from
+            refine_gabriel's ``started``), diagnosis (smallest input angles with kind/degrees/vertices/facets,
+            Steiner points per input vertex and per input segment, stop_reason), warnings (the PLC's, from
+            validation), negative_couplings (edges of mesh whose control-volume coupling is negative,
+            :func:`control_volumes3d`; floating point).
     report: the GabrielReport of mesh.
     """
 
@@ -129,12 +133,36 @@ def check_gabriel(mesh: TetMesh) -> GabrielReport:
     return GabrielReport._from_core(d, len(faces), len(segments))
 
 
+def boundary_certificate(mesh: TetMesh) -> dict[str, Any]:
+    """What ``nonobtuse check3d`` reports of a tetrahedral mesh, JSON-ready: points, tets, boundary_faces
+    (counts), steiner_points (from mesh.stats; None when the mesh does not say), encroached_facets,
+    encroached_segments (the exact :func:`check_gabriel`), gabriel (its ``to_dict()``) and control_volumes
+    (:func:`control_volumes3d`'s ``to_dict()``) and warnings (from mesh.stats, e.g. orientation). The mesh is Gabriel iff both encroached counts are 0.
+    Cost: check_gabriel plus the control volumes, near-linear."""
+    report = check_gabriel(mesh)
+    return {"points": len(mesh.points), "tets": len(mesh.tets), "boundary_faces": len(mesh.boundary_faces),
+            "steiner_points": mesh.stats.get("steiner_points"), "encroached_facets": len(report.faces),
+            "encroached_segments": len(report.segments), "gabriel": report.to_dict(),
+            "control_volumes": control_volumes3d(mesh).to_dict(), "warnings": list(mesh.stats.get("warnings", []))}
+
+
 def _print_progress(steiner: int, segments: int, facets: int, seconds: float) -> None:
     print(
         f"refine_gabriel: {steiner} Steiner points, {segments} encroached subsegments, {facets} encroached "
         f"subfacets in the last scan or check, {seconds:.1f} s",
         file=sys.stderr,
     )
+
+
+def _diagnosis(g: _core.Refine3DDiagnosis) -> dict[str, Any]:
+    """The ``stats["diagnosis"]`` dict (see :class:`Gabriel3DResult`) of the core's diagnosis."""
+    return {
+        "smallest_angles": [{"kind": a.kind, "degrees": a.degrees, "vertices": a.vertices, "facets": a.facets}
+                            for a in g.smallest_angles],
+        "steiner_per_vertex": [{"where": c.where, "count": c.count} for c in g.steiner_per_vertex],
+        "steiner_per_segment": [{"where": c.where, "count": c.count} for c in g.steiner_per_segment],
+        "stop_reason": g.stop_reason,
+    }
 
 
 def refine_gabriel(
@@ -145,6 +173,7 @@ def refine_gabriel(
     split: Literal["shells", "midpoint", "greedy"] = "shells",
     progress: Callable[[int, int, int, float], None] | bool | None = None,
     progress_every: int = 1000,
+    started: float | None = None,
 ) -> Gabriel3DResult:
     """Add Steiner points on the PLC's segments and facets until every subfacet and subsegment is Gabriel.
 
@@ -165,6 +194,8 @@ def refine_gabriel(
     time_limit bounds the refinement and the exact check of the result (not the final Delaunay
     tetrahedralization, O(n log n)); rows the check did not reach are counted in
     stats["unchecked_faces"] / ["unchecked_segments"].
+    started: the time.perf_counter() at which the caller's work began (e.g. before loading the PLC):
+    time_limit and stats["seconds"] count from it. None: from this call.
     progress: True prints a line to stderr every progress_every insertions and after every exact check of the
     Delaunay mesh (once per repair round); a callable receives (steiner_points, encroached_subsegments,
     encroached_subfacets, seconds), the counts of the last scan or check.
@@ -173,11 +204,12 @@ def refine_gabriel(
     Raises InvalidInputError for malformed PLCs (indices, duplicate points, degenerate or crossing facet
     edges).
     """
+    started = time.perf_counter() if started is None else started
     callback = _print_progress if progress is True else (progress or None)
     for name, value in (("max_steiner", max_steiner), ("min_length", min_length)):
         if value is not None and not value >= 0:  # negative: the core would read it as "use the default"
             raise InvalidInputError(f"{name} must be >= 0 or None, got {value!r}")
-    d = _core.refine_gabriel(
+    r = _core.refine_gabriel(
         np.ascontiguousarray(np.asarray(plc.points, dtype=np.float64).reshape(-1, 3)),
         _index_array(plc.triangles, 3),
         np.ascontiguousarray(np.asarray(plc.facet_ids, dtype=np.int64).reshape(-1)),
@@ -186,38 +218,41 @@ def refine_gabriel(
         np.ascontiguousarray(np.asarray(plc.regions, dtype=np.float64).reshape(-1, 4)),
         -1 if max_steiner is None else int(max_steiner),
         -1.0 if min_length is None else float(min_length),
-        float(time_limit),
+        max(0.0, float(time_limit) - (time.perf_counter() - started)),
         split,
         int(progress_every),
         callback,
     )
-    report = GabrielReport._from_core(d["certificate"], len(d["boundary_faces"]), len(d["segments"]))
-    stats = {
+    faces, segments, certificate = r.boundary_faces, r.segments, r.certificate
+    report = GabrielReport._from_core(certificate, len(faces), len(segments))
+    stats: dict[str, Any] = {
         "backend": "cgal-gabriel",
-        "status": d["status"],
-        "steiner_points": d["steiner_on_segments"] + d["steiner_on_facets"],
-        "steiner_on_segments": d["steiner_on_segments"],
-        "greedy_splits": d["greedy_splits"],
-        "steiner_on_facets": d["steiner_on_facets"],
+        "status": r.status,
+        "steiner_points": r.steiner_on_segments + r.steiner_on_facets,
+        "steiner_on_segments": r.steiner_on_segments,
+        "greedy_splits": r.greedy_splits,
+        "steiner_on_facets": r.steiner_on_facets,
         "encroached_facets": len(report.faces),
         "encroached_segments": len(report.segments),
-        "unchecked_faces": d["certificate"]["unchecked_faces"],
-        "unchecked_segments": d["certificate"]["unchecked_segments"],
-        "smallest_subsegment": d["smallest_subsegment"],
-        "max_steiner": d["max_steiner"],
-        "min_length": d["min_length"],
-        "volume_mesh": d["volume_mesh"],
-        "seconds": d["seconds"],
-        "diagnosis": d["diagnosis"],
+        "unchecked_faces": certificate.unchecked_faces,
+        "unchecked_segments": certificate.unchecked_segments,
+        "smallest_subsegment": r.smallest_subsegment,
+        "max_steiner": r.max_steiner,
+        "min_length": r.min_length,
+        "volume_mesh": r.volume_mesh,
+        "seconds": None,  # set last, below
+        "diagnosis": _diagnosis(r.diagnosis),
         "warnings": list(plc.warnings),
     }
     mesh = TetMesh(
-        points=d["points"],
-        tets=d["tets"],
-        boundary_faces=d["boundary_faces"],
-        face_markers=d["face_markers"],
-        segments=d["segments"],
-        tet_regions=d["tet_regions"] if len(plc.regions) else None,
+        points=r.points,
+        tets=r.tets,
+        boundary_faces=faces,
+        face_markers=r.face_markers,
+        segments=segments,
+        tet_regions=r.tet_regions if len(plc.regions) else None,
         stats=stats,
     )
-    return Gabriel3DResult(mesh=mesh, status=d["status"], stats=stats, report=report)
+    stats["negative_couplings"] = control_volumes3d(mesh).negative_couplings
+    stats["seconds"] = time.perf_counter() - started
+    return Gabriel3DResult(mesh=mesh, status=cast(Status, r.status), stats=stats, report=report)

@@ -68,8 +68,8 @@ def triangulate_facet(points: np.ndarray, facet: Facet, j: int) -> np.ndarray:
                                  facet.holes[:, keep], np.zeros((0, 3)), False)
     except InvalidInputError as e:
         raise InvalidInputError(f"facet {j} ({facet.where}): {e}") from None
-    tri = mesh["triangles"]
-    if len(mesh["points"]) != len(local) or len(tri) == 0:
+    tri = mesh.triangles
+    if len(mesh.points) != len(local) or len(tri) == 0:
         raise InvalidInputError(f"facet {j} ({facet.where}): its polygons do not bound a planar region "
                                 f"(crossing or degenerate polygons)")
     _check_planar(points, local, tri[0], j, facet)

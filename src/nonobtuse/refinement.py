@@ -10,10 +10,12 @@ from typing import Any
 
 import numpy as np
 
+from nonobtuse import _core
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.markers import mesh_markers
 from nonobtuse.mesh import Mesh
+from nonobtuse.validate import ensure_validated
 
 STRATEGIES = ("greedy", "project-flip", "projection")
 CONVERGED, BUDGET_EXHAUSTED, STALLED = "converged", "budget_exhausted", "stalled"
@@ -68,9 +70,21 @@ def _edge_stats(rows: np.ndarray) -> list[dict[str, Any]]:
 def default_steiner_budget(n_points: int) -> int:
     """The Steiner budget :func:`refine` uses when ``max_steiner`` is None, for ``n_points`` input points: the
     core's rule (``default_steiner_budget`` in ``cpp/include/nonobtuse/refine2d.h``, which says why)."""
-    from nonobtuse import _core
-
     return int(_core.default_steiner_budget(n_points))
+
+
+def _diagnosis(g: _core.Refine2DDiagnosis) -> dict[str, Any]:
+    """The ``stats["diagnosis"]`` dict (see :class:`RefineResult`) of the core's diagnosis."""
+    return {
+        "junctions": [{"vertex": j.vertex, "constraints": j.constraints,
+                       "min_angle_degrees": j.min_angle_degrees, "steiner_points": j.steiner_points}
+                      for j in g.junctions],
+        "angles": [{"vertex": a.vertex, "edge": (a.vertex, a.a), "neighbour": (a.vertex, a.b),
+                    "degrees": a.degrees, "steiner_points": a.steiner_points} for a in g.angles],
+        "initial_violations": g.initial_violations,
+        "propagation_depth": g.propagation_depth,
+        "propagation_splits": g.propagation_splits,
+    }
 
 
 def refine(
@@ -83,7 +97,8 @@ def refine(
     Delaunay triangulation is nonobtuse opposite each constrained edge it has (boundary, interface or
     dangling segment).
 
-    domain:      a validated :class:`~nonobtuse.domain.Domain`: a PSLG with closed boundary loops (or
+    domain:      a :class:`~nonobtuse.domain.Domain`, validated once here unless it already is
+                 (``Domain.validated``; ``domain`` is not modified): a PSLG with closed boundary loops (or
                  ``convex_hull=True`` for point sets: the hull edges are the boundary), holes, interior
                  interfaces meeting at junctions, dangling segments, isolated points, region attributes,
                  point and segment markers (carried to the mesh by Triangle's rules, see
@@ -113,10 +128,8 @@ def refine(
     Deterministic. Cost: O(n log n) to triangulate plus, per Steiner point, the triangles meeting the
     diametral disk being refined.
     Raises InvalidInputError for an unknown strategy, a negative budget, a thread count below 1 or a domain
-    that cannot be triangulated.
+    that fails validation (it says what and where).
     """
-    from nonobtuse import _core
-
     if isinstance(domain, dict):
         from nonobtuse.triangle_dict import mesh_to_dict, validated_domain
 
@@ -128,6 +141,7 @@ def refine(
         raise InvalidInputError(f"max_steiner must be a non-negative integer, got {max_steiner!r}")
     if isinstance(threads, bool) or int(threads) != threads or threads < 1:
         raise InvalidInputError(f"threads must be a positive integer, got {threads!r}")
+    domain = ensure_validated(domain)
     r = _core.refine(
         domain.points,
         domain.segments,
@@ -139,26 +153,26 @@ def refine(
         min(int(threads), 2),
     )
     stats: dict[str, Any] = {
-        "status": r["status"],
+        "status": r.status,
         "strategy": strategy,
-        "steiner_points": int(r["steiner_points"]),
-        "max_steiner": int(r["max_steiner"]),
-        "lower_bound": int(r["lower_bound"]),
-        "optimal": r["optimal"],
-        "seconds": float(r["seconds"]),
-        "obtuse_boundary_sides": int(r["obtuse_boundary_sides"]),
-        "edges": _edge_stats(np.asarray(r["edges"]).reshape(-1, 4)),
-        "diagnosis": r["diagnosis"],
+        "steiner_points": r.steiner_points,
+        "max_steiner": r.max_steiner,
+        "lower_bound": r.lower_bound,
+        "optimal": r.optimal,
+        "seconds": r.seconds,
+        "obtuse_boundary_sides": r.obtuse_boundary_sides,
+        "edges": _edge_stats(r.edges),
+        "diagnosis": _diagnosis(r.diagnosis),
     }
-    m = r["mesh"]
+    m = r.mesh
     mesh = Mesh(
-        points=m["points"],
-        triangles=m["triangles"],
-        segments=m["segments"],
+        points=m.points,
+        triangles=m.triangles,
+        segments=m.segments,
         input_points=domain.points.copy(),
         input_segments=domain.segments.copy(),
-        regions=m["triangle_region"] if len(domain.regions) else None,
+        regions=m.triangle_region if len(domain.regions) else None,
         stats=stats,
     )
     mesh_markers(mesh, domain)
-    return RefineResult(mesh=mesh, stats=stats, status=r["status"])
+    return RefineResult(mesh=mesh, stats=stats, status=r.status)

@@ -16,7 +16,7 @@ import numpy as np
 from nonobtuse import _core
 from nonobtuse.domain import Domain
 from nonobtuse.mesh import Mesh
-from nonobtuse.triangulate import triangulate
+from nonobtuse.triangulation import triangulate
 
 KINDS = ("boundary", "interface", "interior")  # index = EdgeKind in cpp/include/nonobtuse/check2d.h
 ANGLES = ("acute", "right", "obtuse")  # index = AngleClass in cpp/include/nonobtuse/types.h
@@ -31,10 +31,13 @@ def core_mesh_arguments(mesh: Mesh) -> tuple[np.ndarray, np.ndarray, np.ndarray,
 
 
 def classify_edges(mesh: Mesh) -> dict[str, np.ndarray]:
-    """Every edge of ``mesh`` classified exactly: see ``_core.classify_edges`` (edges sorted by (a, b),
-    a < b; kind, per side [left, right] triangle, apex and angle class, locally_delaunay). Raises
-    InvalidInputError for a mesh that is not a counter-clockwise manifold triangulation. Cost: O(m log m)."""
-    return _core.classify_edges(*core_mesh_arguments(mesh))
+    """Every edge of ``mesh`` classified exactly: see ``_core.EdgeClassification`` (edges sorted by (a, b),
+    a < b; kind, per side [left, right] triangle, apex and angle class, locally_delaunay), as a dict of
+    those arrays. Raises InvalidInputError for a mesh that is not a counter-clockwise manifold
+    triangulation. Cost: O(m log m)."""
+    c = _core.classify_edges(*core_mesh_arguments(mesh))
+    return {"edges": c.edges, "kind": c.kind, "triangle": c.triangle, "apex": c.apex, "angle": c.angle,
+            "locally_delaunay": c.locally_delaunay}
 
 
 def apex_angle_degrees(points: np.ndarray, a: np.ndarray, b: np.ndarray, apex: np.ndarray) -> np.ndarray:
@@ -54,7 +57,7 @@ class ObtuseAngle:
     kind: str  # "boundary" or "interface"
     triangle: int
     apex: int
-    points: tuple[tuple[float, float], tuple[float, float], tuple[float, float]]  # a, b, apex
+    points: tuple[tuple[float, float], ...]  # a, b, apex
     degrees: float  # float display of the angle at apex; the class OBTUSE is exact
 
     def to_dict(self) -> dict[str, Any]:
@@ -114,7 +117,7 @@ class CheckReport:
         if self.ok:
             lines.append("  OK: every boundary and interface angle is nonobtuse (exact)")
         else:
-            worst = self.largest_obtuse
+            worst = self.offenders[0]
             lines.append(f"  NOT OK: {len(self.offenders)} obtuse boundary/interface angles; largest "
                          f"{worst.degrees:.4f} deg at point {worst.apex} opposite edge {worst.edge}")
         if self.not_locally_delaunay:
@@ -122,16 +125,16 @@ class CheckReport:
         return "\n".join(lines)
 
 
-def _offenders(mesh: Mesh, c: dict[str, np.ndarray]) -> list[ObtuseAngle]:
+def _offenders(mesh: Mesh, c: _core.EdgeClassification) -> list[ObtuseAngle]:
     found = []
-    guarded = c["kind"] != KINDS.index("interior")
+    guarded = c.kind != KINDS.index("interior")
     for side in (0, 1):
-        idx = np.flatnonzero(guarded & (c["triangle"][:, side] >= 0) & (c["angle"][:, side] == OBTUSE))
-        a, b, apex = c["edges"][idx, 0], c["edges"][idx, 1], c["apex"][idx, side]
+        idx = np.flatnonzero(guarded & (c.triangle[:, side] >= 0) & (c.angle[:, side] == OBTUSE))
+        a, b, apex = c.edges[idx, 0], c.edges[idx, 1], c.apex[idx, side]
         degrees = apex_angle_degrees(mesh.points, a, b, apex)
         for i, e, deg in zip(idx, zip(a, b, apex), degrees):
             pts = tuple((float(mesh.points[v, 0]), float(mesh.points[v, 1])) for v in e)
-            found.append(ObtuseAngle((int(e[0]), int(e[1])), KINDS[c["kind"][i]], int(c["triangle"][i, side]),
+            found.append(ObtuseAngle((int(e[0]), int(e[1])), KINDS[c.kind[i]], int(c.triangle[i, side]),
                                      int(e[2]), pts, float(deg)))
     found.sort(key=lambda o: (-o.degrees, o.edge, o.apex))
     return found
@@ -139,24 +142,24 @@ def _offenders(mesh: Mesh, c: dict[str, np.ndarray]) -> list[ObtuseAngle]:
 
 def check_mesh(mesh: Mesh) -> CheckReport:
     """The exact certificate of ``mesh`` (see :class:`CheckReport`). Cost: O(m log m) for m triangles."""
-    c = classify_edges(mesh)
+    c = _core.classify_edges(*core_mesh_arguments(mesh))
     edges, angles = {}, {}
     for k, kind in enumerate(KINDS):
-        of_kind = c["kind"] == k
+        of_kind = c.kind == k
         edges[kind] = int(of_kind.sum())
-        present = (c["triangle"] >= 0) & of_kind[:, None]
-        angles[kind] = {name: int((present & (c["angle"] == j)).sum()) for j, name in enumerate(ANGLES)}
-    bad = c["edges"][(c["kind"] == KINDS.index("interior")) & (c["locally_delaunay"] == 0)]
+        present = (c.triangle >= 0) & of_kind[:, None]
+        angles[kind] = {name: int((present & (c.angle == j)).sum()) for j, name in enumerate(ANGLES)}
+    bad = c.edges[(c.kind == KINDS.index("interior")) & (c.locally_delaunay == 0)]
     return CheckReport(edges=edges, angles=angles, offenders=_offenders(mesh, c),
                        not_locally_delaunay=[(int(a), int(b)) for a, b in bad], points=len(mesh.points),
                        triangles=len(mesh.triangles), source=str(mesh.stats.get("source", "<memory>")))
 
 
 def check(domain_or_mesh: Domain | Mesh | dict[str, Any]) -> CheckReport:
-    """Exact nonobtuse-boundary check. A :class:`Domain` is validated and triangulated first (constrained
-    Delaunay, no Steiner points); a :class:`Mesh` is checked as given. A ``triangle`` package dict
-    (:mod:`nonobtuse.triangle_dict`) is a mesh when it has ``triangles`` (e.g. ``triangle.triangulate``'s
-    output), else a domain. See :func:`check_mesh`."""
+    """Exact nonobtuse-boundary check. A :class:`Domain` is validated (unless ``Domain.validated``) and
+    triangulated first (constrained Delaunay, no Steiner points); a :class:`Mesh` is checked as given. A
+    ``triangle`` package dict (:mod:`nonobtuse.triangle_dict`) is a mesh when it has ``triangles`` (e.g.
+    ``triangle.triangulate``'s output), else a domain. See :func:`check_mesh`."""
     if isinstance(domain_or_mesh, dict):
         from nonobtuse.triangle_dict import mesh_from_dict, validated_domain
 

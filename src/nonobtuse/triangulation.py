@@ -8,14 +8,16 @@ from nonobtuse import _core
 from nonobtuse.domain import Domain
 from nonobtuse.markers import mesh_markers
 from nonobtuse.mesh import Mesh
-from nonobtuse.validate import validate_domain
+from nonobtuse.validate import ensure_validated
 
 
 def triangulate(domain: Domain | dict[str, Any]) -> Mesh | dict[str, Any]:
     """Constrained Delaunay triangulation (CDT) of ``domain``, without Steiner points.
 
-    Input: a :class:`Domain`; it is validated first (``validate_domain``: duplicates, crossings, points inside
-    segments, open loops...), which may return a repaired copy (e.g. segments split at points lying on them).
+    Input: a :class:`Domain`; unless it is already validated (``Domain.validated``: from ``load_domain`` or
+    ``validate_domain``) it is validated once here (duplicates, crossings, points inside segments, open
+    loops...), which may give a repaired copy (e.g. segments split at points lying on them). ``domain`` is
+    not modified.
     Output: a :class:`Mesh` whose points are the validated domain's points in order, triangles (m, 3)
     counter-clockwise covering the domain minus holes, segments every constrained edge bordering the domain,
     ``regions`` the region attribute per triangle (0 where no seed reached), ``input_points`` /
@@ -31,15 +33,15 @@ def triangulate(domain: Domain | dict[str, Any]) -> Mesh | dict[str, Any]:
         from nonobtuse.triangle_dict import mesh_to_dict, validated_domain
 
         return mesh_to_dict(triangulate(validated_domain(domain)), domain)
-    valid = validate_domain(domain)
+    valid = ensure_validated(domain)
     out = _core.triangulate(valid.points, valid.segments, valid.holes, valid.regions, valid.convex_hull)
     mesh = Mesh(
-        points=out["points"],
-        triangles=out["triangles"],
-        segments=out["segments"],
+        points=out.points,
+        triangles=out.triangles,
+        segments=out.segments,
         input_points=valid.points.copy(),
         input_segments=valid.segments.copy(),
-        regions=out["triangle_region"],
+        regions=out.triangle_region,
         stats={"source": valid.source, "repairs": list(valid.repairs)},
     )
     mesh_markers(mesh, valid)

@@ -1,0 +1,477 @@
+"""
+nonobtuse C++ core (CGAL, exact predicates)
+"""
+from __future__ import annotations
+import collections.abc
+import numpy
+import numpy.typing
+import typing
+__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'Junction', 'Mesh2D', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'check_gabriel', 'classify_edges', 'conforming_gabriel_steiner_points', 'coupling_signs', 'default_steiner_budget', 'delaunay_tetrahedra', 'find_segment_intersections', 'inspect_domain', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'refine', 'refine_gabriel', 'triangulate']
+class Mesh2D:
+    """
+    A triangulated 2D domain (read-only; each array attribute is a new array on each access).
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def points(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, 2) float64: the domain's points in input order, then Steiner points.
+        """
+    @property
+    def segments(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (k, 2) int64: every constrained subsegment (boundary, interface, dangling).
+        """
+    @property
+    def triangle_region(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (m,) float64 region attribute per triangle (0 where no region seed reached).
+        """
+    @property
+    def triangles(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (m, 3) int64, counter-clockwise, domain triangles only.
+        """
+class EdgeClassification:
+    """
+    Every edge of a mesh classified exactly, sorted by (a, b), a < b (read-only).
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def angle(self) -> numpy.typing.NDArray[numpy.int8]:
+        """
+        (E, 2) int8: 0 acute, 1 right, 2 obtuse (meaningless where triangle is -1)
+        """
+    @property
+    def apex(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (E, 2) int64 [left, right], -1 where no triangle
+        """
+    @property
+    def edges(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (E, 2) int64 (a, b), a < b
+        """
+    @property
+    def kind(self) -> numpy.typing.NDArray[numpy.int8]:
+        """
+        (E,) int8: 0 boundary, 1 interface, 2 interior
+        """
+    @property
+    def locally_delaunay(self) -> numpy.typing.NDArray[numpy.int8]:
+        """
+        (E,) int8
+        """
+    @property
+    def sign(self) -> numpy.typing.NDArray[numpy.int8]:
+        """
+        (E,) int8 exact sign of each coupling coefficient (coupling_signs; empty otherwise)
+        """
+    @property
+    def triangle(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (E, 2) int64 [left, right], -1 where none
+        """
+class SegmentIntersections:
+    """
+    Exact segment intersections, sorted int64 (k, 2) arrays (read-only; a new array on each access).
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def crossings(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (s, t): proper crossings
+        """
+    @property
+    def overlaps(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (s, t): collinear with a common piece
+        """
+    @property
+    def points_on_segments(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (p, s): point p strictly inside segment s
+        """
+class DomainCoverage:
+    """
+    What a domain's constrained Delaunay triangulation covers.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def domain_triangles(self) -> int:
+        ...
+    @property
+    def encloses_area(self) -> bool:
+        """
+        some triangle is enclosed by segments (holes ignored)
+        """
+    @property
+    def holes(self) -> numpy.typing.NDArray[numpy.int8]:
+        """
+        int8 per hole seed: 0 inside, 1 outside, 2 on a point or segment
+        """
+    @property
+    def regions(self) -> numpy.typing.NDArray[numpy.int8]:
+        """
+        int8 per region seed, likewise
+        """
+    @property
+    def segments_outside(self) -> numpy.typing.NDArray[numpy.int32]:
+        """
+        int32: segments with no domain triangle on either side
+        """
+class Junction:
+    """
+    An input vertex where at least two input constraints meet.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def constraints(self) -> int:
+        """
+        input constraints meeting there
+        """
+    @property
+    def min_angle_degrees(self) -> float:
+        """
+        smallest angle between two of them (float, for reporting only)
+        """
+    @property
+    def steiner_points(self) -> int:
+        """
+        Steiner points whose nearest end on their input edge is this vertex
+        """
+    @property
+    def vertex(self) -> int:
+        """
+        input point index
+        """
+class InputAngle2D:
+    """
+    The angle at vertex between input constraints (vertex, a) and (vertex, b).
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def a(self) -> int:
+        ...
+    @property
+    def b(self) -> int:
+        """
+        the constraint closest in angle to (vertex, a)
+        """
+    @property
+    def degrees(self) -> float:
+        ...
+    @property
+    def steiner_points(self) -> int:
+        """
+        Steiner points on (vertex, a) nearest to vertex
+        """
+    @property
+    def vertex(self) -> int:
+        ...
+class Refine2DDiagnosis:
+    """
+    Where the Steiner points of a 2D refinement went.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def angles(self) -> list[InputAngle2D]:
+        """
+        at most 10, likewise
+        """
+    @property
+    def initial_violations(self) -> int:
+        ...
+    @property
+    def junctions(self) -> list[Junction]:
+        """
+        at most 10, by decreasing Steiner count
+        """
+    @property
+    def propagation_depth(self) -> int:
+        ...
+    @property
+    def propagation_splits(self) -> int:
+        ...
+class Refine2DResult:
+    """
+    What refine returns (read-only; see nonobtuse.refine).
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def diagnosis(self) -> Refine2DDiagnosis:
+        ...
+    @property
+    def edges(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (k, 4) int64 rows a, b, steiner_points, lower_bound per input boundary edge (a new array on each access)
+        """
+    @property
+    def lower_bound(self) -> int:
+        ...
+    @property
+    def mesh(self) -> Mesh2D:
+        """
+        the constrained Delaunay triangulation of the refined domain
+        """
+    @property
+    def obtuse_boundary_triangles(self) -> int:
+        """
+        exact certificate of mesh: obtuse boundary sides (0 when converged)
+        """
+    @property
+    def optimal(self) -> bool | None:
+        """
+        True when certainly optimal, None when unknown
+        """
+    @property
+    def seconds(self) -> float:
+        ...
+    @property
+    def status(self) -> str:
+        """
+        'converged', 'budget_exhausted' or 'stalled'
+        """
+    @property
+    def steiner_points(self) -> int:
+        ...
+class GabrielCertificate:
+    """
+    Encroached boundary faces and segments (read-only; a new array on each access).
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def candidates(self) -> int:
+        """
+        (simplex, vertex) pairs passed to the exact predicate
+        """
+    @property
+    def face_depths(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (a,) float64 1 - |vertex - center| / radius (floating point, for display)
+        """
+    @property
+    def face_vertices(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (a,) int64 the deepest encroaching vertex of each
+        """
+    @property
+    def faces(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (a,) int64 rows of the faces checked that are encroached
+        """
+    @property
+    def segment_depths(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+    @property
+    def segment_vertices(self) -> numpy.typing.NDArray[numpy.int64]:
+        ...
+    @property
+    def segments(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (b,) int64 rows of the segments checked that are encroached
+        """
+    @property
+    def unchecked_faces(self) -> int:
+        """
+        rows refine_gabriel's time_limit left unchecked
+        """
+    @property
+    def unchecked_segments(self) -> int:
+        ...
+class InputAngle3D:
+    """
+    One small angle of the input (degrees, floating point).
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def degrees(self) -> float:
+        ...
+    @property
+    def facets(self) -> list[int]:
+        ...
+    @property
+    def kind(self) -> str:
+        """
+        'segment-segment', 'segment-facet' or 'dihedral'
+        """
+    @property
+    def vertices(self) -> list[int]:
+        ...
+class SteinerCount:
+    """
+    Steiner points near an input vertex or on an input segment.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def count(self) -> int:
+        ...
+    @property
+    def where(self) -> list[int]:
+        """
+        an input vertex, or the two ends of an input segment
+        """
+class Refine3DDiagnosis:
+    """
+    What drove a 3D refinement and why it stopped.
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def smallest_angles(self) -> list[InputAngle3D]:
+        ...
+    @property
+    def steiner_per_segment(self) -> list[SteinerCount]:
+        ...
+    @property
+    def steiner_per_vertex(self) -> list[SteinerCount]:
+        ...
+    @property
+    def stop_reason(self) -> str:
+        ...
+class Refine3DResult:
+    """
+    What refine_gabriel returns (read-only; a new array on each access of an array attribute).
+    """
+    def __repr__(self) -> str:
+        ...
+    @property
+    def boundary_faces(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (f, 3) int64
+        """
+    @property
+    def certificate(self) -> GabrielCertificate:
+        """
+        check_gabriel of the mesh as returned
+        """
+    @property
+    def diagnosis(self) -> Refine3DDiagnosis:
+        ...
+    @property
+    def face_markers(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (f,) int64 input facet id of each boundary face
+        """
+    @property
+    def greedy_splits(self) -> int:
+        ...
+    @property
+    def points(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (n, 3) float64
+        """
+    @property
+    def seconds(self) -> float:
+        ...
+    @property
+    def segments(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (k, 2) int64
+        """
+    @property
+    def smallest_subsegment(self) -> float:
+        ...
+    @property
+    def status(self) -> str:
+        """
+        'converged', 'budget_exhausted', 'min_length_reached' or 'stalled'
+        """
+    @property
+    def steiner_on_facets(self) -> int:
+        ...
+    @property
+    def steiner_on_segments(self) -> int:
+        ...
+    @property
+    def tet_regions(self) -> numpy.typing.NDArray[numpy.float64]:
+        """
+        (t,) float64
+        """
+    @property
+    def tets(self) -> numpy.typing.NDArray[numpy.int64]:
+        """
+        (t, 4) int64
+        """
+    @property
+    def volume_mesh(self) -> str:
+        """
+        'built', or why tets is empty
+        """
+def check_gabriel(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> GabrielCertificate:
+    """
+    Exact diametral-sphere test of every face (f,3) and segment (k,2) against all points (n,3).
+    Returns a GabrielCertificate.
+    """
+def classify_edges(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], triangle_region: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> EdgeClassification:
+    """
+    Exact classification of every edge of a ccw triangle mesh (an EdgeClassification).
+    triangle_region: (m,) float64 or empty.
+    """
+def conforming_gabriel_steiner_points(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool) -> int:
+    """
+    Benchmark peer: Steiner points added by CGAL::make_conforming_Gabriel_2 to the domain's CDT.
+    """
+def coupling_signs(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], triangle_region: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], conductivity: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> EdgeClassification:
+    """
+    classify_edges with sign (E,) int8: the exact sign (-1, 0, +1) of each edge's control-volume coupling
+    coefficient sum_t k_t cot(apex_t) / 2. conductivity: (m,) float64 > 0 per triangle, or empty for k = 1.
+    """
+def default_steiner_budget(n_points: typing.SupportsInt | typing.SupportsIndex) -> int:
+    """
+    The default Steiner budget for n input points: 10 n + 1000.
+    """
+def delaunay_tetrahedra(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> numpy.typing.NDArray[numpy.int64]:
+    """
+    Finite cells (t, 4) int64 of the Delaunay tetrahedralization of points (n, 3), positively oriented.
+    Raises InvalidInputError when two points coincide.
+    """
+def find_segment_intersections(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> SegmentIntersections:
+    """
+    Exact segment intersections. points (n,2) float64 finite and pairwise distinct; segments (m,2) int64 of
+    distinct points. Returns a SegmentIntersections.
+    """
+def inspect_domain(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool) -> DomainCoverage:
+    """
+    What the domain covers (its constrained Delaunay triangulation). Inputs as for triangulate, validated
+    (no crossings, no points inside segments). Returns a DomainCoverage.
+    """
+def plc_collinear(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triples: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> numpy.typing.NDArray[numpy.int8]:
+    """
+    Exact collinearity (int8 1/0) of every row (a, b, c) of triples (m, 3).
+    """
+def plc_orient3d(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], quads: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> numpy.typing.NDArray[numpy.int8]:
+    """
+    Exact orient3d sign (int8: +1, 0 coplanar, -1) of every row (a, b, c, d) of quads (m, 4).
+    """
+def plc_self_intersections(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], max_pairs: typing.SupportsInt | typing.SupportsIndex = 1) -> numpy.typing.NDArray[numpy.int64]:
+    """
+    Pairs (k, 2) int64 (i < j) of triangles intersecting beyond shared vertices/edges (exact);
+    triangles must be non-degenerate and distinct. At most max_pairs rows.
+    """
+def refine(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool, strategy: str = 'greedy', max_steiner: typing.SupportsInt | typing.SupportsIndex = -1, threads: typing.SupportsInt | typing.SupportsIndex = 2) -> Refine2DResult:
+    """
+    Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0: default
+    budget 10 n + 1000. Returns a Refine2DResult.
+    """
+def refine_gabriel(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], facet_ids: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_steiner: typing.SupportsInt | typing.SupportsIndex, min_length: typing.SupportsFloat | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex, split: str, progress_every: typing.SupportsInt | typing.SupportsIndex, progress: collections.abc.Callable[[int, int, int, float], None] | None) -> Refine3DResult:
+    """
+    Gabriel refinement of a PLC. progress: None or f(steiner, encroached_segments, encroached_facets, seconds).
+    Returns a Refine3DResult.
+    """
+def triangulate(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool) -> Mesh2D:
+    """
+    Constrained Delaunay triangulation of a validated domain. regions: (r, 3) rows x, y, attribute.
+    Returns a Mesh2D.
+    """
