@@ -86,9 +86,10 @@ class Gabriel3DResult:
     """The outcome of refine_gabriel.
 
     mesh:   the TetMesh (PLC points first in input order, then Steiner points; tets of the Delaunay
-            tetrahedralization inside the PLC; boundary_faces with face_markers = input facet ids; segments =
-            the
-            subsegments of the PLC segments and of the facets' boundary edges).
+            tetrahedralization inside the PLC; boundary_faces (subfacets) with face_facets = their input
+            facet ids and face_markers = those facets' markers; tet_regions = the region attribute of every
+            tet when the PLC has regions; segments = the subsegments of the PLC segments and of the facets'
+            boundary edges).
     status: "converged" (the exact check of mesh passes), "budget_exhausted" (max_steiner or time_limit),
             "min_length_reached" or "stalled" (no split could make progress).
     stats:  steiner_points, steiner_on_segments, steiner_on_facets, encroached_facets, encroached_segments
@@ -223,9 +224,10 @@ def refine_gabriel(
         points=d["points"],
         tets=d["tets"],
         boundary_faces=d["boundary_faces"],
-        face_markers=d["face_markers"],
+        face_markers=plc.markers_of_facets(d["face_markers"]),  # the core reports facet ids
         segments=d["segments"],
         tet_regions=d["tet_regions"] if len(plc.regions) else None,
         stats=stats,
+        face_facets=np.asarray(d["face_markers"], dtype=np.int64),
     )
     return Gabriel3DResult(mesh=mesh, status=d["status"], stats=stats, report=report)
