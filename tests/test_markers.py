@@ -353,3 +353,16 @@ def test_json_domain_markers_are_read(tmp_path):
     path.write_text(json.dumps({"points": [[0, 0], [1, 0], [0, 1]], "segment_markers": [4]}))
     with pytest.raises(InvalidInputError, match="1 segment_markers for 0 segments"):
         load_domain(path)
+
+
+def test_cli_refine_writes_markers_and_check_reads_triangle_files(tmp_path, capsys):
+    from nonobtuse.cli import main
+    from nonobtuse.io import read_mesh
+
+    out = tmp_path / "la.1.poly"
+    assert main(["refine", str(shared("la.poly")), "-o", str(out)]) == 0
+    mesh = read_mesh(tmp_path / "la.1.ele")
+    assert {101, 102, 103} <= set(mesh.segment_markers.tolist()) and mesh.regions is not None
+    capsys.readouterr()
+    assert main(["check", str(tmp_path / "la.1.node")]) == 0  # the refined triangles, not a new CDT
+    assert f"{len(mesh.triangles)} triangles" in capsys.readouterr().out
