@@ -22,9 +22,21 @@ import numpy as np
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
-from nonobtuse.errors import InternalError
+from nonobtuse.errors import InternalError, InvalidInputError
 
-__all__ = ["mesh_markers", "on_boundary", "point_markers", "segment_markers", "segment_parents"]
+__all__ = ["as_int32", "mesh_markers", "on_boundary", "point_markers", "segment_markers", "segment_parents"]
+
+_INT32 = np.iinfo(np.int32)
+
+
+def as_int32(markers: np.ndarray, where: str) -> np.ndarray:
+    """``markers`` as int32 (Gmsh physical tags, the ``triangle`` package's arrays); InvalidInputError naming
+    ``where`` and the first marker outside the 32-bit range instead of wrapping it around."""
+    markers = np.asarray(markers, dtype=np.int64)
+    bad = np.flatnonzero((markers < _INT32.min) | (markers > _INT32.max))
+    if len(bad):
+        raise InvalidInputError(f"{where}: marker {markers[bad[0]]} (index {bad[0]}) does not fit in 32 bits")
+    return markers.astype(np.int32)
 
 
 def _edge_keys(edges: np.ndarray, n: int) -> np.ndarray:

@@ -24,6 +24,7 @@ import numpy as np
 
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io._files import atomic_path, atomic_text, read_text
+from nonobtuse.markers import as_int32
 from nonobtuse.mesh import Mesh
 
 FORMATS = {".vtu": "vtu", ".msh": "gmsh22"}  # Gmsh 2.2 needs no entity topology for mixed cell types
@@ -58,7 +59,7 @@ def to_meshio(mesh: Mesh, *, gmsh: bool = False) -> Any:
         point_data["point_marker"] = mesh.point_markers.astype(np.float64 if gmsh else np.int64)
     if gmsh:
         tags = region_tags(mesh.regions)[0] if mesh.regions is not None else np.zeros(m, np.int32)
-        physical = [tags, markers.astype(np.int32)]
+        physical = [tags, as_int32(markers, "the .msh segment markers")]
         cell_data = {"gmsh:physical": physical, "gmsh:geometrical": physical}
     else:
         cell_data = {}

@@ -33,6 +33,7 @@ from nonobtuse.io.meshio_formats import (
     regions_from_tags,
     write_region_map,
 )
+from nonobtuse.markers import as_int32
 from nonobtuse.mesh3d.plc import TetMesh
 
 REQUIRED_STATS = ("status", "steiner_points", "encroached_facets", "encroached_segments", "seconds")
@@ -89,7 +90,8 @@ def tetmesh_to_meshio(mesh: TetMesh, *, gmsh: bool = False) -> Any:
     if gmsh:
         tags = np.zeros(t, np.int32) if regions is None else region_tags(regions)[0]
         geometrical = np.zeros(f, np.int32) if facets is None else (facets + 1).astype(np.int32)
-        data = {"gmsh:physical": [tags, markers.astype(np.int32)], "gmsh:geometrical": [tags, geometrical]}
+        physical = [tags, as_int32(markers, "the .msh face markers")]
+        data = {"gmsh:physical": physical, "gmsh:geometrical": [tags, geometrical]}
     else:
         data = {"marker": [np.zeros(t, np.int64), markers]}
         if regions is not None:
