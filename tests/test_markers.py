@@ -165,6 +165,11 @@ def test_validation_splits_keep_the_marker():
     table = dict(zip(map(tuple, np.sort(mesh.segments, axis=1).tolist()), mesh.segment_markers.tolist()))
     assert table[(0, 4)] == table[(1, 4)] == 7 and table[(2, 3)] == 5 and table[(1, 2)] == table[(0, 3)] == 1
     assert mesh.point_markers.tolist() == [7, 7, 5, 5, 7]
+    # A duplicate of a piece (4-1, marker 9) is dropped: the first segment's marker stays.
+    d = Domain(d.points, np.r_[d.segments, [[4, 1]]], segment_markers=[7, 0, 5, 0, 9])
+    mesh = nonobtuse.triangulate(d)
+    table = dict(zip(map(tuple, np.sort(mesh.segments, axis=1).tolist()), mesh.segment_markers.tolist()))
+    assert len(mesh.segments) == 5 and table[(1, 4)] == 7
 
 
 def test_an_interface_without_marker_is_0_and_the_hull_of_a_point_set_is_1():
