@@ -185,7 +185,7 @@ def test_cube_converges_without_steiner_points():
     assert res.status == "converged", res.stats["diagnosis"]["stop_reason"]
     assert res.stats["steiner_points"] == 0
     assert volume(res.mesh) == pytest.approx(1.0, abs=1e-12)
-    assert sorted(set(res.mesh.face_markers.tolist())) == [0, 1, 2, 3, 4, 5]
+    assert sorted(set(res.mesh.face_facets.tolist())) == [0, 1, 2, 3, 4, 5]
     assert_result_consistent(res, plc)
 
 
@@ -275,7 +275,7 @@ def test_budget_exhausted_result_keeps_the_subfacets():
     assert len(res.mesh.tets) == 0
     # The subfacets tile each facet with the input's orientation: per facet, the same summed area vector as
     # the input triangles (a planar facet's area vector is additive over any tiling).
-    got = area_vectors(res.mesh.points, res.mesh.boundary_faces, res.mesh.face_markers)
+    got = area_vectors(res.mesh.points, res.mesh.boundary_faces, res.mesh.face_facets)
     want = area_vectors(plc.points, plc.triangles, plc.facet_ids)
     assert got.keys() == want.keys()
     for f in want:

@@ -4,6 +4,7 @@ own output on the same input."""
 
 from __future__ import annotations
 
+import functools
 from pathlib import Path
 
 import numpy as np
@@ -164,6 +165,11 @@ def test_validation_splits_keep_the_marker():
     table = dict(zip(map(tuple, np.sort(mesh.segments, axis=1).tolist()), mesh.segment_markers.tolist()))
     assert table[(0, 4)] == table[(1, 4)] == 7 and table[(2, 3)] == 5 and table[(1, 2)] == table[(0, 3)] == 1
     assert mesh.point_markers.tolist() == [7, 7, 5, 5, 7]
+    # A duplicate of a piece (4-1, marker 9) is dropped: the first segment's marker stays.
+    d = Domain(d.points, np.r_[d.segments, [[4, 1]]], segment_markers=[7, 0, 5, 0, 9])
+    mesh = nonobtuse.triangulate(d)
+    table = dict(zip(map(tuple, np.sort(mesh.segments, axis=1).tolist()), mesh.segment_markers.tolist()))
+    assert len(mesh.segments) == 5 and table[(1, 4)] == 7
 
 
 def test_an_interface_without_marker_is_0_and_the_hull_of_a_point_set_is_1():
@@ -211,8 +217,10 @@ def load_domain_like(points, segments, segment_markers) -> Domain:
 # ---- every format, with markers and regions -----------------------------------------------------------
 
 
+@functools.lru_cache(maxsize=2)
 def marked_mesh(float_regions: bool):
-    """A refined mesh of a small domain with an interface, two regions, vertex and segment markers."""
+    """A refined mesh of a small domain with an interface, two regions, vertex and segment markers (shared:
+    the tests only read it)."""
     d = Domain(
         [[0, 0], [3, 0], [3, 1], [0, 1], [1.5, 0], [1.5, 1], [0.1, 0.9]],
         [[0, 4], [4, 1], [1, 2], [2, 5], [5, 3], [3, 0], [4, 5]],
@@ -353,3 +361,50 @@ def test_json_domain_markers_are_read(tmp_path):
     path.write_text(json.dumps({"points": [[0, 0], [1, 0], [0, 1]], "segment_markers": [4]}))
     with pytest.raises(InvalidInputError, match="1 segment_markers for 0 segments"):
         load_domain(path)
+
+
+def test_cli_refine_writes_markers_and_check_reads_triangle_files(tmp_path, capsys):
+    from nonobtuse.cli import main
+    from nonobtuse.io import read_mesh
+
+    out = tmp_path / "la.1.poly"
+    assert main(["refine", str(shared("la.poly")), "-o", str(out)]) == 0
+    mesh = read_mesh(tmp_path / "la.1.ele")
+    assert {101, 102, 103} <= set(mesh.segment_markers.tolist()) and mesh.regions is not None
+    capsys.readouterr()
+    assert main(["check", str(tmp_path / "la.1.node")]) == 0  # the refined triangles, not a new CDT
+    assert f"{len(mesh.triangles)} triangles" in capsys.readouterr().out
+
+
+BIG = 2**40
+
+
+@settings(max_examples=20, deadline=10_000, derandomize=True)
+@given(
+    suffix=st.sampled_from([".json", ".ele", ".vtu", ".msh"]),
+    seed=st.integers(min_value=0, max_value=2**32 - 1),
+    wide=st.booleans(),
+)
+def test_any_markers_and_regions_round_trip(suffix, seed, wide):
+    import dataclasses
+    import tempfile
+
+    from nonobtuse.io import read_mesh, write_mesh
+
+    base = marked_mesh(float_regions=True)
+    rng = np.random.default_rng(seed)
+    limit = BIG if wide else 2**31 - 1
+    mesh = dataclasses.replace(
+        base,
+        point_markers=rng.integers(-limit, limit, len(base.points)),
+        segment_markers=rng.integers(-limit, limit, len(base.segments)),
+        regions=rng.choice([-1e300, -0.1, 0.0, 1 / 3, 7.0, 2.5e9, 1e-300], len(base.triangles)),
+    )
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / f"m{suffix}"
+        if suffix == ".msh" and wide:  # Gmsh tags are 32-bit: refused, never wrapped around
+            with pytest.raises(InvalidInputError, match="does not fit in 32 bits"):
+                write_mesh(mesh, path)
+            return
+        write_mesh(mesh, path)
+        assert_same_markers(read_mesh(path), mesh)

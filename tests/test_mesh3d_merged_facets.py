@@ -71,7 +71,7 @@ def test_refinement_keeps_the_holes_and_converges(plc):
     mesh = res.mesh
     # Facet 0 is covered exactly by its subfacets: area 16 - 2 footprints = 14 (the holes are not filled, and
     # the touching vertex does not join them into the facet's domain).
-    p = mesh.points[mesh.boundary_faces[mesh.face_markers == 0]]
+    p = mesh.points[mesh.boundary_faces[mesh.face_facets == 0]]
     area = 0.5 * np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1).sum()
     assert area == pytest.approx(14.0, abs=1e-12)
     assert np.allclose(p[:, :, 2], 1.0)

@@ -48,7 +48,7 @@ def test_tetgen_backend_keeps_the_boundary_with_Y():
     mesh = tetrahedralize(plc, "tetgen")
     check_common(mesh, plc)
     assert len(mesh.boundary_faces) == 12  # Y: the 12 input triangles, not split
-    assert sorted(np.bincount(mesh.face_markers).tolist()) == [2] * 6  # facet ids of the 6 squares
+    assert sorted(np.bincount(mesh.face_facets).tolist()) == [2] * 6  # facet ids of the 6 squares
     assert len(mesh.segments) == 12
 
 

@@ -4,8 +4,8 @@ Every output segment of a mesh (a subsegment) lies on exactly one input segment,
 edge closing a point set). The parent is found without geometry: a Steiner point lies inside one input
 segment, so it has exactly two subsegments, and the chain of subsegments between two input vertices through
 Steiner points is exactly one input segment (validation leaves no input point inside a segment and no two
-segments between the same two points). Cost: O(k log k) for k output segments (the chains, then one sorted
-look-up of their ends).
+segments between the same two points). Cost: O(m) for m triangles (which subsegments are on the
+boundary) plus O(k log k) for k output segments (the chains, then one sorted look-up of their ends).
 
 The markers follow Triangle (https://www.cs.cmu.edu/~quake/triangle.markers.html), so that a user gets from
 us what ``triangle.triangulate`` would give on the same input:
@@ -22,9 +22,21 @@ import numpy as np
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 
-from nonobtuse.errors import InternalError
+from nonobtuse.errors import InternalError, InvalidInputError
 
-__all__ = ["mesh_markers", "point_markers", "segment_markers", "segment_parents"]
+__all__ = ["as_int32", "mesh_markers", "on_boundary", "point_markers", "segment_markers", "segment_parents"]
+
+_INT32 = np.iinfo(np.int32)
+
+
+def as_int32(markers: np.ndarray, where: str) -> np.ndarray:
+    """``markers`` as int32 (Gmsh physical tags, the ``triangle`` package's arrays); InvalidInputError naming
+    ``where`` and the first marker outside the 32-bit range instead of wrapping it around."""
+    markers = np.asarray(markers, dtype=np.int64)
+    bad = np.flatnonzero((markers < _INT32.min) | (markers > _INT32.max))
+    if len(bad):
+        raise InvalidInputError(f"{where}: marker {markers[bad[0]]} (index {bad[0]}) does not fit in 32 bits")
+    return markers.astype(np.int32)
 
 
 def _edge_keys(edges: np.ndarray, n: int) -> np.ndarray:
@@ -73,41 +85,48 @@ def segment_parents(segments: np.ndarray, n_input: int, input_segments: np.ndarr
     return parent[chain]
 
 
-def _boundary_edges(triangles: np.ndarray, n: int) -> np.ndarray:
-    """Sorted keys of the edges having a triangle on one side only."""
+def on_boundary(segments: np.ndarray, triangles: np.ndarray, n: int) -> np.ndarray:
+    """(k,) bool: which ``segments`` (k, 2) have a triangle of ``triangles`` (m, 3) on one side only. Only
+    triangle edges between two segment vertices are counted (every boundary edge of a constrained
+    triangulation is a segment), so the cost is O(m) plus a sort of those few edges."""
+    segments = np.asarray(segments, dtype=np.int64).reshape(-1, 2)
     t = np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
-    keys = _edge_keys(np.stack([t, np.roll(t, -1, axis=1)], axis=2).reshape(-1, 2), n)
-    unique, count = np.unique(keys, return_counts=True)
-    return unique[count == 1]
+    on_segment = np.zeros(n, dtype=bool)
+    on_segment[segments.ravel()] = True
+    corner_on_segment = on_segment[t]
+    keys = []
+    for i, j in ((0, 1), (1, 2), (2, 0)):
+        near = np.flatnonzero(corner_on_segment[:, i] & corner_on_segment[:, j])
+        keys.append(_edge_keys(np.column_stack([t[near, i], t[near, j]]), n))
+    unique, count = np.unique(np.concatenate(keys), return_counts=True)
+    return np.isin(_edge_keys(segments, n), unique[count == 1])
 
 
 def segment_markers(
-    segments: np.ndarray, triangles: np.ndarray, parents: np.ndarray, input_markers: np.ndarray | None, n: int
+    parents: np.ndarray, boundary: np.ndarray, input_markers: np.ndarray | None
 ) -> np.ndarray:
-    """(k,) int64 markers of the output ``segments`` (k, 2) by Triangle's rule (module docstring).
-    triangles: (m, 3); parents: (k,) from :func:`segment_parents`; input_markers: (k0,) or None (all 0);
-    n: the number of points."""
-    inherited = np.zeros(len(segments), dtype=np.int64)
-    if input_markers is not None and len(segments):
+    """(k,) int64 markers of the output segments by Triangle's rule (module docstring). parents: (k,) from
+    :func:`segment_parents`; boundary: (k,) from :func:`on_boundary`; input_markers: (k0,) or None (all 0)."""
+    inherited = np.zeros(len(parents), dtype=np.int64)
+    if input_markers is not None and len(parents):
         has = parents >= 0
         inherited[has] = input_markers[parents[has]]
-    on_boundary = np.isin(_edge_keys(segments, n), _boundary_edges(triangles, n))
-    return np.where(inherited != 0, inherited, on_boundary.astype(np.int64))
+    return np.where(inherited != 0, inherited, boundary.astype(np.int64))
 
 
 def point_markers(
     n: int,
     n_input: int,
-    triangles: np.ndarray,
     segments: np.ndarray,
     parents: np.ndarray,
+    boundary: np.ndarray,
     input_segments: np.ndarray,
     input_point_markers: np.ndarray | None,
     input_segment_markers: np.ndarray | None,
 ) -> np.ndarray:
     """(n,) int64 markers of the mesh's points by Triangle's rule (module docstring); the first ``n_input``
-    are the input points. segments, parents: as for :func:`segment_markers`; input_segments (k0, 2);
-    input_point_markers (n_input,) or None; input_segment_markers (k0,) or None."""
+    are the input points. segments (k, 2), parents, boundary (k,): as for :func:`segment_markers`;
+    input_segments (k0, 2); input_point_markers (n_input,) or None; input_segment_markers (k0,) or None."""
     out = np.zeros(n, dtype=np.int64)
     if input_segment_markers is not None:
         # Steiner points: the marker of the input segment of their subsegments.
@@ -125,8 +144,7 @@ def point_markers(
     if input_point_markers is not None:
         own = np.flatnonzero(input_point_markers != 0)
         out[own] = input_point_markers[own]
-    boundary = _boundary_edges(triangles, n)
-    corners = np.unique(np.concatenate([boundary // n, boundary % n]))
+    corners = np.unique(np.asarray(segments, dtype=np.int64).reshape(-1, 2)[boundary])
     out[corners[out[corners] == 0]] = 1
     return out
 
@@ -136,8 +154,9 @@ def mesh_markers(mesh, domain) -> None:
     was made of: its points are the mesh's first points, its segments the input segments)."""
     n = len(mesh.points)
     parents = segment_parents(mesh.segments, len(domain.points), domain.segments)
-    mesh.segment_markers = segment_markers(mesh.segments, mesh.triangles, parents, domain.segment_markers, n)
+    boundary = on_boundary(mesh.segments, mesh.triangles, n)
+    mesh.segment_markers = segment_markers(parents, boundary, domain.segment_markers)
     mesh.point_markers = point_markers(
-        n, len(domain.points), mesh.triangles, mesh.segments, parents, domain.segments, domain.point_markers,
+        n, len(domain.points), mesh.segments, parents, boundary, domain.segments, domain.point_markers,
         domain.segment_markers,
     )  # fmt: skip

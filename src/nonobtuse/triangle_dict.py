@@ -25,6 +25,7 @@ import numpy as np
 
 from nonobtuse.domain import Domain, marker_array
 from nonobtuse.errors import InvalidInputError
+from nonobtuse.markers import as_int32
 from nonobtuse.mesh import Mesh
 from nonobtuse.validate import check_coverage, validate_graph
 
@@ -111,11 +112,11 @@ def mesh_to_dict(mesh: Mesh, given: dict[str, Any]) -> dict[str, Any]:
     whose ``holes`` and ``regions`` are passed on as Triangle does."""
     out: dict[str, Any] = {"vertices": np.ascontiguousarray(mesh.points, dtype=np.float64)}
     if mesh.point_markers is not None:
-        out["vertex_markers"] = mesh.point_markers.astype(np.int32).reshape(-1, 1)
+        out["vertex_markers"] = as_int32(mesh.point_markers, "vertex_markers").reshape(-1, 1)
     out["triangles"] = mesh.triangles.astype(np.int32).reshape(-1, 3)
     out["segments"] = mesh.segments.astype(np.int32).reshape(-1, 2)
     if mesh.segment_markers is not None:
-        out["segment_markers"] = mesh.segment_markers.astype(np.int32).reshape(-1, 1)
+        out["segment_markers"] = as_int32(mesh.segment_markers, "segment_markers").reshape(-1, 1)
     if mesh.regions is not None and given.get("regions") is not None and np.size(given["regions"]):
         out["triangle_attributes"] = np.asarray(mesh.regions, dtype=np.float64).reshape(-1, 1)
     for key in ("holes", "regions"):

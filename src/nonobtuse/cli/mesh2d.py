@@ -52,8 +52,9 @@ def register(sub: argparse._SubParsersAction) -> None:
 
     p = sub.add_parser("check", help="exact check: is every boundary and interface angle nonobtuse? "
                        "(exit 0 yes, 1 no, 2 invalid input)")
-    p.add_argument("input", help="a mesh file (checked as is) or a domain file (its constrained Delaunay "
-                   "triangulation is checked)")
+    p.add_argument("input", help="a mesh file, checked as is (.json, .vtu, .msh, .ele, or a .node/.poly "
+                   "with its .ele beside it: Triangle's triangles are read, not recomputed), or a domain "
+                   "file (its constrained Delaunay triangulation is checked)")
     p.add_argument("--json", action="store_true", help="print the full report as JSON")
     _add_domain_options(p)
     p.add_argument("--plot", metavar="PNG", help="also draw the mesh, offending edges in red")

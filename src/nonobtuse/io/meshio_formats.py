@@ -24,6 +24,7 @@ import numpy as np
 
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io._files import atomic_path, atomic_text, read_text
+from nonobtuse.markers import as_int32
 from nonobtuse.mesh import Mesh
 
 
@@ -69,7 +70,7 @@ def to_meshio(mesh: Mesh, *, gmsh: bool = False) -> Any:
         point_data["point_marker"] = mesh.point_markers.astype(np.float64 if gmsh else np.int64)
     if gmsh:
         tags = region_tags(mesh.regions)[0] if mesh.regions is not None else np.zeros(m, np.int32)
-        physical = [tags, markers.astype(np.int32)]
+        physical = [tags, as_int32(markers, "the .msh segment markers")]
         cell_data = {"gmsh:physical": physical, "gmsh:geometrical": physical}
     else:
         cell_data = {}
@@ -105,9 +106,8 @@ def from_meshio(m: Any, where: str = "<meshio>", region_map: dict[int, float] | 
         return np.concatenate([np.asarray(m.cell_data[key][i]).ravel() for i in blocks])
 
     regions = cell_values("region", tri)
-    tags = cell_values("gmsh:physical", tri)
-    if regions is None and tags is not None and (region_map is not None or np.any(tags != 0)):
-        regions = _unmap(tags, region_map, where) if region_map is not None else tags  # 0: no physical group
+    if regions is None:
+        regions = regions_from_tags(cell_values("gmsh:physical", tri), region_map, where)
     markers = cell_values("marker", lines)
     if markers is None:
         markers = cell_values("gmsh:physical", lines)
@@ -131,7 +131,19 @@ def _integers(values: Any, what: str, where: str) -> np.ndarray | None:
     return arr.astype(np.int64)
 
 
-def _unmap(tags: np.ndarray, region_map: dict[int, float], where: str) -> np.ndarray:
+def regions_from_tags(
+    tags: np.ndarray | None, region_map: dict[int, float] | None, where: str
+) -> np.ndarray | None:
+    """Region attributes from gmsh physical tags: through ``region_map`` when given, else the tags
+    themselves; None when there are no tags, or no map and every tag is 0 (gmsh's "no physical group")."""
+    if tags is None or (region_map is None and not np.any(tags != 0)):
+        return None
+    return unmap_regions(tags, region_map, where) if region_map is not None else tags.astype(np.float64)
+
+
+def unmap_regions(tags: np.ndarray, region_map: dict[int, float], where: str) -> np.ndarray:
+    """The region attributes of physical ``tags`` through ``region_map``; InvalidInputError for a tag that
+    is not in it."""
     missing = sorted(set(np.unique(tags).tolist()) - set(region_map))
     if missing:
         raise InvalidInputError(f"{where}: physical tags {missing[:5]} are not in the region map")
@@ -155,12 +167,18 @@ def write_meshio(mesh: Mesh, path: Path) -> list[Path]:
         meshio.write(tmp, to_meshio(mesh, gmsh=gmsh), file_format=FORMATS[path.suffix.lower()].write)
     if not (gmsh and mesh.regions is not None):
         return [path]
+    return [path, write_region_map(path, mesh.regions)]
+
+
+def write_region_map(path: Path, regions: np.ndarray) -> Path:
+    """Write the tag -> region map of :func:`region_tags` beside the .msh file ``path``, atomically; returns
+    its path."""
     table = region_map_path(path)
     with atomic_text(table) as f:
-        mapping = region_tags(mesh.regions)[1]
+        mapping = region_tags(regions)[1]
         json.dump({"tag_to_region": {str(k): v for k, v in mapping.items()}}, f, indent=1)
         f.write("\n")
-    return [path, table]
+    return table
 
 
 def read_region_map(path: Path) -> dict[int, float] | None:

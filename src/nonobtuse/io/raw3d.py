@@ -22,13 +22,16 @@ class Facet:
 
 @dataclass
 class RawInput:
-    """A parsed file before triangulation and validation."""
+    """A parsed file before triangulation and validation. facet_markers: (len(facets),) int64, the marker of
+    each facet (TetGen's facet boundary marker, an OBJ group, a PLY face property), or None when the file
+    has none."""
 
     points: np.ndarray
     facets: list[Facet]
     holes: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
     regions: np.ndarray = field(default_factory=lambda: np.zeros((0, 4)))
     source: str = "<memory>"
+    facet_markers: np.ndarray | None = None
 
 
 def floats(line: Line, start: int, n: int, what: str) -> list[float]:

@@ -1,6 +1,10 @@
 """Triangle-surface formats: OFF, OBJ, PLY (through meshio) and STL (binary and ASCII; exactly equal vertices
 are merged, first occurrence first). Each reader returns a :class:`~nonobtuse.io.raw3d.RawInput` of one
-polygon per face; OFF and OBJ errors name file:line."""
+polygon per face; OFF and OBJ errors name file:line.
+
+Facet markers where the format has them: OBJ groups (``g name``; faces before the first ``g`` are in no
+group, marker 0): when every group name is an integer it is the marker, otherwise the groups are numbered
+1, 2, ... in order of first appearance. PLY: an integer face property named one of :data:`PLY_MARKERS`."""
 
 from __future__ import annotations
 
@@ -14,6 +18,7 @@ from nonobtuse.io._files import Lines
 from nonobtuse.io.raw3d import Facet, RawInput, floats, ints, merge_equal_points, points_array
 
 SUFFIXES = (".off", ".obj", ".ply", ".stl")
+PLY_MARKERS = ("marker", "boundary_marker", "label", "group")  # the first present is the facet marker
 
 
 def read_off(path: Path) -> RawInput:
@@ -36,10 +41,12 @@ def read_off(path: Path) -> RawInput:
 
 def read_obj(path: Path) -> RawInput:
     lines = Lines(path)
-    pts, facets = [], []
+    pts, facets, groups, group = [], [], [], None
     while not lines.at_end():
         line = lines.next("a line")
-        if line.tokens[0] == "v":
+        if line.tokens[0] == "g":
+            group = " ".join(line.tokens[1:])
+        elif line.tokens[0] == "v":
             pts.append(floats(line, 1, 3, "a vertex"))
         elif line.tokens[0] == "f":
             line.tokens = [w.split("/")[0] for w in line.tokens]  # v/vt/vn: the vertex index
@@ -47,7 +54,20 @@ def read_obj(path: Path) -> RawInput:
             # OBJ indices are 1-based; negative ones count back from the last vertex read so far
             idx = [i - 1 if i > 0 else len(pts) + i for i in idx]
             facets.append(Facet([np.array(idx, dtype=np.int64)], where=f"{line.file}:{line.number}"))
-    return RawInput(points_array(pts), facets, source=str(path))
+            groups.append(group)
+    return RawInput(points_array(pts), facets, source=str(path), facet_markers=_group_markers(groups))
+
+
+def _group_markers(groups: list[str | None]) -> np.ndarray | None:
+    """Markers of the OBJ faces from their group names (None: no group), or None when there is no group."""
+    names = list(dict.fromkeys(g for g in groups if g is not None))
+    if not names:
+        return None
+    if all(re.fullmatch(r"[+-]?\d+", g) for g in names):
+        number = {g: int(g) for g in names}
+    else:
+        number = {g: i for i, g in enumerate(names, start=1)}
+    return np.array([0 if g is None else number[g] for g in groups], dtype=np.int64)
 
 
 def read_ply(path: Path) -> RawInput:
@@ -59,11 +79,21 @@ def read_ply(path: Path) -> RawInput:
         m = meshio.read(path, file_format="ply")
     except Exception as e:  # meshio raises bare errors of many types on malformed files
         raise InvalidInputError(f"{path}: malformed PLY file: {e}") from None
-    facets = []
-    for block in m.cells:
+    facets, markers = [], []
+    key = next((k for k in PLY_MARKERS if k in m.cell_data), None)
+    for i, block in enumerate(m.cells):
         if block.type in ("triangle", "quad", "polygon"):
             facets += [Facet([np.asarray(c, dtype=np.int64)], where=f"{path}: face") for c in block.data]
-    return RawInput(np.asarray(m.points, dtype=np.float64), facets, source=str(path))
+            if key is not None:
+                markers.append(np.asarray(m.cell_data[key][i]).ravel())
+    facet_markers = None
+    if key is not None:
+        facet_markers = np.concatenate(markers) if markers else np.zeros(0)
+        if facet_markers.dtype.kind == "f" and not np.all(facet_markers == np.round(facet_markers)):
+            raise InvalidInputError(f"{path}: the face property '{key}' must hold integers (facet markers)")
+        facet_markers = facet_markers.astype(np.int64)
+    points = np.asarray(m.points, dtype=np.float64)
+    return RawInput(points, facets, source=str(path), facet_markers=facet_markers)
 
 
 _STL_RECORD = np.dtype([("normal", "<f4", 3), ("v", "<f4", (3, 3)), ("attr", "<u2")])

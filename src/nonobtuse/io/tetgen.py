@@ -1,6 +1,6 @@
 """TetGen PLC files: .poly (facets of polygons with facet holes) and .smesh (one polygon per facet), with
-volume holes and regions; nodes from the sibling .node file when the node count is 0. Errors name
-file:line."""
+facet boundary markers (when the facet header's marker flag is 1), volume holes and regions; nodes from the
+sibling .node file when the node count is 0. Errors name file:line."""
 
 from __future__ import annotations
 
@@ -27,12 +27,17 @@ def read_tetgen(path: Path) -> RawInput:
     else:
         points, first_index = _node_rows(lines, n_nodes)
     base = first_index if first_index in (0, 1) else 0
-    n_facets = lines.next("the facet header").count(0, "the number of facets")
+    facet_head = lines.next("the facet header")
+    n_facets = facet_head.count(0, "the number of facets")
+    marked = facet_head.count(1, "the boundary marker flag") if len(facet_head.tokens) > 1 else 0
+    if marked > 1:
+        raise facet_head.error(f"the boundary marker flag must be 0 or 1, found {marked}")
     read_facet = _smesh_facet if path.suffix == ".smesh" else _poly_facet
-    facets = [read_facet(lines, base, j) for j in range(n_facets)]
+    rows = [read_facet(lines, base, j, bool(marked)) for j in range(n_facets)]
     holes = _point_list(lines, "hole", 3)
     regions = _point_list(lines, "region", 4) if not lines.at_end() else np.zeros((0, 4))
-    return RawInput(points, facets, holes, regions, source=str(path))
+    markers = np.array([m for _, m in rows], dtype=np.int64) if marked else None
+    return RawInput(points, [f for f, _ in rows], holes, regions, source=str(path), facet_markers=markers)
 
 
 def _node_rows(lines: Lines, n: int) -> tuple[np.ndarray, int]:
@@ -55,19 +60,27 @@ def _loop(line: Line, base: int, what: str) -> np.ndarray:
     return np.array(ints(line, 1, n, what), dtype=np.int64) - base
 
 
-def _smesh_facet(lines: Lines, base: int, j: int) -> Facet:
+def _smesh_facet(lines: Lines, base: int, j: int, marked: bool) -> tuple[Facet, int]:
+    """``<n> v1 ... vn [marker]``: the facet and its marker (0 when not ``marked`` or absent)."""
     line = lines.next(f"facet {j}")
-    return Facet([_loop(line, base, f"facet {j}")], where=f"{line.file}:{line.number}")
+    loop = _loop(line, base, f"facet {j}")
+    at = len(loop) + 1
+    marker = line.int(at, f"the boundary marker of facet {j}") if marked and len(line.tokens) > at else 0
+    return Facet([loop], where=f"{line.file}:{line.number}"), marker
 
 
-def _poly_facet(lines: Lines, base: int, j: int) -> Facet:
+def _poly_facet(lines: Lines, base: int, j: int, marked: bool) -> tuple[Facet, int]:
+    """``<#polygons> [#holes] [marker]``, the polygons, the hole points: the facet and its marker (0 when
+    not ``marked`` or absent, as TetGen reads it)."""
     head = lines.next(f"facet {j}")
     n_polygons = head.count(0, f"the polygon count of facet {j}")
     n_holes = head.count(1, f"the hole count of facet {j}") if len(head.tokens) > 1 else 0
+    marker = head.int(2, f"the boundary marker of facet {j}") if marked and len(head.tokens) > 2 else 0
     loops = [_loop(lines.next(f"facet {j} polygon {k}"), base, f"facet {j} polygon {k}")
              for k in range(n_polygons)]
     holes = [floats(lines.next(f"facet {j} hole {k}"), 1, 3, f"facet {j} hole {k}") for k in range(n_holes)]
-    return Facet(loops, np.array(holes, dtype=np.float64).reshape(-1, 3), f"{head.file}:{head.number}")
+    where = f"{head.file}:{head.number}"
+    return Facet(loops, np.array(holes, dtype=np.float64).reshape(-1, 3), where), marker
 
 
 def _point_list(lines: Lines, what: str, cols: int) -> np.ndarray:

@@ -28,7 +28,7 @@ import numpy as np
 
 from nonobtuse.domain import Domain, SourceMap
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.io._files import Lines, atomic_text
+from nonobtuse.io._files import Line, Lines, atomic_text
 from nonobtuse.mesh import Mesh
 
 
@@ -76,6 +76,11 @@ def read_poly(path: Path) -> Domain:
     )  # fmt: skip
 
 
+def _optional_count(head: Line, k: int, what: str, default: int = 0) -> int:
+    """Token ``k`` of a header line as a count, or ``default`` when the line is shorter."""
+    return head.count(k, what) if len(head.tokens) > k else default
+
+
 def _read_vertices(lines: Lines) -> tuple[np.ndarray, np.ndarray, int, np.ndarray | None]:
     """Header and vertex lines: (points (n,2), 1-based line per point, first id, markers (n,) or None)."""
     head = lines.next("the vertex count line")
@@ -83,8 +88,8 @@ def _read_vertices(lines: Lines) -> tuple[np.ndarray, np.ndarray, int, np.ndarra
     dim = head.int(1, "the dimension") if len(head.tokens) > 1 else 2
     if dim != 2:
         raise head.error(f"the dimension must be 2, found {dim}")
-    n_attr = head.count(2, "the number of vertex attributes") if len(head.tokens) > 2 else 0
-    n_mark = head.count(3, "the number of boundary markers") if len(head.tokens) > 3 else 0
+    n_attr = _optional_count(head, 2, "the number of vertex attributes")
+    n_mark = _optional_count(head, 3, "the number of boundary markers")
     if n_mark > 1:
         raise head.error(f"the number of boundary markers must be 0 or 1, found {n_mark}")
     points = np.empty((n, 2), dtype=np.float64)
@@ -115,7 +120,7 @@ def _read_segments(
     """The segment section: (segments (m, 2) 0-based, line per segment, markers (m,) or None)."""
     head = lines.next("the segment count line")
     m = head.count(0, "the segment count")
-    n_mark = head.count(1, "the number of boundary markers") if len(head.tokens) > 1 else 0
+    n_mark = _optional_count(head, 1, "the number of boundary markers")
     if n_mark > 1:
         raise head.error(f"the number of boundary markers must be 0 or 1, found {n_mark}")
     markers = np.zeros(m, dtype=np.int64) if n_mark else None
@@ -124,18 +129,25 @@ def _read_segments(
     for k in range(m):
         line = lines.next(f"segment {k + 1} of {m}").need(3 + n_mark, "id, endpoint, endpoint, markers")
         line.int(0, "the segment id")
-        for j in (1, 2):
-            v = line.int(j, "a segment endpoint") - first_id
-            if not 0 <= v < n_points:
-                raise line.error(
-                    f"segment endpoint {v + first_id} does not exist: vertex ids run from {first_id} to "
-                    f"{n_points - 1 + first_id}"
-                )
-            segments[k, j - 1] = v
+        segments[k] = _vertex_ids(line, 2, n_points, first_id, "segment endpoint")
         if markers is not None:
             markers[k] = line.int(3, "the boundary marker")
         seg_lines[k] = line.number
     return segments, seg_lines, markers
+
+
+def _vertex_ids(line: Line, count: int, n_points: int, first_id: int, what: str) -> list[int]:
+    """Tokens 1..count of ``line`` as 0-based vertex indices; the error names the id and the valid range."""
+    ids = []
+    for j in range(1, count + 1):
+        v = line.int(j, f"a {what}") - first_id
+        if not 0 <= v < n_points:
+            raise line.error(
+                f"{what} {v + first_id} does not exist: vertex ids run from {first_id} to "
+                f"{n_points - 1 + first_id}"
+            )
+        ids.append(v)
+    return ids
 
 
 def _read_rows(
@@ -233,22 +245,15 @@ def _read_elements(lines: Lines, n_points: int, first_id: int) -> tuple[np.ndarr
     """The .ele file: (triangles (m, 3) 0-based, the first attribute (m,) or None)."""
     head = lines.next("the triangle count line")
     m = head.count(0, "the triangle count")
-    corners = head.count(1, "the number of nodes per triangle") if len(head.tokens) > 1 else 3
+    corners = _optional_count(head, 1, "the number of nodes per triangle", 3)
     if corners != 3:
         raise head.error(f"only 3-node triangles are read, found {corners} nodes per triangle")
-    n_attr = head.count(2, "the number of attributes") if len(head.tokens) > 2 else 0
+    n_attr = _optional_count(head, 2, "the number of attributes")
     triangles = np.empty((m, 3), dtype=np.int64)
     regions = np.empty(m, dtype=np.float64) if n_attr else None
     for k in range(m):
         line = lines.next(f"triangle {k + 1} of {m}").need(4 + n_attr, "id, three corners, attributes")
-        for j in (1, 2, 3):
-            v = line.int(j, "a triangle corner") - first_id
-            if not 0 <= v < n_points:
-                raise line.error(
-                    f"triangle corner {v + first_id} does not exist: vertex ids run from {first_id} to "
-                    f"{n_points - 1 + first_id}"
-                )
-            triangles[k, j - 1] = v
+        triangles[k] = _vertex_ids(line, 3, n_points, first_id, "triangle corner")
         if regions is not None:
             regions[k] = line.float(4, "the triangle attribute")
     lines.expect_end()

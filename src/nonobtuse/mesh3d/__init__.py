@@ -3,7 +3,7 @@ volumes."""
 
 from __future__ import annotations
 
-from nonobtuse.io.tetmesh import read_tetmesh_json, write_tetmesh
+from nonobtuse.io.tetmesh import read_tetmesh, read_tetmesh_json, write_tetmesh
 from nonobtuse.mesh3d.control_volumes3d import ControlVolumes3D, control_volumes3d
 from nonobtuse.mesh3d.gabriel import (
     Gabriel3DResult,
@@ -19,6 +19,7 @@ from nonobtuse.mesh3d.validate3d import validate_plc
 
 __all__ = [
     "PLC", "ControlVolumes3D", "Gabriel3DResult", "GabrielReport", "TetMesh", "boundary_certificate",
-    "check_gabriel", "control_volumes3d", "load_plc", "read_tetmesh_json", "refine_gabriel", "tetrahedralize",
+    "check_gabriel", "control_volumes3d", "load_plc", "read_tetmesh", "read_tetmesh_json", "refine_gabriel",
+    "tetrahedralize",
     "validate_plc", "write_tetmesh",
 ]

@@ -89,9 +89,10 @@ class Gabriel3DResult:
     """The outcome of refine_gabriel.
 
     mesh:   the TetMesh (PLC points first in input order, then Steiner points; tets of the Delaunay
-            tetrahedralization inside the PLC; boundary_faces with face_markers = input facet ids; segments =
-            the
-            subsegments of the PLC segments and of the facets' boundary edges).
+            tetrahedralization inside the PLC; boundary_faces (subfacets) with face_facets = their input
+            facet ids and face_markers = those facets' markers; tet_regions = the region attribute of every
+            tet when the PLC has regions; segments = the subsegments of the PLC segments and of the facets'
+            boundary edges).
     status: "converged" (the exact check of mesh passes), "budget_exhausted" (max_steiner or time_limit),
             "min_length_reached" or "stalled" (no split could make progress).
     stats:  steiner_points, steiner_on_segments, steiner_on_facets, encroached_facets, encroached_segments
@@ -248,10 +249,11 @@ def refine_gabriel(
         points=r.points,
         tets=r.tets,
         boundary_faces=faces,
-        face_markers=r.face_markers,
+        face_markers=plc.markers_of_facets(r.face_markers),  # the core reports facet ids
         segments=segments,
         tet_regions=r.tet_regions if len(plc.regions) else None,
         stats=stats,
+        face_facets=np.asarray(r.face_markers, dtype=np.int64),
     )
     stats["negative_couplings"] = control_volumes3d(mesh).negative_couplings
     stats["seconds"] = time.perf_counter() - started

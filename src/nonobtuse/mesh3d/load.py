@@ -111,20 +111,26 @@ def triangulate_facets(raw: RawInput) -> tuple[np.ndarray, np.ndarray, np.ndarra
 
 def merge_coplanar_facets(plc: PLC) -> PLC:
     """Give adjacent exactly coplanar triangles (sharing an edge of exactly two faces; exact orient3d == 0 of
-    the four vertices) one facet id, numbered by first triangle."""
+    the four vertices) with the same facet marker one facet id, numbered by first triangle."""
     t = plc.triangles
     ef = edge_faces(t)
     r1, r2 = manifold_face_pairs(ef)
     f1, f2 = r1 // 3, r2 // 3
     apex2 = t[f2, (r2 % 3 + 2) % 3]  # the vertex of face 2 off the shared edge
     coplanar = _core.plc_orient3d(plc.points, np.column_stack([t[f1], apex2])) == 0
+    if plc.facet_markers is not None:  # a marker boundary stays a facet boundary
+        coplanar &= plc.facet_markers[plc.facet_ids[f1]] == plc.facet_markers[plc.facet_ids[f2]]
     m = len(t)
     graph = coo_matrix((np.ones(coplanar.sum()), (f1[coplanar], f2[coplanar])), shape=(m, m))
     _, label = connected_components(graph, directed=False)
     _, first = np.unique(label, return_index=True)
     rank = np.empty(len(first), dtype=np.int64)
     rank[np.argsort(first)] = np.arange(len(first))
-    return replace(plc, facet_ids=rank[label])
+    markers = None
+    if plc.facet_markers is not None:
+        markers = np.empty(len(first), dtype=np.int64)
+        markers[rank[label]] = plc.facet_markers[plc.facet_ids]
+    return replace(plc, facet_ids=rank[label], facet_markers=markers)
 
 
 def facet_boundary_segments(triangles: np.ndarray, facet_ids: np.ndarray) -> np.ndarray:
@@ -141,7 +147,8 @@ def facet_boundary_segments(triangles: np.ndarray, facet_ids: np.ndarray) -> np.
 def build_plc(raw: RawInput, *, surface: bool) -> PLC:
     """Triangulate, validate (and orient), merge coplanar facets (surfaces only) and collect segments."""
     tris, ids, dangling = triangulate_facets(raw)
-    plc = PLC(raw.points, tris, ids, holes=raw.holes, regions=raw.regions, source=raw.source)
+    plc = PLC(raw.points, tris, ids, holes=raw.holes, regions=raw.regions, source=raw.source,
+              facet_markers=raw.facet_markers)
     plc = validate_plc(plc, oriented_format=surface)
     if surface:
         plc = merge_coplanar_facets(plc)
@@ -156,11 +163,12 @@ def load_plc(path: str | Path) -> PLC:
 
     Returns a PLC with the file's vertices in file order (STL: distinct vertices in order of first
     occurrence), triangulated facets (oriented consistently where they can be, each component outward),
-    facet ids, segments, holes, regions and warnings. Any PLC TetGen accepts loads, whatever the format:
-    non-manifold edges and vertices, internal facets, several regions, dangling facets, any orientation (see
-    :func:`~nonobtuse.mesh3d.validate3d.validate_plc`). Raises InvalidInputError naming the problem and where
-    for degenerate, duplicate or self-intersecting faces, faces that enclose no volume, bad indices or
-    coordinates. Cost: O(m log m) for m triangles plus the self-intersection sweep.
+    facet ids, facet markers (where the format has them), segments, holes, regions and warnings. Any PLC
+    TetGen accepts loads, whatever the format: non-manifold edges and vertices, internal facets, several
+    regions, dangling facets, any orientation (see :func:`~nonobtuse.mesh3d.validate3d.validate_plc`). Raises
+    InvalidInputError naming the problem and where for degenerate, duplicate or self-intersecting faces,
+    faces that enclose no volume, bad indices or coordinates. Cost: O(m log m) for m triangles plus the
+    self-intersection sweep.
     """
     path = Path(path)
     suffix = path.suffix.lower()

@@ -23,6 +23,8 @@ class PLC:
     regions:    (r, 4) float64 rows x, y, z, attribute.
     source:     where it came from, for messages.
     warnings:   what validation accepted but a user should know (dangling faces, faces it reoriented).
+    facet_markers: (F,) int64 the marker of each facet id (F = facet_ids.max() + 1): TetGen's facet boundary
+                marker, an OBJ group, a PLY face property; None when the input has none (every marker 0).
     """
 
     points: np.ndarray
@@ -33,6 +35,15 @@ class PLC:
     regions: np.ndarray = field(default_factory=lambda: np.zeros((0, 4), dtype=np.float64))
     source: str = "<memory>"
     warnings: tuple[str, ...] = ()
+    facet_markers: np.ndarray | None = None
+
+    def markers_of_facets(self, facets: np.ndarray) -> np.ndarray:
+        """The markers (k,) int64 of facet ids (k,): ``facet_markers[facets]``, 0 for every facet when the PLC
+        has no markers, -1 where the facet id is -1 (unknown, e.g. fTetWild's remeshed boundary)."""
+        facets = np.asarray(facets, dtype=np.int64).ravel()
+        if self.facet_markers is None:
+            return np.where(facets < 0, -1, 0).astype(np.int64)
+        return np.where(facets < 0, -1, self.facet_markers[np.maximum(facets, 0)]).astype(np.int64)
 
 
 @dataclass
@@ -42,10 +53,12 @@ class TetMesh:
     points:          (n, 3) float64; the PLC's points first, in input order, Steiner points after.
     tets:            (t, 4) int64, positively oriented.
     boundary_faces:  (f, 3) int64: the triangles covering the PLC's facets (subfacets).
-    face_markers:    (f,) int64: the facet id (or backend marker) of each boundary face.
+    face_markers:    (f,) int64: the marker of the input facet of each boundary face (subfacets keep their
+                     facet's marker; 0 when the PLC has no markers, -1 when the facet is unknown).
     segments:        (k, 2) int64: subsegments of the PLC's segments.
     tet_regions:     (t,) float64 region attribute per tet, or None.
     stats:           backend, timings, refinement status and diagnosis.
+    face_facets:     (f,) int64: the input facet id of each boundary face (-1: unknown), or None.
     """
 
     points: np.ndarray
@@ -55,3 +68,19 @@ class TetMesh:
     segments: np.ndarray = field(default_factory=lambda: np.zeros((0, 2), dtype=np.int64))
     tet_regions: np.ndarray | None = None
     stats: dict[str, Any] = field(default_factory=dict)
+    face_facets: np.ndarray | None = None
+
+    def to_meshio(self) -> Any:
+        """This mesh as a ``meshio.Mesh``: cell blocks ``tetra`` and ``triangle`` (the boundary faces), cell
+        data ``region``, ``marker`` and ``facet`` (see :mod:`nonobtuse.io.tetmesh`)."""
+        from nonobtuse.io.tetmesh import tetmesh_to_meshio
+
+        return tetmesh_to_meshio(self)
+
+    @classmethod
+    def from_meshio(cls, m: Any) -> TetMesh:
+        """A TetMesh from a ``meshio.Mesh`` with tetra (and triangle) cells; data read as :meth:`to_meshio`
+        writes it, or from gmsh tags. Raises InvalidInputError when there are no tetra cells."""
+        from nonobtuse.io.tetmesh import tetmesh_from_meshio
+
+        return tetmesh_from_meshio(m)

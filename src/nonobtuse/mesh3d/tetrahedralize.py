@@ -4,20 +4,21 @@ first, in input order, and positively oriented tets (exact orient3d; rows are sw
 What each backend guarantees:
 
 - ``"cgal"``: the Delaunay tetrahedralization of the PLC's vertices (CGAL, exact predicates), no Steiner
-  point. The boundary faces are the PLC's triangles as given (facet ids as markers) and the segments the
-  PLC's; they are faces/edges of the tetrahedralization only where they are Delaunay. Tets are kept when their
-  centroid has generalized winding number >= 1/2 w.r.t. the PLC triangles (floating point: it only selects
-  which tets are reported; the exact Gabriel check reads the boundary faces and points). Volume holes and
-  regions are not applied. This is the "before" state of the Gabriel refinement.
+  point. The boundary faces are the PLC's triangles as given (with their facets' markers; facet ids in
+  face_facets) and the segments the PLC's; they are faces/edges of the tetrahedralization only where they are
+  Delaunay. Tets are kept when their centroid has generalized winding number >= 1/2 w.r.t. the PLC triangles
+  (floating point: it only selects which tets are reported; the exact Gabriel check reads the boundary faces
+  and points). Volume holes and regions are not applied. This is the "before" state of the Gabriel
+  refinement.
 - ``"tetgen"``: TetGen through the ``tetgen`` package. Default switches ``pq1.414YAQ``: the boundary is kept
   (``Y``: no Steiner point on the boundary), interior quality points are added; ``switches=...`` passes any
   string (e.g. ``"pq1.414AQ"`` lets TetGen split the boundary). TetGen keeps the input points first and in
   order; holes and regions of the PLC are passed on (``A`` gives region attributes). Boundary faces are
-  TetGen's faces on input facets with the facet id as marker.
+  TetGen's faces on input facets, with their facet's marker (facet ids in face_facets).
 - ``"ftetwild"``: fTetWild through ``pytetwild``. It remeshes the surface within an envelope (it moves it), so
   input points may be absent from the output. Output points exactly equal to an input point are mapped to that
   input index; absent input points are kept as unreferenced points so that the input comes first. Boundary
-  faces are the tet faces with one tet (marker -1: no facet id is known); segments are not known (empty).
+  faces are the tet faces with one tet (marker and facet -1: not known); segments are not known (empty).
 """
 
 from __future__ import annotations
@@ -104,7 +105,8 @@ def _cgal(plc: PLC, options: dict[str, Any]) -> TetMesh:
     centroids = plc.points[cells].mean(axis=1)
     w = igl.winding_number(plc.points, plc.triangles, centroids) if len(cells) else np.zeros(0)
     tets = cells[np.abs(w) >= 0.5]
-    return TetMesh(plc.points.copy(), tets, plc.triangles.copy(), plc.facet_ids.copy(), plc.segments.copy())
+    return TetMesh(plc.points.copy(), tets, plc.triangles.copy(), plc.markers_of_facets(plc.facet_ids),
+                   plc.segments.copy(), face_facets=plc.facet_ids.copy())
 
 
 def _tetgen(plc: PLC, options: dict[str, Any]) -> TetMesh:
@@ -128,10 +130,11 @@ def _tetgen(plc: PLC, options: dict[str, Any]) -> TetMesh:
         raise InvalidInputError(f"TetGen merged or moved input points of {plc.source} (duplicate vertices?)")
     node = np.asarray(node, dtype=np.float64)
     faces = np.asarray(tg.trifaces, dtype=np.int64).reshape(-1, 3)
-    face_markers = np.asarray(markers, dtype=np.int64) - 1
+    face_facets = np.asarray(markers, dtype=np.int64) - 1  # TetGen was given facet id + 1 as the marker
     regions = np.asarray(attr, dtype=np.float64).ravel() if attr is not None and np.size(attr) else None
-    return TetMesh(node, positively_oriented(node, elem), faces, face_markers,
-                   facet_boundary_segments(faces, face_markers), regions, {"switches": switches})
+    return TetMesh(node, positively_oriented(node, elem), faces, plc.markers_of_facets(face_facets),
+                   facet_boundary_segments(faces, face_facets), regions, {"switches": switches},
+                   face_facets=face_facets)
 
 
 def _load_ftetwild():
@@ -165,8 +168,9 @@ def _ftetwild(plc: PLC, options: dict[str, Any]) -> TetMesh:
     points, tets = input_points_first(plc.points, np.asarray(v, dtype=np.float64), np.asarray(t, np.int64))
     tets = positively_oriented(points, tets)
     faces = tet_faces_once(tets)
-    return TetMesh(points, tets, faces, np.full(len(faces), -1, dtype=np.int64),
-                   stats={"ftetwild_options": opts})
+    unknown_facets = np.full(len(faces), -1, dtype=np.int64)
+    return TetMesh(points, tets, faces, unknown_facets.copy(), stats={"ftetwild_options": opts},
+                   face_facets=unknown_facets)
 
 
 def input_points_first(inputs: np.ndarray, points: np.ndarray,
