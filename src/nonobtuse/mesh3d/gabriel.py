@@ -15,7 +15,7 @@ from typing import Any, Callable, Literal
 import numpy as np
 
 from nonobtuse import _core
-from nonobtuse.mesh3d.plc import PLC, TetMesh
+from nonobtuse.mesh3d.plc import PLC, TetMesh, region_attributes
 
 Status = Literal["converged", "budget_exhausted", "min_length_reached", "stalled"]
 
@@ -226,7 +226,7 @@ def refine_gabriel(
         boundary_faces=d["boundary_faces"],
         face_markers=d["face_markers"],
         segments=d["segments"],
-        tet_regions=d["tet_regions"] if len(plc.regions) else None,
+        tet_regions=region_attributes(d["tet_regions"], plc, conforming=d["status"] == "converged"),
         stats=stats,
     )
     return Gabriel3DResult(mesh=mesh, status=d["status"], stats=stats, report=report)
