@@ -1,5 +1,7 @@
 """The small 3D test corpus of `tests/data/3d/`, rebuilt deterministically:
-``python -m experiments.corpus3d [--out DIR]`` (needs scikit-image, the experiments extra).
+``python -m experiments.corpus3d [--out DIR]`` (needs scikit-image, the experiments extra);
+``python -m experiments.corpus3d --table`` then runs the default ``refine_gabriel`` (as ``nonobtuse
+refine3d``) on every file and writes the status table (`experiments/results/corpus3d_refine.md`).
 
 Families (provenance and sizes in `tests/data/3d/SOURCES.md`):
 
@@ -351,12 +353,34 @@ def build(out: Path) -> list[Path]:
     return written
 
 
+def refine_table(paths: list[Path]) -> str:
+    """Markdown table of the default refine_gabriel on each file: status, points, Steiner points, seconds."""
+    from nonobtuse.mesh3d import load_plc, refine_gabriel
+
+    rows = ["| file | input points | status | Steiner points | seconds |", "| --- | --- | --- | --- | --- |"]
+    for path in paths:
+        plc = load_plc(path)
+        result = refine_gabriel(plc)
+        rows.append(f"| {path.name} | {len(plc.points)} | {result.status} | "
+                    f"{result.stats['steiner_points']:,} | {result.stats['seconds']:.1f} |")
+        print(rows[-1], flush=True)
+    return "\n".join(rows) + "\n"
+
+
 def main(argv: list[str] | None = None) -> None:
     from nonobtuse.mesh3d import load_plc
 
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--out", type=Path, default=OUT)
+    ap.add_argument("--table", action="store_true",
+                    help="refine every file of --out with the defaults instead of writing them")
     args = ap.parse_args(argv)
+    if args.table:
+        paths = sorted(p for p in args.out.glob("*") if p.suffix in (".off", ".poly"))
+        results = Path(__file__).resolve().parent / "results"
+        with atomic_text(results / "corpus3d_refine.md") as f:
+            f.write(refine_table(paths))
+        return
     for path in build(args.out):
         plc = load_plc(path)
         print(f"{path.name}: {len(plc.points)} points, {len(plc.triangles)} triangles, "
