@@ -2,8 +2,13 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+from pathlib import Path
+
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from mesh3d_shapes import (
     CUBE_POINTS,
@@ -192,3 +197,26 @@ def test_multi_region_poly_with_an_internal_facet_is_accepted(tmp_path):
     (tmp_path / "two.poly").write_text(text)
     plc = load_plc(tmp_path / "two.poly")
     assert len(plc.triangles) == 22  # 11 squares
+
+
+CUBES_EDGE = Path(__file__).parent / "data" / "3d" / "cubes_edge.off"
+
+
+@settings(derandomize=True, deadline=5000, max_examples=30)
+@given(st.lists(st.booleans(), min_size=24, max_size=24))
+def test_any_orientation_of_two_cubes_sharing_an_edge_is_restored(flips):
+    # cubes_edge.off loads outward: triangles 0..11 are the first cube's six squares, 12..23 the second's.
+    # Reversing any subset, validation gives the same triangles back and counts, per cube, the faces in the
+    # minority orientation as reversed.
+    plc = load_plc(CUBES_EDGE)
+    flip = np.array(flips)
+    t = plc.triangles.copy()
+    t[flip] = t[flip][:, ::-1]
+    fixed = validate_plc(replace(plc, triangles=t, warnings=()))
+    assert np.array_equal(fixed.triangles, plc.triangles)
+    reversed_faces = sum(min(k, 12 - k) for k in (int(flip[:12].sum()), int(flip[12:].sum())))
+    if reversed_faces:
+        assert len(fixed.warnings) == 1
+        assert fixed.warnings[0].startswith(f"inconsistent orientation: {reversed_faces} faces")
+    else:
+        assert fixed.warnings == ()

@@ -8,6 +8,7 @@
 #include <pybind11/stl.h>
 
 #include "convert.h"
+#include "convert_plc.h"
 #include "nonobtuse/gabriel3d.h"
 
 namespace nonobtuse::bindings {
@@ -112,17 +113,7 @@ void bind_gabriel3d(py::module_& m) {
          const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions, long max_steiner,
          double min_length, double time_limit, const std::string& split, long progress_every,
          const std::optional<std::function<void(long, long, long, double)>>& progress) {
-        PLC3 plc;
-        plc.points = to_points3(points, "points");
-        plc.triangles = to_index_rows<3>(triangles, plc.points.size(), "triangles");
-        auto* ids = facet_ids.data();
-        plc.facet_ids.assign(ids, ids + facet_ids.size());
-        plc.segments = to_index_rows<2>(segments, plc.points.size(), "segments");
-        plc.holes = to_points3(holes, "holes");
-        require_shape(regions, 4, "regions");
-        auto* r = regions.data();
-        for (py::ssize_t i = 0; regions.ndim() == 2 && i < regions.shape(0); ++i)
-          plc.regions.push_back({r[4 * i], r[4 * i + 1], r[4 * i + 2], r[4 * i + 3]});
+        PLC3 plc = to_plc3(points, triangles, facet_ids, segments, holes, regions);
         const std::map<std::string, SplitRule> rules = {
             {"shells", SplitRule::Shells}, {"midpoint", SplitRule::Midpoint}, {"greedy", SplitRule::Greedy}};
         if (!rules.count(split))

@@ -2,6 +2,7 @@
 #include <pybind11/pybind11.h>
 
 #include "convert.h"
+#include "convert_plc.h"
 #include "nonobtuse/plc_predicates.h"
 
 namespace nonobtuse::bindings {
@@ -54,6 +55,30 @@ void bind_plc(py::module_& m) {
       py::arg("points"),
       "Finite cells (t, 4) int64 of the Delaunay tetrahedralization of points (n, 3), positively oriented.\n"
       "Raises InvalidInputError when two points coincide.");
+  m.def(
+      "delaunay_restricted_to_plc",
+      [](const DoubleArray& points, const IndexArray& triangles, const IndexArray& facet_ids,
+         const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions) {
+        PLC3 plc = to_plc3(points, triangles, facet_ids, segments, holes, regions);
+        PlcDelaunay r;
+        {
+          py::gil_scoped_release release;
+          r = delaunay_restricted_to_plc(plc);
+        }
+        py::dict d;
+        d["tets"] = from_index_rows<4>(r.tets);
+        d["tet_regions"] = from_vector(r.tet_regions);
+        d["boundary_faces"] = from_index_rows<3>(r.boundary_faces);
+        d["face_markers"] = from_vector(std::vector<std::int64_t>(r.face_markers.begin(), r.face_markers.end()));
+        d["uncovered_facets"] = from_vector(std::vector<std::int64_t>(r.uncovered_facets.begin(),
+                                                                      r.uncovered_facets.end()));
+        return d;
+      },
+      py::arg("points"), py::arg("triangles"), py::arg("facet_ids"), py::arg("segments"), py::arg("holes"),
+      py::arg("regions"),
+      "The Delaunay tetrahedralization of a PLC's vertices restricted to its regions (exact flood fill across\n"
+      "faces on no facet). Returns a dict: tets (t, 4), tet_regions (t,), boundary_faces (f, 3), face_markers\n"
+      "(f,), uncovered_facets (facet ids the faces do not cover; empty iff it conforms to every facet).");
 }
 
 }  // namespace nonobtuse::bindings

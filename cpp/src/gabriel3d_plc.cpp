@@ -27,12 +27,16 @@ std::string describe(const P3& p) {
   return s.str();
 }
 
-// An orthonormal frame of the facet's plane: normal = sum of its triangles' area vectors.
+// An orthonormal frame of the facet's plane: normal = sum of its triangles' area vectors, each turned to the side
+// of the first triangle's, so that a facet whose triangles are not consistently oriented (a PLC need not be) still
+// gets the normal of its plane.
 void set_frame(Facet& facet, const std::vector<P3>& pts, const std::vector<Triangle>& tris) {
-  Vec n{0, 0, 0};
+  Vec n{0, 0, 0}, first{0, 0, 0};
   for (const auto& t : tris) {
     Vec c = cross(sub(pts[t[1]], pts[t[0]]), sub(pts[t[2]], pts[t[0]]));
-    for (int d = 0; d < 3; ++d) n[d] += c[d];
+    if (&t == &tris.front()) first = c;
+    double sign = dot(c, first) < 0 ? -1.0 : 1.0;
+    for (int d = 0; d < 3; ++d) n[d] += sign * c[d];
   }
   n = normalized(n);
   const P3& o = pts[tris[0][0]];

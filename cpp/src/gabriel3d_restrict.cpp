@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <numeric>
 
 #include "gabriel3d_plc.h"
@@ -99,6 +100,24 @@ void canonical_order(Restricted& out) {
   out = std::move(sorted);
 }
 
+// Without region seeds every inside component is a region of its own: attribute 1, 2, ... in the order of the
+// components' smallest cells (sorted corners), so that the numbers do not depend on the cell order.
+template <class Inside>
+void number_regions(const DT3& dt, const Inside& inside, std::vector<double>& attribute) {
+  std::vector<std::pair<std::array<int, 4>, int>> smallest;  // (smallest cell, component)
+  std::map<int, std::array<int, 4>> first;
+  for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
+    if (!inside(c)) continue;
+    std::array<int, 4> k{c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()};
+    std::sort(k.begin(), k.end());
+    auto [it, fresh] = first.emplace(c->info(), k);
+    if (!fresh) it->second = std::min(it->second, k);
+  }
+  for (const auto& [component, k] : first) smallest.emplace_back(k, component);
+  std::sort(smallest.begin(), smallest.end());
+  for (std::size_t rank = 0; rank < smallest.size(); ++rank) attribute[smallest[rank].second] = rank + 1.0;
+}
+
 }  // namespace
 
 Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
@@ -163,10 +182,11 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
   }
   for (const auto& h : plc.holes)
     if (auto c = dt.locate(to_cgal(h)); !flat(c)) outside[c->info()] = true;
+  auto inside = [&](DT3::Cell_handle c) { return !flat(c) && !outside[c->info()]; };
   std::vector<double> attribute(components, 0.0);
   for (const auto& r : plc.regions)
     if (auto c = dt.locate(P3(r[0], r[1], r[2])); !flat(c)) attribute[c->info()] = r[3];
-  auto inside = [&](DT3::Cell_handle c) { return !flat(c) && !outside[c->info()]; };
+  if (plc.regions.empty()) number_regions(dt, inside, attribute);
   for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
     if (!inside(c)) continue;
     out.tets.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});

@@ -18,7 +18,7 @@ import numpy as np
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d.control_volumes3d import control_volumes3d
-from nonobtuse.mesh3d.plc import PLC, TetMesh
+from nonobtuse.mesh3d.plc import PLC, TetMesh, region_attributes
 
 Status = Literal["converged", "budget_exhausted", "min_length_reached", "stalled"]
 
@@ -251,7 +251,7 @@ def refine_gabriel(
         boundary_faces=faces,
         face_markers=plc.markers_of_facets(r.face_markers),  # the core reports facet ids
         segments=segments,
-        tet_regions=r.tet_regions if len(plc.regions) else None,
+        tet_regions=region_attributes(r.tet_regions, plc, conforming=r.status == "converged"),
         stats=stats,
         face_facets=np.asarray(r.face_markers, dtype=np.int64),
     )

@@ -84,3 +84,14 @@ class TetMesh:
         from nonobtuse.io.tetmesh import tetmesh_from_meshio
 
         return tetmesh_from_meshio(m)
+
+
+def region_attributes(tet_regions: np.ndarray, plc: PLC, conforming: bool) -> np.ndarray | None:
+    """The region attribute per tet (t,) float64 to report for a mesh of `plc`: `tet_regions` as computed, or
+    None when the PLC has no region seeds and either the tets form a single region (nothing to tell apart) or
+    the mesh does not conform to the facets (`conforming` False: its components, numbered when there are no
+    seeds, are then pieces cut by the leaks, not the PLC's regions)."""
+    tet_regions = np.asarray(tet_regions, dtype=np.float64)
+    if not len(plc.regions) and (not conforming or len(np.unique(tet_regions)) <= 1):
+        return None
+    return tet_regions

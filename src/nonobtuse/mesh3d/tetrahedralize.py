@@ -6,10 +6,14 @@ What each backend guarantees:
 - ``"cgal"``: the Delaunay tetrahedralization of the PLC's vertices (CGAL, exact predicates), no Steiner
   point. The boundary faces are the PLC's triangles as given (with their facets' markers; facet ids in
   face_facets) and the segments the PLC's; they are faces/edges of the tetrahedralization only where they are
-  Delaunay. Tets are kept when their centroid has generalized winding number >= 1/2 w.r.t. the PLC triangles
-  (floating point: it only selects which tets are reported; the exact Gabriel check reads the boundary faces
-  and points). Volume holes and regions are not applied. This is the "before" state of the Gabriel
-  refinement.
+  Delaunay. This is the "before" state of the Gabriel refinement. Where the tetrahedralization conforms to
+  every facet (exact check), the tets are its cells in the PLC's regions: components of cells connected across
+  faces on no facet, without the unbounded one and those of hole seeds (internal facets separate regions,
+  orientation is not used), with region attributes from the seeds or, without seeds, numbered 1, 2, ... when
+  there are several regions (``stats["volume_mesh"] == "built"``). Otherwise a flood fill would leak through
+  the facets: tets are then selected by generalized winding number >= 1/2 of their centroid (floating point;
+  no regions) and ``stats["volume_mesh"]`` says so. The exact Gabriel check reads only the boundary faces and
+  points.
 - ``"tetgen"``: TetGen through the ``tetgen`` package. Default switches ``pq1.414YAQ``: the boundary is kept
   (``Y``: no Steiner point on the boundary), interior quality points are added; ``switches=...`` passes any
   string (e.g. ``"pq1.414AQ"`` lets TetGen split the boundary). TetGen keeps the input points first and in
@@ -38,7 +42,7 @@ from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io.raw3d import merge_equal_points
 from nonobtuse.mesh3d.load import facet_boundary_segments
-from nonobtuse.mesh3d.plc import PLC, TetMesh
+from nonobtuse.mesh3d.plc import PLC, TetMesh, region_attributes
 
 BACKENDS = ("cgal", "tetgen", "ftetwild")
 TETGEN_DEFAULT_SWITCHES = "pq1.414YAQ"
@@ -96,17 +100,43 @@ def _in_temporary_directory():
             os.chdir(previous)
 
 
-def _cgal(plc: PLC, options: dict[str, Any]) -> TetMesh:
-    import igl
+def _plc_arrays(plc: PLC) -> tuple[np.ndarray, ...]:
+    """The PLC as the contiguous arrays the core takes: points, triangles, facet_ids, segments, holes,
+    regions."""
+    return (np.ascontiguousarray(plc.points, dtype=np.float64).reshape(-1, 3),
+            np.ascontiguousarray(plc.triangles, dtype=np.int64).reshape(-1, 3),
+            np.ascontiguousarray(plc.facet_ids, dtype=np.int64).reshape(-1),
+            np.ascontiguousarray(plc.segments, dtype=np.int64).reshape(-1, 2),
+            np.ascontiguousarray(plc.holes, dtype=np.float64).reshape(-1, 3),
+            np.ascontiguousarray(plc.regions, dtype=np.float64).reshape(-1, 4))
 
+
+def _cgal(plc: PLC, options: dict[str, Any]) -> TetMesh:
     if options:
         raise InvalidInputError(f"backend 'cgal' takes no options, got {sorted(options)}")
+    d = _core.delaunay_restricted_to_plc(*_plc_arrays(plc))
+    n_facets = len(np.unique(plc.facet_ids))
+    if len(d["uncovered_facets"]) == 0:
+        tets, regions, volume_mesh = d["tets"], region_attributes(d["tet_regions"], plc, True), "built"
+    else:
+        tets, regions = _tets_by_winding_number(plc), None
+        volume_mesh = (f"by winding number: the Delaunay tetrahedralization of the vertices does not conform "
+                       f"to {len(d['uncovered_facets'])} of {n_facets} facets (e.g. facet "
+                       f"{int(d['uncovered_facets'][0])}); no regions")
+    return TetMesh(plc.points.copy(), tets, plc.triangles.copy(), plc.markers_of_facets(plc.facet_ids),
+                   plc.segments.copy(), regions, {"volume_mesh": volume_mesh}, face_facets=plc.facet_ids.copy())
+
+
+def _tets_by_winding_number(plc: PLC) -> np.ndarray:
+    """Delaunay cells of the PLC's vertices whose centroid has generalized winding number >= 1/2 w.r.t. the
+    PLC's (outward oriented) triangles: floating point, for PLCs the Delaunay tetrahedralization does not
+    conform to; internal facets and dangling facets blur it."""
+    import igl
+
     cells = _core.delaunay_tetrahedra(plc.points)
     centroids = plc.points[cells].mean(axis=1)
     w = igl.winding_number(plc.points, plc.triangles, centroids) if len(cells) else np.zeros(0)
-    tets = cells[np.abs(w) >= 0.5]
-    return TetMesh(plc.points.copy(), tets, plc.triangles.copy(), plc.markers_of_facets(plc.facet_ids),
-                   plc.segments.copy(), face_facets=plc.facet_ids.copy())
+    return cells[np.abs(w) >= 0.5]
 
 
 def _tetgen(plc: PLC, options: dict[str, Any]) -> TetMesh:
