@@ -82,8 +82,8 @@ def _read_vertices(lines: Lines) -> tuple[np.ndarray, np.ndarray, int]:
     n_mark = head.count(3, "the number of boundary markers") if len(head.tokens) > 3 else 0
     if n_mark > 1:
         raise head.error(f"the number of boundary markers must be 0 or 1, found {n_mark}")
-    points = np.empty((n, 2), dtype=np.float64)
-    point_lines = np.empty(n, dtype=np.int64)
+    points = np.empty((lines.room_for(n), 2), dtype=np.float64)
+    point_lines = np.empty(lines.room_for(n), dtype=np.int64)
     first_id = 0
     for k in range(n):
         line = lines.next(f"vertex {k + 1} of {n}").need(3 + n_attr + n_mark, "id, x, y, attributes, markers")
@@ -107,8 +107,8 @@ def _read_segments(lines: Lines, n_points: int, first_id: int) -> tuple[np.ndarr
     head = lines.next("the segment count line")
     m = head.count(0, "the segment count")
     n_mark = head.count(1, "the number of boundary markers") if len(head.tokens) > 1 else 0
-    segments = np.empty((m, 2), dtype=np.int64)
-    seg_lines = np.empty(m, dtype=np.int64)
+    segments = np.empty((lines.room_for(m), 2), dtype=np.int64)
+    seg_lines = np.empty(lines.room_for(m), dtype=np.int64)
     for k in range(m):
         line = lines.next(f"segment {k + 1} of {m}").need(3 + n_mark, "id, endpoint, endpoint, markers")
         line.int(0, "the segment id")
@@ -135,8 +135,8 @@ def _read_rows(
         return np.zeros((0, width - 1)), np.zeros(0, dtype=np.int64)
     head = lines.next(f"the {what} count line")
     k = head.count(0, f"the {what} count")
-    rows = np.empty((k, width - 1), dtype=np.float64)
-    row_lines = np.empty(k, dtype=np.int64)
+    rows = np.empty((lines.room_for(k), width - 1), dtype=np.float64)
+    row_lines = np.empty(lines.room_for(k), dtype=np.int64)
     names = ["x", "y", "attribute"]
     for i in range(k):
         line = lines.next(f"{what} {i + 1} of {k}").need(width, f"id, {', '.join(names[: width - 1])}")
@@ -148,12 +148,17 @@ def _read_rows(
     return rows, row_lines
 
 
+def output_paths(path: Path) -> list[Path]:
+    """The files :func:`write_triangle` writes for ``path``: its .node, .ele and .poly siblings."""
+    stem = path.with_suffix("")
+    return [stem.with_suffix(s) for s in (".node", ".ele", ".poly")]
+
+
 def write_triangle(mesh: Mesh, path: Path) -> list[Path]:
     """Write ``stem.node`` (points), ``stem.ele`` (triangles, with the region attribute when present) and
     ``stem.poly`` (0 vertices, i.e. those of the .node; every constrained subsegment; no holes), ids 1-based,
     coordinates in shortest round-trip form (float64 exact). Each file atomically. Returns the paths."""
-    stem = path.with_suffix("")
-    node, ele, poly = (stem.with_suffix(s) for s in (".node", ".ele", ".poly"))
+    node, ele, poly = output_paths(path)
     with atomic_text(node) as f:
         f.write(f"# written by nonobtuse\n{len(mesh.points)} 2 0 0\n")
         f.writelines(f"{i} {x!r} {y!r}\n" for i, (x, y) in enumerate(mesh.points.tolist(), start=1))
