@@ -8,13 +8,15 @@ the PLC and its control volumes see nonnegative boundary coefficients.
 
 from __future__ import annotations
 
+import math
 import sys
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Literal
 
 import numpy as np
 
 from nonobtuse import _core
+from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
 Status = Literal["converged", "budget_exhausted", "min_length_reached", "stalled"]
@@ -114,6 +116,29 @@ def _index_array(a: np.ndarray | None, cols: int) -> np.ndarray:
     return np.ascontiguousarray(np.asarray(a, dtype=np.int64).reshape(-1, cols))
 
 
+SAFE_MAGNITUDE = 2.0**64  # coordinates within [2^-64, 2^64] in absolute value go to the core as they are
+
+
+def power_of_two_exponent(points: np.ndarray) -> int:
+    """The exponent e by which the 3D core's inputs are scaled (times 2^-e) and its outputs scaled back:
+    0 when the largest absolute coordinate of ``points`` (n, 3) lies within [2^-64, 2^64] (or all are 0),
+    else the one bringing it into [1/2, 1). Scaling by a power of two is exact (no under- or overflow is
+    allowed: that is checked) and the exact predicates decide the same on scaled points, so the results are
+    those of the input, while the core's rounded constructions (circumcentres, projections) stay far from
+    float64's overflow and underflow. Raises InvalidInputError when the coordinates span more magnitudes
+    than float64 can scale exactly (a coordinate would round)."""
+    p = np.asarray(points, dtype=np.float64)
+    largest = float(np.abs(p).max()) if p.size else 0.0
+    if largest == 0.0 or 1.0 / SAFE_MAGNITUDE <= largest <= SAFE_MAGNITUDE:
+        return 0
+    e = int(np.frexp(largest)[1])
+    if not np.array_equal(np.ldexp(np.ldexp(p, -e), e), p):
+        raise InvalidInputError(
+            f"the coordinates span too many magnitudes for float64 (largest {largest!r}, smallest nonzero "
+            f"{float(np.abs(p[p != 0]).min())!r}): scaling them into a safe range would round some")
+    return e
+
+
 def check_gabriel(mesh: TetMesh) -> GabrielReport:
     """Exact Gabriel certificate of mesh.boundary_faces (f, 3) and mesh.segments (k, 2) against mesh.points.
 
@@ -124,7 +149,7 @@ def check_gabriel(mesh: TetMesh) -> GabrielReport:
     faces = _index_array(mesh.boundary_faces, 3)
     segments = _index_array(mesh.segments, 2)
     points = np.ascontiguousarray(np.asarray(mesh.points, dtype=np.float64).reshape(-1, 3))
-    d = _core.check_gabriel(points, faces, segments)
+    d = _core.check_gabriel(np.ldexp(points, -power_of_two_exponent(points)), faces, segments)
     return GabrielReport._from_core(d, len(faces), len(segments))
 
 
@@ -147,7 +172,11 @@ def default_min_length(points: np.ndarray) -> float:
     diagonal) and give the same meshes with it; runs caught in a small-angle cascade end at it with
     min_length_reached instead of spinning down to 1e-17 subsegments until the budget or a stall."""
     p = np.asarray(points, dtype=np.float64).reshape(-1, 3)
-    return 1e-6 * float(np.linalg.norm(p.max(axis=0) - p.min(axis=0))) if len(p) else 0.0
+    if not len(p):
+        return 0.0
+    e = power_of_two_exponent(p)  # the diagonal's square of 1e300 coordinates would overflow
+    diagonal = np.linalg.norm(np.ldexp(p.max(axis=0), -e) - np.ldexp(p.min(axis=0), -e))
+    return 1e-6 * float(np.ldexp(diagonal, e))
 
 
 def refine_gabriel(
@@ -186,25 +215,38 @@ def refine_gabriel(
     edges).
     """
     callback = _print_progress if progress is True else (progress or None)
+    max_steiner = default_steiner_budget(len(plc.points)) if max_steiner is None else max_steiner
     min_length = default_min_length(plc.points) if min_length is None else float(min_length)
+    _check_limits(max_steiner, min_length, time_limit)
+    points = np.ascontiguousarray(np.asarray(plc.points, dtype=np.float64).reshape(-1, 3))
+    e = power_of_two_exponent(points)  # the core works on points * 2^-e, exactly
+    regions = np.ascontiguousarray(np.asarray(plc.regions, dtype=np.float64).reshape(-1, 4))
+    regions = np.column_stack([np.ldexp(regions[:, :3], -e), regions[:, 3]])
     d = _core.refine_gabriel(
-        np.ascontiguousarray(np.asarray(plc.points, dtype=np.float64).reshape(-1, 3)),
+        np.ldexp(points, -e),
         _index_array(plc.triangles, 3),
         np.ascontiguousarray(np.asarray(plc.facet_ids, dtype=np.int64).reshape(-1)),
         _index_array(plc.segments, 2),
-        np.ascontiguousarray(np.asarray(plc.holes, dtype=np.float64).reshape(-1, 3)),
-        np.ascontiguousarray(np.asarray(plc.regions, dtype=np.float64).reshape(-1, 4)),
-        int(default_steiner_budget(len(plc.points)) if max_steiner is None else max_steiner),
-        float(min_length),
+        np.ldexp(np.ascontiguousarray(np.asarray(plc.holes, dtype=np.float64).reshape(-1, 3)), -e),
+        regions,
+        int(max_steiner),
+        float(np.ldexp(min_length, -e)),
         float(time_limit),
         split,
         int(progress_every),
         callback,
     )
     report = GabrielReport._from_core(d["certificate"], len(d["boundary_faces"]), len(d["segments"]))
+    status = d["status"]
+    steiner = np.ldexp(d["points"][len(points):], e)
+    if e and not np.array_equal(np.ldexp(steiner, -e), d["points"][len(points):]):
+        # Scaled back, a Steiner point rounded (it is subnormal): certify the points as returned.
+        report = check_gabriel(replace(_mesh_of(d, plc), points=np.concatenate([points, steiner])))
+        status = "stalled" if status == "converged" and not report.ok else status
+    d["points"] = np.concatenate([points, steiner])
     stats = {
         "backend": "cgal-gabriel",
-        "status": d["status"],
+        "status": status,
         "steiner_points": d["steiner_on_segments"] + d["steiner_on_facets"],
         "steiner_on_segments": d["steiner_on_segments"],
         "greedy_splits": d["greedy_splits"],
@@ -213,19 +255,37 @@ def refine_gabriel(
         "encroached_segments": len(report.segments),
         "unchecked_faces": d["certificate"]["unchecked_faces"],
         "unchecked_segments": d["certificate"]["unchecked_segments"],
-        "smallest_subsegment": d["smallest_subsegment"],
+        "smallest_subsegment": float(np.ldexp(d["smallest_subsegment"], e)),
         "min_length": min_length,
         "volume_mesh": d["volume_mesh"],
         "seconds": d["seconds"],
         "diagnosis": d["diagnosis"],
     }
-    mesh = TetMesh(
+    mesh = replace(_mesh_of(d, plc), stats=stats)
+    return Gabriel3DResult(mesh=mesh, status=status, stats=stats, report=report)
+
+
+def _mesh_of(d: dict[str, Any], plc: PLC) -> TetMesh:
+    """The TetMesh of the core's result ``d``."""
+    return TetMesh(
         points=d["points"],
         tets=d["tets"],
         boundary_faces=d["boundary_faces"],
         face_markers=d["face_markers"],
         segments=d["segments"],
         tet_regions=d["tet_regions"] if len(plc.regions) else None,
-        stats=stats,
     )
-    return Gabriel3DResult(mesh=mesh, status=d["status"], stats=stats, report=report)
+
+
+def _check_limits(max_steiner: Any, min_length: float, time_limit: Any) -> None:
+    """InvalidInputError unless max_steiner is an integer in [0, 2^62) and min_length, time_limit are finite
+    and >= 0."""
+    if isinstance(max_steiner, bool) or not isinstance(max_steiner, (int, np.integer)) or not (
+        0 <= max_steiner < 2**62
+    ):
+        raise InvalidInputError(f"max_steiner must be an integer in [0, 2^62), got {max_steiner!r}")
+    for name, value in (("min_length", min_length), ("time_limit", time_limit)):
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.number)) or not (
+            math.isfinite(value) and value >= 0
+        ):
+            raise InvalidInputError(f"{name} must be a finite number >= 0, got {value!r}")

@@ -24,6 +24,7 @@ from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import surfaces, tetgen
 from nonobtuse.io.raw3d import Facet, RawInput
+from nonobtuse.mesh3d.gabriel import power_of_two_exponent
 from nonobtuse.mesh3d.plc import PLC
 from nonobtuse.mesh3d.validate3d import edge_faces, manifold_face_pairs, validate_plc
 
@@ -59,8 +60,11 @@ def triangulate_facet(points: np.ndarray, facet: Facet, j: int) -> np.ndarray:
     to_local = {v: i for i, v in enumerate(local.tolist())}
     segs = [(to_local[int(lp[i])], to_local[int(lp[(i + 1) % len(lp)])])
             for lp in facet.loops if len(lp) >= 2 for i in range(len(lp) if len(lp) >= 3 else 1)]
-    p = points[first]
+    p = np.ldexp(points[first], -power_of_two_exponent(points[first]))  # exact, and no overflow below
     normal = np.cross(np.roll(p, -1, axis=0) - p, p - p[0]).sum(axis=0)  # Newell: only picks the projection
+    if not normal.any():  # zero area: a self-crossing polygon (a bow tie); project along a corner's normal
+        corners = np.cross(p - p[0], np.roll(p, -1, axis=0) - p[0])
+        normal = corners[np.argmax(np.abs(corners).max(axis=1))]
     drop = int(np.argmax(np.abs(normal)))
     keep = [k for k in range(3) if k != drop]
     try:

@@ -36,6 +36,7 @@ import numpy as np
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io.raw3d import merge_equal_points
+from nonobtuse.mesh3d.gabriel import power_of_two_exponent
 from nonobtuse.mesh3d.load import facet_boundary_segments
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
@@ -100,9 +101,10 @@ def _cgal(plc: PLC, options: dict[str, Any]) -> TetMesh:
 
     if options:
         raise InvalidInputError(f"backend 'cgal' takes no options, got {sorted(options)}")
-    cells = _core.delaunay_tetrahedra(plc.points)
-    centroids = plc.points[cells].mean(axis=1)
-    w = igl.winding_number(plc.points, plc.triangles, centroids) if len(cells) else np.zeros(0)
+    points = np.ldexp(plc.points, -power_of_two_exponent(plc.points))  # exact; float sums stay finite
+    cells = _core.delaunay_tetrahedra(points)
+    centroids = points[cells].mean(axis=1)
+    w = igl.winding_number(points, plc.triangles, centroids) if len(cells) else np.zeros(0)
     tets = cells[np.abs(w) >= 0.5]
     return TetMesh(plc.points.copy(), tets, plc.triangles.copy(), plc.facet_ids.copy(), plc.segments.copy())
 
