@@ -39,6 +39,9 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
+import numpy as np
+
+from nonobtuse import _core
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import json_formats, triangle
@@ -47,7 +50,7 @@ from nonobtuse.io.meshio_formats import read_meshio, write_meshio
 from nonobtuse.mesh import Mesh
 from nonobtuse.validate import check_coverage, validate_graph
 
-__all__ = ["is_mesh_file", "load_domain", "read_mesh", "write_mesh"]
+__all__ = ["is_mesh_file", "load_domain", "mesh_output_paths", "read_mesh", "write_mesh"]
 
 _TRIANGLE_SUFFIXES = (".node", ".ele", ".poly")
 
@@ -60,10 +63,11 @@ def load_domain(
 
     convex_hull: True closes the domain with the convex hull (Triangle -c: needed for an outer boundary that
     does not close, like box.poly); False takes the domain to be what the closed segment loops enclose; None
-    decides: the file's own ``convex_hull`` when it has one (domain .json), else True for a point set and for
-    segments that enclose no area at all (only dangling constraints, as in the CDT library's inputs), else
-    False. Returns the validated, possibly repaired Domain (see its ``repairs``). Raises InvalidInputError
-    naming the file, and the line where known. Cost: reading plus validation, O(n log n).
+    decides: the file's own ``convex_hull`` when it has one (domain .json), else True for a point set (no
+    segments), else False (segments that enclose no area, such as an open polygon or the CDT library's
+    dangling constraints, are then refused as an open boundary: never closed by the hull unasked). Returns
+    the validated, possibly repaired Domain (see its ``repairs``). Raises InvalidInputError naming the file,
+    and the line where known. Cost: reading plus validation, O(n log n).
     """
     path = Path(path)
     domain, file_hull = _read_domain(path)
@@ -112,14 +116,57 @@ def is_mesh_file(path: str | os.PathLike) -> bool:
 def read_mesh(path: str | os.PathLike) -> Mesh:
     """Read a mesh: nonobtuse mesh .json (see the module docstring), .vtu or .msh (meshio; such files do not
     record the input domain, so every point counts as an input point). Checks structure (keys, shapes, index
-    ranges), not geometry. Raises InvalidInputError naming the file."""
+    ranges, finite coordinates) and that the boundary does not cross itself (:func:`require_simple_boundary`);
+    orientation and the embedding around each vertex are checked by :func:`nonobtuse.check`. Raises
+    InvalidInputError naming the file."""
     path = Path(path)
     suffix = path.suffix.lower()
     if suffix in _MESHIO_FORMATS:
-        return read_meshio(path)
-    if suffix == ".json" or _looks_like_json(path):
-        return json_formats.mesh_from_json(path, json_formats.read_json(path))
-    raise InvalidInputError(f"{path}: unknown mesh format '{path.suffix}' (expected .json, .vtu or .msh)")
+        mesh = read_meshio(path)
+    elif suffix == ".json" or _looks_like_json(path):
+        mesh = json_formats.mesh_from_json(path, json_formats.read_json(path))
+    else:
+        raise InvalidInputError(f"{path}: unknown mesh format '{path.suffix}' (expected .json, .vtu or .msh)")
+    try:
+        require_simple_boundary(mesh)
+    except InvalidInputError as e:
+        raise InvalidInputError(f"{path}: {e}") from None
+    return mesh
+
+
+def require_simple_boundary(mesh: Mesh) -> None:
+    """InvalidInputError when two boundary edges of ``mesh`` (edges of one triangle only) cross, overlap, or
+    one passes through a vertex of another, or two boundary vertices coincide: the triangles then overlap
+    (decided exactly, :func:`nonobtuse._core.find_segment_intersections`). With the embedding check around
+    every vertex (the certificate), this rules out overlaps whose sheets' boundaries meet; sheets lying
+    wholly on top of one another without their boundaries meeting are not detected. Cost: O(m log m) for m
+    triangles plus the box-intersection search over the boundary edges."""
+    t = np.asarray(mesh.triangles, dtype=np.int64).reshape(-1, 3)
+    edges = np.sort(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), axis=1)
+    unique, count = np.unique(edges, axis=0, return_counts=True)
+    boundary = unique[count == 1]
+    vertices, local = np.unique(boundary, return_inverse=True)
+    points = np.ascontiguousarray(np.asarray(mesh.points, dtype=np.float64)[vertices])
+    order = np.lexsort((points[:, 1], points[:, 0]))
+    same = np.flatnonzero((points[order][1:] == points[order][:-1]).all(axis=1))
+    if len(same):
+        a, b = sorted(int(vertices[order[k]]) for k in (same[0], same[0] + 1))
+        raise InvalidInputError(f"boundary points {a} and {b} coincide at {points[order[same[0]]].tolist()}")
+    found = _core.find_segment_intersections(points, np.ascontiguousarray(local.reshape(-1, 2)))
+    for kind, what in (("crossings", "cross"), ("overlaps", "overlap")):
+        if len(found[kind]):
+            s, u = (vertices[local.reshape(-1, 2)[k]].tolist() for k in found[kind][0])
+            raise InvalidInputError(f"boundary edges {s} and {u} {what}: the triangles overlap")
+    if len(found["points_on_segments"]):
+        p, s = found["points_on_segments"][0]
+        raise InvalidInputError(f"point {int(vertices[p])} lies inside boundary edge "
+                                f"{vertices[local.reshape(-1, 2)[s]].tolist()}: the triangles overlap")
+
+
+def mesh_output_paths(path: str | os.PathLike) -> list[Path]:
+    """The files :func:`write_mesh` writes for ``path`` (three for a Triangle suffix, else ``path``)."""
+    path = Path(path)
+    return triangle.output_paths(path) if path.suffix.lower() in _TRIANGLE_SUFFIXES else [path]
 
 
 def write_mesh(mesh: Mesh, path: str | os.PathLike) -> list[Path]:

@@ -142,8 +142,8 @@ def mesh_from_json(path: Path, data: Any) -> Mesh:
     not_finite = np.flatnonzero(~np.isfinite(points).all(axis=1))
     if len(not_finite):
         i = int(not_finite[0])
-        raise InvalidInputError(f"{path}: points[{i}] = {points[i].tolist()} is not finite (a number too large "
-                                "for float64, such as 1e400, reads as infinity)")
+        raise InvalidInputError(f"{path}: points[{i}] = {points[i].tolist()} is not finite (a number too "
+                                "large for float64, such as 1e400, reads as infinity)")
     input_points = rows(data["input_points"], 2, float, f"{path}: input_points")
     triangles = rows(data["triangles"], 3, int, f"{path}: triangles")
     segments = rows(data["segments"], 2, int, f"{path}: segments")
