@@ -108,3 +108,15 @@ def test_check3d_json_stays_json_when_tets_are_flat_in_floating_point(tmp_path, 
     assert "NaN" not in json.dumps(summary)
     assert summary["tets"] > 0
     assert summary["control_volumes"]["flat_in_floating_point"] > 0
+
+
+def test_coordinates_near_the_float64_maximum_need_no_overflowing_float(tmp_path):
+    # A square pyramid with coordinates up to 1.7e308: its bounding-box diagonal (2.9e308) overflows float64,
+    # the default min_length (1e-6 of it) does not. Warnings are errors in the suite.
+    p = tmp_path / "pyramid.off"
+    p.write_text("OFF\n5 5 0\n0 0 0\n1.7e308 0 0\n1.7e308 1.7e308 0\n0 1.7e308 0\n0 0 1.7e308\n"
+                 "4 0 3 2 1\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n")
+    result = refine_gabriel(load_plc(p))
+    assert result.status == "converged"
+    assert 2.9e302 < result.stats["min_length"] < 3e302
+    assert check_gabriel(result.mesh).ok

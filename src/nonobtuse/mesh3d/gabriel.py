@@ -176,7 +176,7 @@ def default_min_length(points: np.ndarray) -> float:
         return 0.0
     e = power_of_two_exponent(p)  # the diagonal's square of 1e300 coordinates would overflow
     diagonal = np.linalg.norm(np.ldexp(p.max(axis=0), -e) - np.ldexp(p.min(axis=0), -e))
-    return 1e-6 * float(np.ldexp(diagonal, e))
+    return float(np.ldexp(1e-6 * diagonal, e))
 
 
 def refine_gabriel(
