@@ -143,8 +143,10 @@ def require_simple_boundary(mesh: Mesh) -> None:
     triangles plus the box-intersection search over the boundary edges."""
     t = np.asarray(mesh.triangles, dtype=np.int64).reshape(-1, 3)
     edges = np.sort(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), axis=1)
-    unique, count = np.unique(edges, axis=0, return_counts=True)
-    boundary = unique[count == 1]
+    n = len(mesh.points)
+    keys, count = np.unique(edges[:, 0] * n + edges[:, 1], return_counts=True)  # indices checked < n
+    once = keys[count == 1]
+    boundary = np.column_stack([once // n, once % n])
     vertices, local = np.unique(boundary, return_inverse=True)
     points = np.ascontiguousarray(np.asarray(mesh.points, dtype=np.float64)[vertices])
     order = np.lexsort((points[:, 1], points[:, 0]))
