@@ -93,3 +93,12 @@ def test_written_files_get_the_mode_the_umask_gives(tmp_path, umask):
     for path in written:
         assert stat.S_IMODE(path.stat().st_mode) == 0o666 & ~umask, path
     assert json.loads((tmp_path / "m.json").read_text())["triangles"] == [[0, 1, 2]]
+
+
+def test_an_infinite_coordinate_is_refused_before_any_arithmetic_warns(tmp_path):
+    # 1e400 reads as infinity; the quad's normal would be computed from it (RuntimeWarnings, errors here).
+    p = tmp_path / "inf.off"
+    p.write_text("OFF\n5 5 0\n0 0 0\n1e400 0 0\n1 1 0\n0 1 0\n0 0 1\n4 0 3 2 1\n3 0 1 4\n3 1 2 4\n3 2 3 4\n"
+                 "3 3 0 4\n")
+    with pytest.raises(InvalidInputError, match=r"vertex 1 has a NaN or infinite coordinate \[inf, 0.0"):
+        load_plc(p)

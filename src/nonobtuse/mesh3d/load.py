@@ -38,7 +38,14 @@ READERS = {".off": surfaces.read_off, ".obj": surfaces.read_obj, ".ply": surface
 # Facets -> triangles
 
 
-def _check_indices(raw: RawInput) -> None:
+def _check_points_and_indices(raw: RawInput) -> None:
+    """Finite coordinates (before any arithmetic on them) and facet indices in range."""
+    bad = np.flatnonzero(~np.isfinite(raw.points).all(axis=1))
+    if len(bad):
+        v = int(bad[0])
+        raise InvalidInputError(f"vertex {v} has a NaN or infinite coordinate {raw.points[v].tolist()} "
+                                f"in {raw.source} (a number too large for float64, such as 1e400, reads as "
+                                "infinity)")
     n = len(raw.points)
     for j, f in enumerate(raw.facets):
         for loop in f.loops:
@@ -99,7 +106,7 @@ def _check_planar(points: np.ndarray, local: np.ndarray, ref: np.ndarray, j: int
 
 def triangulate_facets(raw: RawInput) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(triangles (m, 3), facet_ids (m,), dangling segments (k, 2)) of all facets."""
-    _check_indices(raw)
+    _check_points_and_indices(raw)
     tris, ids, dangling = [], [], []
     for j, f in enumerate(raw.facets):
         dangling += [lp for lp in f.loops if len(lp) == 2]
