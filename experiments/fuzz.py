@@ -43,7 +43,7 @@ from nonobtuse import Domain, InvalidInputError  # noqa: E402
 from nonobtuse.io.raw3d import Facet, RawInput  # noqa: E402
 from nonobtuse.mesh3d import PLC, refine_gabriel  # noqa: E402
 from nonobtuse.mesh3d.load import build_plc  # noqa: E402
-from nonobtuse.refine import STRATEGIES  # noqa: E402
+from nonobtuse.refinement import STRATEGIES  # noqa: E402
 from nonobtuse.validate import validate_domain  # noqa: E402
 from refine_helpers import non_delaunay_edges, obtuse_constraint_sides  # noqa: E402
 

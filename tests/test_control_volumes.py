@@ -17,7 +17,8 @@ from point_sets import point_set_mesh
 
 SHARED = Path(__file__).resolve().parents[1] / ".." / "shared" / "data"
 CORPUS_SUFFIXES = {".poly", ".node", ".json"}
-CLOSED_BY_HULL = {"box.poly", "cdt_Constrained_Sweden.poly"}  # open outer boundaries: Triangle -c
+# open boundaries (an outer one that does not close, constraints enclosing nothing): Triangle -c
+CLOSED_BY_HULL = {"box.poly", "cdt_Constrained_Sweden.poly", "cdt_points_on_constraint_edge.poly"}
 INVALID = {"cdt_cdt.poly"}  # zero-length segments
 OBTUSE = ANGLES.index("obtuse")
 

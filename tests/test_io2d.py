@@ -202,7 +202,9 @@ def test_domain_json_convex_hull_from_the_file_and_from_the_caller(tmp_path):
     # One side of a square and a fourth point: open, so refused unless the convex hull closes it.
     data = {"points": [[0, 0], [1, 0], [1, 1], [0, 1]], "segments": [[0, 1], [1, 2]]}
     p = write(tmp_path, "open.json", json.dumps(data))
-    assert load_domain(p).convex_hull  # nothing enclosed: a constrained point set
+    with pytest.raises(InvalidInputError, match="boundary is not closed; dangling ends at point 0"):
+        load_domain(p)  # nothing enclosed: the convex hull closes it only when asked
+    assert load_domain(write(tmp_path, "hull.json", json.dumps({**data, "convex_hull": True}))).convex_hull
     q = write(tmp_path, "closed_by_file.json", json.dumps({**data, "convex_hull": False}))
     with pytest.raises(InvalidInputError, match="boundary is not closed"):
         load_domain(q)
@@ -371,8 +373,11 @@ def test_bundled_inputs_load_or_are_refused_as_expected():
     with pytest.raises(InvalidInputError, match=r"segment 49 \(points 0, 0: .*\(line 154\) has zero length"):
         load_domain(DATA / "cdt_cdt.poly")
     # points_on_constraint_edge: the segment from (0, 1) to (14, 1) passes through points 6 = (6, 1) and
-    # 7 = (8, 1) (1-based ids), i.e. indices 5 and 6; it encloses nothing, so the convex hull is the domain.
-    d = load_domain(DATA / "cdt_points_on_constraint_edge.poly")
+    # 7 = (8, 1) (1-based ids), i.e. indices 5 and 6; it encloses nothing, so only the convex hull (asked for)
+    # makes it a domain.
+    with pytest.raises(InvalidInputError, match="not closed; dangling ends at point 0"):
+        load_domain(DATA / "cdt_points_on_constraint_edge.poly")
+    d = load_domain(DATA / "cdt_points_on_constraint_edge.poly", convex_hull=True)
     assert d.segments.tolist() == [[0, 5], [5, 6], [6, 11]] and d.convex_hull
     assert len(d.repairs) == 1 and "split at 2 point(s)" in d.repairs[0]
     assert d.origin.segments.tolist() == [16, 16, 16]
@@ -415,9 +420,11 @@ def test_shared_inputs_load_or_raise_a_clear_error(path):
         d = load_domain(path)
     except InvalidInputError as e:
         assert str(e).startswith(f"{path}: ")
-        # the refused ones, worked out from SOURCES.md: zero-length edges, an open outer boundary, and
-        # Sweden's one dangling end (a segment out in the sea); the convex hull closes the last two
-        assert path.name in {"cdt_cdt.poly", "box.poly", "cdt_Constrained_Sweden.poly"}, str(e)
+        # the refused ones, worked out from SOURCES.md: zero-length edges, an open outer boundary,
+        # Sweden's one dangling end (a segment out in the sea), and a constraint among points that encloses
+        # nothing; the convex hull closes the last three
+        assert path.name in {"cdt_cdt.poly", "box.poly", "cdt_Constrained_Sweden.poly",
+                             "cdt_points_on_constraint_edge.poly"}, str(e)
         if path.name != "cdt_cdt.poly":
             assert "not closed" in str(e)
             assert load_domain(path, convex_hull=True).convex_hull

@@ -25,7 +25,7 @@ def test_corpus_file(name):
     else:
         from nonobtuse.io import load_domain
 
-        domain = load_domain(path)
+        domain = load_domain(path, convex_hull=True if PINS[name].get("load") == "convex_hull" else None)
     pin = PINS[name]
     for strategy in ("greedy", "project-flip", "projection"):
         res = nonobtuse.refine(domain, strategy=strategy)

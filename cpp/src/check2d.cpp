@@ -51,14 +51,40 @@ void require_valid_indices(const Mesh2& mesh) {
                            ", but there are " + std::to_string(n) + " points");
 }
 
+// Of a point p seen from a vertex v: 0 when its direction has angle in [0, pi) (p above v, or level with it and to
+// its right), else 1. Exact: it compares coordinates (lexicographically by (y, x)).
+int half_plane(const Point2& v, const Point2& p) { return p.y > v.y || (p.y == v.y && p.x > v.x) ? 0 : 1; }
+
+// Whether the direction of p from v comes strictly before that of q, by angle in [0, 2 pi) from the +x axis
+// (exact: half planes, then the orientation of (v, p, q) within one).
+bool angle_before(const Mesh2& mesh, int v, int p, int q) {
+  const int hp = half_plane(mesh.points[v], mesh.points[p]), hq = half_plane(mesh.points[v], mesh.points[q]);
+  if (hp != hq) return hp < hq;
+  return CGAL::orientation(at(mesh, v), at(mesh, p), at(mesh, q)) == CGAL::LEFT_TURN;
+}
+
+// Per vertex, its corners in triangles (low 32 bits) and how many of its triangles' angular wedges cross the
+// ray from it in the +x direction (high 32 bits): the wedge of triangle (v, a, b) runs counter-clockwise from
+// a to b through less than pi and crosses the ray (counted when it ends on it, not when it starts there) iff a
+// lies in half plane 1 and b in half plane 0. The crossings of a closed fan are its winding number.
+using CornerCounts = std::vector<std::uint64_t>;
+constexpr std::uint64_t kCrossing = std::uint64_t{1} << 32;
+
 // Every triangle in [t_begin, t_end) is strictly counter-clockwise (exact orientation; indices checked valid): the
-// side assignment below and the cotangent signs in control_volumes2d rely on it.
-void require_counter_clockwise(const Mesh2& mesh, std::size_t t_begin, std::size_t t_end) {
+// side assignment below and the cotangent signs in control_volumes2d rely on it. Adds each triangle's corners and
+// ray crossings to `counts`.
+void require_counter_clockwise(const Mesh2& mesh, std::size_t t_begin, std::size_t t_end, CornerCounts& counts) {
   for (std::size_t t = t_begin; t < t_end; ++t) {
     const auto& tri = mesh.triangles[t];
     if (CGAL::orientation(at(mesh, tri[0]), at(mesh, tri[1]), at(mesh, tri[2])) != CGAL::LEFT_TURN)
       throw InvalidInput(describe_triangle(mesh, t) + " is degenerate or clockwise; triangles must be "
                          "counter-clockwise");
+    for (int k = 0; k < 3; ++k) {
+      const Point2& v = mesh.points[tri[k]];
+      const bool crossing = half_plane(v, mesh.points[tri[(k + 1) % 3]]) == 1 &&
+                            half_plane(v, mesh.points[tri[(k + 2) % 3]]) == 0;
+      counts[tri[k]] += 1 + (crossing ? kCrossing : 0);
+    }
   }
 }
 
@@ -209,8 +235,81 @@ void classify_angles(const Mesh2& mesh, EdgeReport& r) {
       side->angle = classify_angle(at(mesh, r.edge[0]), at(mesh, side->apex), at(mesh, r.edge[1]));
 }
 
+// An end of a fan of triangles around `vertex`: the boundary edge to `other` where the fan starts (the first
+// triangle, counter-clockwise around the vertex, has the edge vertex -> other) or ends (other -> vertex).
+struct FanEnd {
+  int vertex, other;
+  bool start;
+};
+
+// The fan ends at both vertices of boundary edge (a, b), from its half-edge whose triangle is on the left
+// (has a -> b) or on the right (has b -> a).
+void add_fan_ends(std::vector<FanEnd>& ends, int a, int b, bool triangle_on_left) {
+  if (!triangle_on_left) std::swap(a, b);
+  ends.push_back({a, b, true});
+  ends.push_back({b, a, false});
+}
+
+std::string describe_point(const Mesh2& mesh, int v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "point " << v << " (" << mesh.points[v].x << ", " << mesh.points[v].y << ")";
+  return s.str();
+}
+
+// The triangles at vertex v cover a neighbourhood of v at most once (exactly once when v is interior). The
+// fans at v (its triangles, grouped between boundary edges) and the gaps between them, taken counter-clockwise,
+// form closed walks around v; the walk from each fan end to the next fan start (by exact angle) is a gap. Fans
+// and gaps cover every direction once iff the ends alternate start, end (no two in the same direction) and the
+// ray crossings of the fans (`crossings`, see CornerCounts) plus those of the gaps add up to 1: every closed
+// walk winds at least once.
+void require_embedded_at(const Mesh2& mesh, int v, std::uint64_t crossings, std::vector<FanEnd> ends) {
+  auto fail = [&](const std::string& why) {
+    return InvalidInput("the triangles around " + describe_point(mesh, v) + " " + why +
+                        ": the mesh overlaps itself (it is not embedded in the plane)");
+  };
+  std::sort(ends.begin(), ends.end(),
+            [&](const FanEnd& x, const FanEnd& y) { return angle_before(mesh, v, x.other, y.other); });
+  std::uint64_t winding = crossings;
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    const FanEnd& e = ends[i];
+    const FanEnd& next = ends[(i + 1) % ends.size()];
+    if (ends.size() > 1 && !angle_before(mesh, v, e.other, next.other) && !angle_before(mesh, v, next.other, e.other))
+      throw fail("have boundary edges to points " + std::to_string(e.other) + " and " + std::to_string(next.other) +
+                 " in the same direction");
+    if (e.start == next.start) throw fail("overlap: two fans of triangles around it cover the same directions");
+    if (!e.start) winding += angle_before(mesh, v, next.other, e.other);  // the gap from e to next crosses the ray
+  }
+  if (winding != 1)
+    throw fail(ends.empty() ? "wind " + std::to_string(winding) + " times around it"
+                            : "cover some directions from it more than once");
+}
+
+// Every vertex in a triangle passes require_embedded_at. counts: CornerCounts; ends: the FanEnd of every boundary
+// edge, in any order. Linear: the fan ends are bucketed by vertex with a counting sort.
+void require_embedded(const Mesh2& mesh, const CornerCounts& counts, const std::vector<FanEnd>& ends) {
+  const std::size_t n = mesh.points.size();
+  std::vector<std::uint32_t> start(n + 1, 0);
+  for (const FanEnd& e : ends) ++start[e.vertex + 1];
+  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<FanEnd> by_vertex(ends.size());
+  std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+  for (const FanEnd& e : ends) by_vertex[next[e.vertex]++] = e;
+  for (std::size_t v = 0; v < n; ++v) {
+    if ((counts[v] & (kCrossing - 1)) == 0) continue;  // in no triangle
+    const std::uint64_t crossings = counts[v] >> 32;
+    if (start[v] == start[v + 1]) {
+      if (crossings != 1) require_embedded_at(mesh, static_cast<int>(v), crossings, {});
+      continue;
+    }
+    require_embedded_at(mesh, static_cast<int>(v), crossings,
+                        std::vector<FanEnd>(by_vertex.begin() + start[v], by_vertex.begin() + start[v + 1]));
+  }
+}
+
 // Calls f(part, report) for every edge whose kind keep(kind) accepts, after checking the triangles' indices and
-// orientation (require_counter_clockwise), the region list's length and the segments. Large meshes are done in two
+// orientation (require_counter_clockwise), the region list's length and the segments; then checks that the mesh
+// does not overlap itself around any vertex (require_embedded: an error there discards what f collected). Large meshes are done in two
 // halves on two threads: the triangles' orientation, then edges (a, b) with a below and above the middle vertex
 // (part 0 and 1: f must keep its parts apart). Either way part 0 gets its edges in increasing a, and the error
 // reported is the first in that order. Sequential when threads is 1 or the mesh is small.
@@ -222,21 +321,27 @@ void for_each_edge_report(const Mesh2& mesh, int threads, Keep&& keep, F&& f) {
   require_valid_indices(mesh);
   const bool parallel = worth_forking(mesh.triangles.size(), threads);
   const std::size_t m = mesh.triangles.size();
-  fork_join(parallel, [&] { require_counter_clockwise(mesh, 0, m / 2); },
-            [&] { require_counter_clockwise(mesh, m / 2, m); });
+  CornerCounts counts(mesh.points.size(), 0), upper_counts(parallel ? mesh.points.size() : 0, 0);
+  fork_join(parallel, [&] { require_counter_clockwise(mesh, 0, parallel ? m / 2 : m, counts); },
+            [&] { if (parallel) require_counter_clockwise(mesh, m / 2, m, upper_counts); });
+  for (std::size_t v = 0; v < upper_counts.size(); ++v) counts[v] += upper_counts[v];
   HalfEdges h(mesh, parallel);
   const std::vector<char> constrained = constrained_edges(mesh, h, 3 * mesh.triangles.size());
   const auto& region = mesh.triangle_region;
   const bool one_region = std::adjacent_find(region.begin(), region.end(), std::not_equal_to<>()) == region.end();
   const std::vector<double>* regions = one_region ? nullptr : &region;
+  std::vector<FanEnd> fan_ends[2];
   auto part = [&](int p, std::size_t a_begin, std::size_t a_end) {
     h.for_each_edge(a_begin, a_end, [&](int a, int b, std::size_t left, std::size_t right) {
+      if (left == HalfEdges::npos || right == HalfEdges::npos) add_fan_ends(fan_ends[p], a, b, left != HalfEdges::npos);
       EdgeKind kind = kind_of(regions, h, left, right, constrained);
       if (keep(kind)) f(p, edge_report(h, a, b, left, right, kind));
     });
   };
   const std::size_t n = h.vertices();
   fork_join(parallel, [&] { part(0, 0, n / 2); }, [&] { part(1, n / 2, n); });
+  fan_ends[0].insert(fan_ends[0].end(), fan_ends[1].begin(), fan_ends[1].end());
+  require_embedded(mesh, counts, fan_ends[0]);
 }
 
 // Exact local Delaunay test: the right apex is not strictly inside the circumcircle of the left triangle.

@@ -137,6 +137,42 @@ TEST(Check2d, MalformedMeshesAreRefused) {
   EXPECT_THROW(classify_edges(stray_segment), InvalidInput);
 }
 
+// Meshes of counter-clockwise triangles with consistently paired edges that still overlap themselves.
+TEST(Check2d, OverlappingMeshesAreRefused) {
+  // An open fan around (0,0) winding twice: ring points at 72 k degrees, radius 1 + 0.05 k, k = 0..9,
+  // triangles (0, k, k + 1); the fan covers 9 * 72 = 648 degrees.
+  Mesh2 spiral;
+  spiral.points.push_back({0, 0});
+  for (int k = 0; k < 10; ++k)
+    spiral.points.push_back({(1 + 0.05 * k) * std::cos(k * 72 * M_PI / 180), (1 + 0.05 * k) * std::sin(k * 72 * M_PI / 180)});
+  for (int k = 1; k < 10; ++k) {
+    spiral.triangles.push_back({0, k, k + 1});
+    spiral.segments.push_back({k, k + 1});
+  }
+  EXPECT_THROW(classify_edges(spiral), InvalidInput);
+  EXPECT_THROW(count_obtuse_boundary_sides(spiral), InvalidInput);
+  spiral.triangles.resize(4);  // 4 * 72 = 288 degrees: embedded
+  spiral.segments.resize(4);
+  EXPECT_EQ(classify_edges(spiral).size(), 9u);
+  // A closed fan winding twice (a pentagram: rim points 144 degrees apart): every edge has one triangle on each
+  // side, the hub is interior and its fan winds twice.
+  Mesh2 pentagram;
+  pentagram.points.push_back({0, 0});
+  for (int k = 0; k < 5; ++k) pentagram.points.push_back({std::cos(k * 144 * M_PI / 180), std::sin(k * 144 * M_PI / 180)});
+  for (int k = 0; k < 5; ++k) pentagram.triangles.push_back({0, 1 + k, 1 + (k + 1) % 5});
+  EXPECT_THROW(classify_edges(pentagram), InvalidInput);
+  // Two triangles at (0,0) sharing no edge, the second inside the first's angle: two fans covering the same
+  // directions. Moved to the other side of (0,0), the second no longer overlaps (a valid bow tie).
+  Mesh2 nested{{{0, 0}, {2, 0}, {0, 2}, {2, 1}, {1, 2}}, {{0, 1, 2}, {0, 3, 4}}, {}, {}};
+  EXPECT_THROW(classify_edges(nested), InvalidInput);
+  Mesh2 bow_tie{{{0, 0}, {2, 0}, {0, 2}, {-2, -1}, {-1, -2}}, {{0, 1, 2}, {0, 3, 4}}, {}, {}};
+  EXPECT_EQ(classify_edges(bow_tie).size(), 6u);
+  // Two boundary edges from (0,0) in the same direction: (0,0)-(1,0) and (0,0)-(2,0) in two triangles above and
+  // below the x axis.
+  Mesh2 slit{{{0, 0}, {1, 0}, {0, 1}, {2, 0}, {0, -1}}, {{0, 1, 2}, {0, 4, 3}}, {}, {}};
+  EXPECT_THROW(classify_edges(slit), InvalidInput);
+}
+
 TEST(Check2d, EveryEdgeOfATriangulationOnceAndDelaunay) {
   // The square-with-hole ring of cdt_test: 8 triangles and 4 + 4 boundary edges; counting triangle sides,
   // 3 * 8 = 2 * interior + boundary = 2 * I + 8, so I = 8.

@@ -43,7 +43,9 @@ from nonobtuse import _core
 from nonobtuse.domain import Domain, SourceMap, mark_validated
 from nonobtuse.errors import InvalidInputError
 
-__all__ = ["check_coverage", "ensure_validated", "validate_domain", "validate_graph"]
+__all__ = [
+    "check_coverage", "ensure_validated", "require_points_in_domain", "validate_domain", "validate_graph",
+]
 
 _SHOWN = 5  # how many offending items a message lists before "and N more"
 
@@ -114,17 +116,15 @@ def check_coverage(
     domain: Domain, *, require_closed: bool = True, decide_convex_hull: bool = False
 ) -> Domain:
     """Check 6 of the module docstring on a domain that passed :func:`validate_graph`. Returns ``domain``,
-    or with ``decide_convex_hull`` a copy whose ``convex_hull`` is decided: True when the segments enclose no
-    area at all (a point set, or only dangling segments), else False. ``domain`` is not modified. Cost: one
-    constrained Delaunay triangulation (two when segments are present but enclose nothing).
+    or with ``decide_convex_hull`` a copy whose ``convex_hull`` is decided: True for a point set (no
+    segments), else False. Segments that enclose no area (an open polygon, or only dangling segments) are then
+    an open boundary, refused naming its dangling ends: the convex hull closes such a domain only when asked
+    (``convex_hull=True``). ``domain`` is not modified. Cost: one constrained Delaunay triangulation.
     """
     d = domain
     if decide_convex_hull:
         d = dataclasses.replace(domain, convex_hull=len(domain.segments) == 0, repairs=list(domain.repairs))
     cov = _core.inspect_domain(d.points, d.segments, d.holes, d.regions, d.convex_hull)
-    if decide_convex_hull and not d.convex_hull and not cov.encloses_area:
-        d = dataclasses.replace(d, convex_hull=True, repairs=list(d.repairs))
-        cov = _core.inspect_domain(d.points, d.segments, d.holes, d.regions, True)
     for kind, places, inside in (
         (
             "hole",
@@ -156,9 +156,12 @@ def _open_boundary_message(d: Domain, outside: np.ndarray) -> str:
         "a hole" + _more(outside) + ". The boundary is not closed"
     )
     if ends:
-        msg += "; dangling ends at " + ", ".join(_pt(d, v) for v in ends[:_SHOWN]) + _more(ends)
+        msg += "; dangling ends at " + ", ".join(_pt(d, v) for v in ends[:_SHOWN])
+        msg += f" (and {len(ends) - _SHOWN} more)" if len(ends) > _SHOWN else ""
     hint = (
-        "" if d.convex_hull else " (pass convex_hull=True to close it with the convex hull, like Triangle -c)"
+        "" if d.convex_hull
+        else " (pass convex_hull=True, or --convex-hull to the command, to close it with the convex hull, "
+        "like Triangle -c)"
     )
     return msg + hint
 
@@ -308,3 +311,22 @@ def _seed(d: Domain, kind: str, i: int) -> str:
 
 def _more(items) -> str:
     return f" (and {len(items) - 1} more)" if len(items) > 1 else ""
+
+
+def require_points_in_domain(domain: Domain, mesh_triangles: np.ndarray) -> None:
+    """InvalidInputError naming the points of ``domain`` that no triangle uses: they lie outside the domain
+    (in the exterior or in a hole), and a mesh keeping them unreferenced would be silently wrong.
+    mesh_triangles: (m, 3) int indices of a mesh whose first points are ``domain.points`` in order.
+    Cost: O(m).
+    """
+    n = len(domain.points)
+    used = np.zeros(n, dtype=bool)
+    corners = np.asarray(mesh_triangles).ravel()
+    used[corners[corners < n]] = True
+    bad = np.flatnonzero(~used)
+    if len(bad):
+        raise _invalid(
+            domain,
+            f"{_pt(domain, int(bad[0]))} lies outside the domain (in the exterior or in a hole: no triangle "
+            "uses it)" + _more(bad) + "; remove it, or close the boundary around it",
+        )

@@ -35,7 +35,10 @@ struct EdgeReport {
 // on the right side and -1 on the other.
 // Throws InvalidInput when a triangle is not strictly counter-clockwise (degenerate or clockwise), when the
 // triangles do not form a consistently oriented manifold mesh (an edge with more than two triangles, or two on
-// the same side), or when a listed segment is not an edge of any triangle.
+// the same side), when the triangles around a vertex overlap (they wind around an interior vertex other than
+// exactly once, or cover some direction from a boundary vertex twice: decided exactly, by coordinate comparisons
+// and orientations; this local test does not detect two parts of a mesh that overlap without sharing a vertex),
+// or when a listed segment is not an edge of any triangle.
 // Cost: O(n + m) for n points and m triangles (half-edges bucketed by their smaller vertex), plus O(k) for k
 // segments; on two threads for large meshes unless threads is 1 (the result is the same).
 std::vector<EdgeReport> classify_edges(const Mesh2& mesh, int threads = 2);

@@ -4,12 +4,15 @@ codes are in :mod:`nonobtuse.cli.exit_codes`."""
 from __future__ import annotations
 
 import argparse
+import os
+import signal
 import sys
 
 from nonobtuse.cli.exit_codes import EXIT_INVALID, EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS
 from nonobtuse.errors import InvalidInputError
 
-__all__ = ["EXIT_INVALID", "EXIT_NOT_CONVERGED", "EXIT_OK", "EXIT_VIOLATIONS", "build_parser", "main"]
+__all__ = ["EXIT_BROKEN_PIPE", "EXIT_INVALID", "EXIT_NOT_CONVERGED", "EXIT_OK", "EXIT_VIOLATIONS",
+           "build_parser", "main"]
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -28,6 +31,9 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+EXIT_BROKEN_PIPE = 128 + signal.SIGPIPE  # what a shell reports for a Unix tool killed by SIGPIPE
+
+
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     try:
@@ -35,6 +41,10 @@ def main(argv: list[str] | None = None) -> int:
     except InvalidInputError as e:
         print(f"nonobtuse: invalid input: {e}", file=sys.stderr)
         return EXIT_INVALID
+    except BrokenPipeError:  # the reader of stdout went away (`nonobtuse check ... | head`): stop quietly
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())  # so that flushing stdout at exit does not fail again
+        return EXIT_BROKEN_PIPE
 
 
 if __name__ == "__main__":

@@ -8,23 +8,29 @@ from pathlib import Path
 
 from nonobtuse import demo
 from nonobtuse.certificate import check
+from nonobtuse.cli import guards
 from nonobtuse.cli.exit_codes import EXIT_OK, EXIT_VIOLATIONS
 from nonobtuse.domain import Domain
-from nonobtuse.io import is_mesh_file, load_domain, read_mesh, write_mesh
+from nonobtuse.io import is_mesh_file, load_domain, mesh_output_paths, read_mesh, write_mesh
 from nonobtuse.triangulation import triangulate
+from nonobtuse.validate import require_points_in_domain
 
 
-def _load(args: argparse.Namespace) -> Domain:
+def load(args: argparse.Namespace) -> Domain:
+    """The domain file ``args.input``, closed by the convex hull when ``--convex-hull`` was given."""
     return load_domain(args.input, convex_hull=True if args.convex_hull else None)
 
 
-def _add_domain_options(p: argparse.ArgumentParser) -> None:
+def add_domain_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--convex-hull", action="store_true", help="close the domain with the convex hull of its "
                    "points (Triangle -c), for an open boundary")
 
 
 def _triangulate(args: argparse.Namespace) -> int:
-    mesh = triangulate(_load(args))
+    domain = load(args)
+    guards.refuse_overwriting(guards.files_read(args.input, domain), mesh_output_paths(args.output))
+    mesh = triangulate(domain)
+    require_points_in_domain(domain, mesh.triangles)
     write_mesh(mesh, args.output)
     print(f"{args.input}: {len(mesh.points)} points, {len(mesh.triangles)} triangles -> {args.output}")
     return EXIT_OK
@@ -32,7 +38,14 @@ def _triangulate(args: argparse.Namespace) -> int:
 
 def _check(args: argparse.Namespace) -> int:
     path = Path(args.input)
-    mesh = read_mesh(path) if is_mesh_file(path) else triangulate(_load(args))
+    if args.plot:
+        guards.refuse_overwriting([path], [Path(args.plot)])
+    if is_mesh_file(path):
+        mesh = read_mesh(path)
+    else:
+        domain = load(args)
+        mesh = triangulate(domain)
+        require_points_in_domain(domain, mesh.triangles)
     report = check(mesh)
     report.source = str(path)
     print(json.dumps(report.to_dict(), indent=1) if args.json else report.summary())
@@ -47,7 +60,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("triangulate", help="constrained Delaunay triangulation, no Steiner points")
     p.add_argument("input", help="domain: .poly, .node, CG:SHOP .json, domain .json")
     p.add_argument("-o", "--output", required=True, help="mesh file: .json, .node/.ele/.poly, .vtu, .msh")
-    _add_domain_options(p)
+    add_domain_options(p)
     p.set_defaults(func=_triangulate)
 
     p = sub.add_parser("check", help="exact check: is every boundary and interface angle nonobtuse? "
@@ -56,7 +69,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    "with its .ele beside it: Triangle's triangles are read, not recomputed), or a domain "
                    "file (its constrained Delaunay triangulation is checked)")
     p.add_argument("--json", action="store_true", help="print the full report as JSON")
-    _add_domain_options(p)
+    add_domain_options(p)
     p.add_argument("--plot", metavar="PNG", help="also draw the mesh, offending edges in red")
     p.add_argument("--exaggeration", type=float, default=1.0, help="vertical exaggeration of the plot")
     p.set_defaults(func=_check)

@@ -5,10 +5,14 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 import time
+from dataclasses import replace
+from pathlib import Path
 from typing import Any
 
+from nonobtuse.cli import guards
 from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS
 from nonobtuse.io import jsonable
 
@@ -25,23 +29,35 @@ def register(sub: argparse._SubParsersAction) -> None:
                                         "segment has an empty diametral sphere; write the tet mesh")
     p.add_argument("input", help=".off .obj .ply .stl .poly .smesh")
     p.add_argument("-o", "--output", required=True, help="output mesh: .json, .vtu or .msh")
-    p.add_argument("--max-steiner", type=int, default=None,
+    p.add_argument("--max-steiner", type=guards.count, default=None,
                    help="Steiner point budget (default: refine_gabriel's)")
-    p.add_argument("--min-length", type=float, default=None,
+    p.add_argument("--min-length", type=guards.non_negative, default=None,
                    help="no split may create an edge shorter than this (default: refine_gabriel's)")
-    p.add_argument("--time-limit", type=float, default=None,
+    p.add_argument("--time-limit", type=guards.non_negative, default=None,
                    help="seconds for loading, refinement and the exact check of the result (default: "
                         "refine_gabriel's); the final Delaunay tetrahedralization, the control volumes and "
                         "the writing (near-linear in the output) come on top")
     p.add_argument("--split", choices=("shells", "midpoint", "greedy"), default="shells",
                    help="how encroached subsegments are split (see refine_gabriel)")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
+    guards.add_timings_option(p)
     p.set_defaults(func=run_refine3d)
+
+
+def _finite_or_none(x: Any) -> Any:
+    """``x`` with every float that is NaN or infinite replaced by None (JSON has no such numbers)."""
+    if isinstance(x, float):
+        return x if math.isfinite(x) else None
+    if isinstance(x, dict):
+        return {k: _finite_or_none(v) for k, v in x.items()}
+    if isinstance(x, list):
+        return [_finite_or_none(v) for v in x]
+    return x
 
 
 def _print(summary: dict[str, Any], as_json: bool) -> None:
     if as_json:
-        print(json.dumps(jsonable(summary)))
+        print(json.dumps(_finite_or_none(jsonable(summary)), allow_nan=False))
     else:
         for k, v in summary.items():
             print(f"{k}: {v}")
@@ -51,8 +67,8 @@ def run_check3d(args: argparse.Namespace) -> int:
     from nonobtuse.mesh3d import boundary_certificate, load_plc, tetrahedralize
 
     plc = load_plc(args.input)
-    mesh = tetrahedralize(plc, args.backend)
-    summary = {"input": args.input, "backend": args.backend, **boundary_certificate(mesh)}
+    summary = {"input": args.input, "backend": args.backend,
+               **boundary_certificate(tetrahedralize(plc, args.backend))}
     _print(summary, args.json)
     gabriel = summary["encroached_facets"] == 0 and summary["encroached_segments"] == 0
     return EXIT_OK if gabriel else EXIT_VIOLATIONS
@@ -62,6 +78,7 @@ def run_refine3d(args: argparse.Namespace) -> int:
     from nonobtuse.mesh3d import load_plc, refine_gabriel, write_tetmesh
 
     t0 = time.perf_counter()
+    guards.refuse_overwriting(_files_read(args.input), [Path(args.output)])
     plc = load_plc(args.input)
     limits = {k: v for k, v in (("max_steiner", args.max_steiner), ("min_length", args.min_length),
                                   ("time_limit", args.time_limit)) if v is not None}
@@ -73,7 +90,30 @@ def run_refine3d(args: argparse.Namespace) -> int:
     # (float64 coordinates, written exactly); it ran within the time limit, and rows it did not reach make the
     # status budget_exhausted. A second, unbounded check here would break --time-limit.
     stats = result.stats
-    write_tetmesh(result.mesh, args.output)
+    written = dict(stats)
+    if not args.timings:  # the file is then the same for the same input and options
+        written["seconds"] = None
+    write_tetmesh(replace(result.mesh, stats=written), args.output)
     print(f"refine3d: {result.status} after {stats['seconds']:.2f} s; wrote {args.output}", file=sys.stderr)
-    _print({"input": args.input, "output": args.output, **stats}, args.json)
+    _print({"input": args.input, "output": args.output, **_unchecked_as_unknown(stats)}, args.json)
     return EXIT_OK if result.status == "converged" else EXIT_NOT_CONVERGED
+
+
+def _files_read(path: str) -> list[Path]:
+    """The input file, and for a TetGen .poly/.smesh the .node file beside it (read when the file lists no
+    nodes; counted as read whenever it exists)."""
+    p = Path(path)
+    node = p.with_suffix(".node")
+    return [p] + ([node] if p.suffix.lower() in (".poly", ".smesh") and node.exists() else [])
+
+
+def _unchecked_as_unknown(stats: dict[str, Any]) -> dict[str, Any]:
+    """``stats`` with the encroachment counts of a certificate that did not reach every row (time limit) shown
+    as ``"unknown: N unchecked"``: an unchecked face is not a Gabriel face."""
+    out = dict(stats)
+    for kind, rows in (("facets", "faces"), ("segments", "segments")):
+        unchecked = stats.get(f"unchecked_{rows}", 0)
+        if unchecked:
+            found = stats[f"encroached_{kind}"]
+            out[f"encroached_{kind}"] = f"at least {found}, {unchecked} {rows} unchecked"
+    return out

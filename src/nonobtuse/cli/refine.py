@@ -6,8 +6,11 @@ import argparse
 import json
 import sys
 
+from nonobtuse.cli import guards
 from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK
+from nonobtuse.cli.mesh2d import add_domain_options, load
 from nonobtuse.refinement import STRATEGIES, default_steiner_budget
+from nonobtuse.validate import require_points_in_domain
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -22,21 +25,25 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("-o", "--output", required=True, help="mesh file; the format follows the suffix")
     p.add_argument("--strategy", choices=STRATEGIES, default="greedy", help="default: greedy")
     b0, b1 = default_steiner_budget(0), default_steiner_budget(1)  # the core's rule, affine in n
-    p.add_argument("--max-steiner", type=int, default=None,
+    p.add_argument("--max-steiner", type=guards.count, default=None,
                    help=f"Steiner budget (default: {b1 - b0} n + {b0} for n input points)")
     p.add_argument("--threads", type=int, default=2,
                    help="threads for the whole-mesh passes of large inputs (default 2; same output)")
     p.add_argument("--json", action="store_true", help="print the statistics as JSON on stdout")
+    guards.add_timings_option(p)
+    add_domain_options(p)
     p.set_defaults(func=run)
 
 
 def run(args: argparse.Namespace) -> int:
-    from nonobtuse.io import load_domain, write_mesh
+    from nonobtuse.io import mesh_output_paths, write_mesh
     from nonobtuse.refinement import refine
 
-    result = refine(load_domain(args.input), strategy=args.strategy, max_steiner=args.max_steiner,
-                    threads=args.threads)
-    write_mesh(result.mesh, args.output)
+    domain = load(args)
+    guards.refuse_overwriting(guards.files_read(args.input, domain), mesh_output_paths(args.output))
+    result = refine(domain, strategy=args.strategy, max_steiner=args.max_steiner, threads=args.threads)
+    require_points_in_domain(domain, result.mesh.triangles)
+    write_mesh(guards.without_timings(result.mesh, args.timings), args.output)
     s = result.stats
     if args.json:
         json.dump(s, sys.stdout)

@@ -59,12 +59,15 @@ import os
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
+from nonobtuse import _core
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import json_formats, triangle
 from nonobtuse.io._files import atomic_path, atomic_text, jsonable
 from nonobtuse.io.meshio_formats import FORMATS as _MESHIO_FORMATS
-from nonobtuse.io.meshio_formats import read_meshio, write_meshio
+from nonobtuse.io.meshio_formats import read_meshio, region_map_path, write_meshio
 from nonobtuse.mesh import Mesh
 from nonobtuse.validate import validate_domain
 
@@ -73,8 +76,8 @@ if TYPE_CHECKING:
     from nonobtuse.mesh3d.load import load_plc
 
 __all__ = [
-    "atomic_path", "atomic_text", "is_mesh_file", "jsonable", "load_domain", "load_plc", "read_mesh",
-    "read_tetmesh_json", "write_mesh", "write_tetmesh",
+    "atomic_path", "atomic_text", "is_mesh_file", "jsonable", "load_domain", "load_plc", "mesh_output_paths",
+    "read_mesh", "read_tetmesh_json", "write_mesh", "write_tetmesh",
 ]
 
 _3D_ENTRY_POINTS = {"load_plc": "nonobtuse.mesh3d.load", "read_tetmesh_json": "nonobtuse.io.tetmesh",
@@ -101,11 +104,11 @@ def load_domain(
 
     convex_hull: True closes the domain with the convex hull (Triangle -c: needed for an outer boundary that
     does not close, like box.poly); False takes the domain to be what the closed segment loops enclose; None
-    decides: the file's own ``convex_hull`` when it has one (domain .json), else True for a point set and for
-    segments that enclose no area at all (only dangling constraints, as in the CDT library's inputs), else
-    False. Returns the validated (``Domain.validated``), possibly repaired Domain (see its ``repairs``).
-    Raises InvalidInputError naming the file, and the line where known. Cost: reading plus validation,
-    O(n log n).
+    decides: the file's own ``convex_hull`` when it has one (domain .json), else True for a point set (no
+    segments), else False (segments that enclose no area, such as an open polygon or the CDT library's
+    dangling constraints, are then refused as an open boundary: never closed by the hull unasked). Returns
+    the validated (``Domain.validated``), possibly repaired Domain (see its ``repairs``). Raises
+    InvalidInputError naming the file, and the line where known. Cost: reading plus validation, O(n log n).
     """
     path = Path(path)
     domain, file_hull = _read_domain(path)
@@ -159,18 +162,65 @@ def read_mesh(path: str | os.PathLike) -> Mesh:
     """Read a mesh: nonobtuse mesh .json (see the module docstring), Triangle .node/.ele/.poly (the .ele and
     .node must exist; :func:`nonobtuse.io.triangle.read_triangle_mesh`), .vtu or .msh (meshio). Only the
     .json records the input domain; from the others every point counts as an input point. Checks structure
-    (keys, shapes, index ranges), not geometry. Raises InvalidInputError naming the file."""
+    (keys, shapes, index ranges, finite coordinates) and that the boundary does not cross itself
+    (:func:`require_simple_boundary`); orientation and the embedding around each vertex are checked by
+    :func:`nonobtuse.check`. Raises InvalidInputError naming the file."""
     path = Path(path)
     suffix = path.suffix.lower()
     if suffix in _MESHIO_FORMATS:
-        return read_meshio(path)
-    if suffix in _TRIANGLE_SUFFIXES:
-        return triangle.read_triangle_mesh(path)
-    if suffix == ".json" or _looks_like_json(path):
-        return json_formats.mesh_from_json(path, json_formats.read_json(path))
-    raise InvalidInputError(
-        f"{path}: unknown mesh format '{path.suffix}' (expected .json, .node/.ele/.poly, .vtu or .msh)"
-    )
+        mesh = read_meshio(path)
+    elif suffix in _TRIANGLE_SUFFIXES:
+        mesh = triangle.read_triangle_mesh(path)
+    elif suffix == ".json" or _looks_like_json(path):
+        mesh = json_formats.mesh_from_json(path, json_formats.read_json(path))
+    else:
+        raise InvalidInputError(
+            f"{path}: unknown mesh format '{path.suffix}' (expected .json, .node/.ele/.poly, .vtu or .msh)"
+        )
+    try:
+        require_simple_boundary(mesh)
+    except InvalidInputError as e:
+        raise InvalidInputError(f"{path}: {e}") from None
+    return mesh
+
+
+def require_simple_boundary(mesh: Mesh) -> None:
+    """InvalidInputError when two boundary edges of ``mesh`` (edges of one triangle only) cross, overlap, or
+    one passes through a vertex of another, or two boundary vertices coincide: the triangles then overlap
+    (decided exactly, :func:`nonobtuse._core.find_segment_intersections`). With the embedding check around
+    every vertex (the certificate), this rules out overlaps whose sheets' boundaries meet; sheets lying
+    wholly on top of one another without their boundaries meeting are not detected. Cost: O(m log m) for m
+    triangles plus the box-intersection search over the boundary edges."""
+    t = np.asarray(mesh.triangles, dtype=np.int64).reshape(-1, 3)
+    edges = np.sort(np.concatenate([t[:, [0, 1]], t[:, [1, 2]], t[:, [2, 0]]]), axis=1)
+    n = len(mesh.points)
+    keys, count = np.unique(edges[:, 0] * n + edges[:, 1], return_counts=True)  # indices checked < n
+    once = keys[count == 1]
+    boundary = np.column_stack([once // n, once % n])
+    vertices, local = np.unique(boundary, return_inverse=True)
+    points = np.ascontiguousarray(np.asarray(mesh.points, dtype=np.float64)[vertices])
+    order = np.lexsort((points[:, 1], points[:, 0]))
+    same = np.flatnonzero((points[order][1:] == points[order][:-1]).all(axis=1))
+    if len(same):
+        a, b = sorted(int(vertices[order[k]]) for k in (same[0], same[0] + 1))
+        raise InvalidInputError(f"boundary points {a} and {b} coincide at {points[order[same[0]]].tolist()}")
+    found = _core.find_segment_intersections(points, np.ascontiguousarray(local.reshape(-1, 2)))
+    for kind, what in (("crossings", "cross"), ("overlaps", "overlap")):
+        if len(getattr(found, kind)):
+            s, u = (vertices[local.reshape(-1, 2)[k]].tolist() for k in getattr(found, kind)[0])
+            raise InvalidInputError(f"boundary edges {s} and {u} {what}: the triangles overlap")
+    if len(found.points_on_segments):
+        p, s = found.points_on_segments[0]
+        raise InvalidInputError(f"point {int(vertices[p])} lies inside boundary edge "
+                                f"{vertices[local.reshape(-1, 2)[s]].tolist()}: the triangles overlap")
+
+
+def mesh_output_paths(path: str | os.PathLike) -> list[Path]:
+    """The files :func:`write_mesh` writes for ``path`` (three for a Triangle suffix, else ``path``)."""
+    path = Path(path)
+    if path.suffix.lower() in _TRIANGLE_SUFFIXES:
+        return triangle.output_paths(path)
+    return [path, region_map_path(path)] if path.suffix.lower() == ".msh" else [path]
 
 
 def write_mesh(mesh: Mesh, path: str | os.PathLike) -> list[Path]:

@@ -18,9 +18,10 @@ from nonobtuse.errors import InvalidInputError
 
 
 def read_text(path: Path) -> str:
-    """The file's text; InvalidInputError naming the file when missing, unreadable, not text or empty."""
+    """The file's text (UTF-8; a leading byte order mark is dropped); InvalidInputError naming the file when
+    missing, unreadable, not text or empty."""
     try:
-        text = path.read_text(encoding="utf-8")
+        text = path.read_text(encoding="utf-8-sig")
     except (OSError, UnicodeDecodeError) as e:
         raise InvalidInputError(f"{path}: cannot read the file ({e})") from None
     if not text.strip():
@@ -91,6 +92,12 @@ class Lines:
         self._next += 1
         return self._lines[self._next - 1]
 
+    def room_for(self, n: int) -> int:
+        """How many of ``n`` announced one-line items the rest of the file can hold: the size to allocate for
+        them, so that a header announcing 10^12 items allocates nothing big (reading the items then stops
+        with "the file ends early" before the allocation is exceeded)."""
+        return min(n, len(self._lines) - self._next)
+
     def at_end(self) -> bool:
         return self._next >= len(self._lines)
 
@@ -109,12 +116,38 @@ def exact_float(value: object, where: str) -> float:
     return x
 
 
+def require_writable(path: Path) -> Path:
+    """The folder of ``path``; InvalidInputError when ``path`` is a directory or its folder does not exist."""
+    folder = path.parent
+    if path.is_dir():
+        raise InvalidInputError(f"{path}: cannot write the output: it is a directory")
+    if not folder.is_dir():
+        raise InvalidInputError(f"{path}: cannot write the output: the folder {folder} does not exist")
+    return folder
+
+
+def _umask() -> int:
+    mask = os.umask(0o022)  # reading the umask means setting it; put it back at once
+    os.umask(mask)
+    return mask
+
+
 @contextlib.contextmanager
 def atomic_path(path: Path) -> Iterator[Path]:
     """A temporary path beside ``path`` (same suffix) to write to; on success it replaces ``path`` atomically
-    (os.replace), on failure it is removed and ``path`` is untouched."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent or Path("."), prefix=f".{path.name}.", suffix=path.suffix)
-    os.close(fd)
+    (os.replace) with the mode a newly created file gets (0666 less the umask), on failure it is removed and
+    ``path`` is untouched. InvalidInputError when ``path`` is a directory or its folder does not exist or is
+    not writable."""
+    path = Path(path)
+    folder = require_writable(path)
+    try:
+        fd, tmp = tempfile.mkstemp(dir=folder, prefix=f".{path.name}.", suffix=path.suffix)
+    except OSError as e:
+        raise InvalidInputError(f"{path}: cannot write the output ({e.strerror})") from None
+    try:
+        os.fchmod(fd, 0o666 & ~_umask())  # mkstemp creates 0600
+    finally:
+        os.close(fd)
     try:
         yield Path(tmp)
         os.replace(tmp, path)

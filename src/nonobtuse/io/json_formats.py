@@ -26,6 +26,8 @@ def read_json(path: Path) -> Any:
         return json.loads(read_text(path))
     except json.JSONDecodeError as e:
         raise InvalidInputError(f"{path}:{e.lineno}: not valid JSON: {e.msg}") from None
+    except RecursionError:
+        raise InvalidInputError(f"{path}: not a domain or mesh: JSON nested too deeply") from None
 
 
 def domain_from_json(path: Path, data: Any) -> tuple[Domain, bool | None]:
@@ -154,6 +156,11 @@ def mesh_from_json(path: Path, data: Any) -> Mesh:
     if missing or unknown:
         raise InvalidInputError(f"{path}: mesh keys missing {missing}, unknown {unknown}")
     points = rows(data["points"], 2, float, f"{path}: points")
+    not_finite = np.flatnonzero(~np.isfinite(points).all(axis=1))
+    if len(not_finite):
+        i = int(not_finite[0])
+        raise InvalidInputError(f"{path}: points[{i}] = {points[i].tolist()} is not finite (a number too "
+                                "large for float64, such as 1e400, reads as infinity)")
     input_points = rows(data["input_points"], 2, float, f"{path}: input_points")
     triangles = rows(data["triangles"], 3, int, f"{path}: triangles")
     segments = rows(data["segments"], 2, int, f"{path}: segments")

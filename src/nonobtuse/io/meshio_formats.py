@@ -28,7 +28,6 @@ from nonobtuse.markers import as_int32
 from nonobtuse.mesh import Mesh
 
 
-
 class MeshioFormat(NamedTuple):
     """meshio's names of one file format: to read it, and to write it."""
 

@@ -51,6 +51,9 @@ def read_obj(path: Path) -> RawInput:
         elif line.tokens[0] == "f":
             line.tokens = [w.split("/")[0] for w in line.tokens]  # v/vt/vn: the vertex index
             idx = ints(line, 1, len(line.tokens) - 1, "a face")
+            if 0 in idx:
+                raise line.error("face vertex index 0: OBJ indices start at 1 (negative ones count back from "
+                                 "the last vertex)")
             # OBJ indices are 1-based; negative ones count back from the last vertex read so far
             idx = [i - 1 if i > 0 else len(pts) + i for i in idx]
             facets.append(Facet([np.array(idx, dtype=np.int64)], where=f"{line.file}:{line.number}"))

@@ -92,9 +92,9 @@ def _read_vertices(lines: Lines) -> tuple[np.ndarray, np.ndarray, int, np.ndarra
     n_mark = _optional_count(head, 3, "the number of boundary markers")
     if n_mark > 1:
         raise head.error(f"the number of boundary markers must be 0 or 1, found {n_mark}")
-    points = np.empty((n, 2), dtype=np.float64)
-    point_lines = np.empty(n, dtype=np.int64)
-    markers = np.zeros(n, dtype=np.int64) if n_mark else None
+    points = np.empty((lines.room_for(n), 2), dtype=np.float64)
+    point_lines = np.empty(lines.room_for(n), dtype=np.int64)
+    markers = np.zeros(lines.room_for(n), dtype=np.int64) if n_mark else None
     first_id = 0
     for k in range(n):
         line = lines.next(f"vertex {k + 1} of {n}").need(3 + n_attr + n_mark, "id, x, y, attributes, markers")
@@ -123,9 +123,9 @@ def _read_segments(
     n_mark = _optional_count(head, 1, "the number of boundary markers")
     if n_mark > 1:
         raise head.error(f"the number of boundary markers must be 0 or 1, found {n_mark}")
-    markers = np.zeros(m, dtype=np.int64) if n_mark else None
-    segments = np.empty((m, 2), dtype=np.int64)
-    seg_lines = np.empty(m, dtype=np.int64)
+    markers = np.zeros(lines.room_for(m), dtype=np.int64) if n_mark else None
+    segments = np.empty((lines.room_for(m), 2), dtype=np.int64)
+    seg_lines = np.empty(lines.room_for(m), dtype=np.int64)
     for k in range(m):
         line = lines.next(f"segment {k + 1} of {m}").need(3 + n_mark, "id, endpoint, endpoint, markers")
         line.int(0, "the segment id")
@@ -159,8 +159,8 @@ def _read_rows(
         return np.zeros((0, width - 1)), np.zeros(0, dtype=np.int64)
     head = lines.next(f"the {what} count line")
     k = head.count(0, f"the {what} count")
-    rows = np.empty((k, width - 1), dtype=np.float64)
-    row_lines = np.empty(k, dtype=np.int64)
+    rows = np.empty((lines.room_for(k), width - 1), dtype=np.float64)
+    row_lines = np.empty(lines.room_for(k), dtype=np.int64)
     names = ["x", "y", "attribute"]
     for i in range(k):
         line = lines.next(f"{what} {i + 1} of {k}").need(width, f"id, {', '.join(names[: width - 1])}")
@@ -170,6 +170,11 @@ def _read_rows(
             line.float(width, optional)
         row_lines[i] = line.number
     return rows, row_lines
+
+
+def output_paths(path: Path) -> list[Path]:
+    """The files :func:`write_triangle` writes for ``path``: its .node, .ele and .poly siblings."""
+    return list(triangle_mesh_files(path))
 
 
 def write_triangle(mesh: Mesh, path: Path) -> list[Path]:

@@ -8,9 +8,10 @@ the PLC and its control volumes see nonnegative boundary coefficients.
 
 from __future__ import annotations
 
+import math
 import sys
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Literal, cast
 
 import numpy as np
@@ -120,6 +121,29 @@ def _index_array(a: np.ndarray | None, cols: int) -> np.ndarray:
     return np.ascontiguousarray(np.asarray(a, dtype=np.int64).reshape(-1, cols))
 
 
+SAFE_MAGNITUDE = 2.0**64  # coordinates within [2^-64, 2^64] in absolute value go to the core as they are
+
+
+def power_of_two_exponent(points: np.ndarray) -> int:
+    """The exponent e by which the 3D core's inputs are scaled (times 2^-e) and its outputs scaled back:
+    0 when the largest absolute coordinate of ``points`` (n, 3) lies within [2^-64, 2^64] (or all are 0),
+    else the one bringing it into [1/2, 1). Scaling by a power of two is exact (no under- or overflow is
+    allowed: that is checked) and the exact predicates decide the same on scaled points, so the results are
+    those of the input, while the core's rounded constructions (circumcentres, projections) stay far from
+    float64's overflow and underflow. Raises InvalidInputError when the coordinates span more magnitudes
+    than float64 can scale exactly (a coordinate would round)."""
+    p = np.asarray(points, dtype=np.float64)
+    largest = float(np.abs(p).max()) if p.size else 0.0
+    if largest == 0.0 or 1.0 / SAFE_MAGNITUDE <= largest <= SAFE_MAGNITUDE:
+        return 0
+    e = int(np.frexp(largest)[1])
+    if not np.array_equal(np.ldexp(np.ldexp(p, -e), e), p):
+        raise InvalidInputError(
+            f"the coordinates span too many magnitudes for float64 (largest {largest!r}, smallest nonzero "
+            f"{float(np.abs(p[p != 0]).min())!r}): scaling them into a safe range would round some")
+    return e
+
+
 def check_gabriel(mesh: TetMesh) -> GabrielReport:
     """Exact Gabriel certificate of mesh.boundary_faces (f, 3) and mesh.segments (k, 2) against mesh.points.
 
@@ -130,7 +154,7 @@ def check_gabriel(mesh: TetMesh) -> GabrielReport:
     faces = _index_array(mesh.boundary_faces, 3)
     segments = _index_array(mesh.segments, 2)
     points = np.ascontiguousarray(np.asarray(mesh.points, dtype=np.float64).reshape(-1, 3))
-    d = _core.check_gabriel(points, faces, segments)
+    d = _core.check_gabriel(np.ldexp(points, -power_of_two_exponent(points)), faces, segments)
     return GabrielReport._from_core(d, len(faces), len(segments))
 
 
@@ -138,13 +162,43 @@ def boundary_certificate(mesh: TetMesh) -> dict[str, Any]:
     """What ``nonobtuse check3d`` reports of a tetrahedral mesh, JSON-ready: points, tets, boundary_faces
     (counts), steiner_points (from mesh.stats; None when the mesh does not say), encroached_facets,
     encroached_segments (the exact :func:`check_gabriel`), gabriel (its ``to_dict()``) and control_volumes
-    (:func:`control_volumes3d`'s ``to_dict()``) and warnings (from mesh.stats, e.g. orientation). The mesh is Gabriel iff both encroached counts are 0.
-    Cost: check_gabriel plus the control volumes, near-linear."""
+    (:func:`control_volume_summary`) and warnings (from mesh.stats, e.g. orientation). The mesh is Gabriel
+    iff both encroached counts are 0. Cost: check_gabriel plus the control volumes, near-linear."""
     report = check_gabriel(mesh)
     return {"points": len(mesh.points), "tets": len(mesh.tets), "boundary_faces": len(mesh.boundary_faces),
             "steiner_points": mesh.stats.get("steiner_points"), "encroached_facets": len(report.faces),
             "encroached_segments": len(report.segments), "gabriel": report.to_dict(),
-            "control_volumes": control_volumes3d(mesh).to_dict(), "warnings": list(mesh.stats.get("warnings", []))}
+            "control_volumes": control_volume_summary(mesh), "warnings": list(mesh.stats.get("warnings", []))}
+
+
+def _ldexp_or_none(x: float | None, k: int) -> float | None:
+    """x * 2^k, or None when x is None, not finite, or the product over- or underflows."""
+    if x is None or not math.isfinite(x):
+        return None
+    try:
+        y = math.ldexp(x, k)
+    except OverflowError:
+        return None
+    return y if y != 0 or x == 0 else None
+
+
+def control_volume_summary(mesh: TetMesh) -> dict[str, Any]:
+    """The control-volume summary of ``mesh`` (:meth:`ControlVolumes3D.to_dict`), computed on the points
+    scaled exactly by a power of two into a safe range and scaled back (None where the value overflows
+    float64). ``flat_in_floating_point``: tets whose volume is positive (exact orientation) but 0 in floating
+    point; their circumcentres cannot be computed, so min_coupling and total_volume are then None when not
+    finite, and negative_couplings counts the other edges only."""
+    from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes
+
+    e = power_of_two_exponent(mesh.points)
+    scaled = replace(mesh, points=np.ldexp(np.asarray(mesh.points, dtype=np.float64), -e))
+    with np.errstate(all="ignore"):  # flat tets give NaN, counted below
+        summary = control_volumes3d(scaled).to_dict()
+        flat = int((signed_tet_volumes(scaled.points, np.asarray(scaled.tets).reshape(-1, 4)) == 0).sum())
+    summary["min_coupling"] = _ldexp_or_none(summary["min_coupling"], e)
+    summary["total_volume"] = _ldexp_or_none(summary["total_volume"], 3 * e)
+    summary["flat_in_floating_point"] = flat
+    return summary
 
 
 def _print_progress(steiner: int, segments: int, facets: int, seconds: float) -> None:
@@ -207,18 +261,20 @@ def refine_gabriel(
     """
     started = time.perf_counter() if started is None else started
     callback = _print_progress if progress is True else (progress or None)
-    for name, value in (("max_steiner", max_steiner), ("min_length", min_length)):
-        if value is not None and not value >= 0:  # negative: the core would read it as "use the default"
-            raise InvalidInputError(f"{name} must be >= 0 or None, got {value!r}")
+    _check_limits(max_steiner, min_length, time_limit)
+    points = np.ascontiguousarray(np.asarray(plc.points, dtype=np.float64).reshape(-1, 3))
+    e = power_of_two_exponent(points)  # the core works on points * 2^-e, exactly
+    regions = np.ascontiguousarray(np.asarray(plc.regions, dtype=np.float64).reshape(-1, 4))
+    regions = np.column_stack([np.ldexp(regions[:, :3], -e), regions[:, 3]])
     r = _core.refine_gabriel(
-        np.ascontiguousarray(np.asarray(plc.points, dtype=np.float64).reshape(-1, 3)),
+        np.ldexp(points, -e),
         _index_array(plc.triangles, 3),
         np.ascontiguousarray(np.asarray(plc.facet_ids, dtype=np.int64).reshape(-1)),
         _index_array(plc.segments, 2),
-        np.ascontiguousarray(np.asarray(plc.holes, dtype=np.float64).reshape(-1, 3)),
-        np.ascontiguousarray(np.asarray(plc.regions, dtype=np.float64).reshape(-1, 4)),
+        np.ldexp(np.ascontiguousarray(np.asarray(plc.holes, dtype=np.float64).reshape(-1, 3)), -e),
+        regions,
         -1 if max_steiner is None else int(max_steiner),
-        -1.0 if min_length is None else float(min_length),
+        -1.0 if min_length is None else float(np.ldexp(min_length, -e)),
         max(0.0, float(time_limit) - (time.perf_counter() - started)),
         split,
         int(progress_every),
@@ -226,9 +282,13 @@ def refine_gabriel(
     )
     faces, segments, certificate = r.boundary_faces, r.segments, r.certificate
     report = GabrielReport._from_core(certificate, len(faces), len(segments))
+    status = r.status
+    core_points = r.points
+    steiner = np.ldexp(core_points[len(points):], e)
+    all_points = np.concatenate([points, steiner])
     stats: dict[str, Any] = {
         "backend": "cgal-gabriel",
-        "status": r.status,
+        "status": status,
         "steiner_points": r.steiner_on_segments + r.steiner_on_facets,
         "steiner_on_segments": r.steiner_on_segments,
         "greedy_splits": r.greedy_splits,
@@ -237,24 +297,47 @@ def refine_gabriel(
         "encroached_segments": len(report.segments),
         "unchecked_faces": certificate.unchecked_faces,
         "unchecked_segments": certificate.unchecked_segments,
-        "smallest_subsegment": r.smallest_subsegment,
+        "smallest_subsegment": float(np.ldexp(r.smallest_subsegment, e)),
         "max_steiner": r.max_steiner,
-        "min_length": r.min_length,
+        "min_length": float(np.ldexp(r.min_length, e)),
         "volume_mesh": r.volume_mesh,
         "seconds": None,  # set last, below
         "diagnosis": _diagnosis(r.diagnosis),
         "warnings": list(plc.warnings),
     }
     mesh = TetMesh(
-        points=r.points,
+        points=all_points,
         tets=r.tets,
         boundary_faces=faces,
         face_markers=plc.markers_of_facets(r.face_markers),  # the core reports facet ids
         segments=segments,
-        tet_regions=region_attributes(r.tet_regions, plc, conforming=r.status == "converged"),
+        tet_regions=region_attributes(r.tet_regions, plc, conforming=status == "converged"),
         stats=stats,
         face_facets=np.asarray(r.face_markers, dtype=np.int64),
     )
-    stats["negative_couplings"] = control_volumes3d(mesh).negative_couplings
+    if e and not np.array_equal(np.ldexp(steiner, -e), core_points[len(points):]):
+        # Scaled back, a Steiner point rounded (it is subnormal): certify the points as returned.
+        report = check_gabriel(mesh)
+        status = "stalled" if status == "converged" and not report.ok else status
+        stats.update(status=status, encroached_facets=len(report.faces),
+                     encroached_segments=len(report.segments))
+    stats["negative_couplings"] = control_volume_summary(mesh)["negative_couplings"]
     stats["seconds"] = time.perf_counter() - started
-    return Gabriel3DResult(mesh=mesh, status=cast(Status, r.status), stats=stats, report=report)
+    return Gabriel3DResult(mesh=mesh, status=cast(Status, status), stats=stats, report=report)
+
+
+def _check_limits(max_steiner: Any, min_length: Any, time_limit: Any) -> None:
+    """InvalidInputError unless max_steiner is None or an integer in [0, 2^62), min_length is None or finite
+    and >= 0, and time_limit is finite and >= 0 (negative values would select the core's defaults)."""
+    if max_steiner is not None and (
+        isinstance(max_steiner, bool) or not isinstance(max_steiner, (int, np.integer))
+        or not 0 <= max_steiner < 2**62
+    ):
+        raise InvalidInputError(f"max_steiner must be an integer in [0, 2^62), got {max_steiner!r}")
+    for name, value in (("min_length", min_length), ("time_limit", time_limit)):
+        if value is None and name == "min_length":
+            continue
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.number)) or not (
+            math.isfinite(value) and value >= 0
+        ):
+            raise InvalidInputError(f"{name} must be a finite number >= 0, got {value!r}")

@@ -24,6 +24,7 @@ from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import surfaces, tetgen
 from nonobtuse.io.raw3d import Facet, RawInput
+from nonobtuse.mesh3d.gabriel import power_of_two_exponent
 from nonobtuse.mesh3d.plc import PLC
 from nonobtuse.mesh3d.validate3d import edge_faces, manifold_face_pairs, validate_plc
 
@@ -37,7 +38,14 @@ READERS = {".off": surfaces.read_off, ".obj": surfaces.read_obj, ".ply": surface
 # Facets -> triangles
 
 
-def _check_indices(raw: RawInput) -> None:
+def _check_points_and_indices(raw: RawInput) -> None:
+    """Finite coordinates (before any arithmetic on them) and facet indices in range."""
+    bad = np.flatnonzero(~np.isfinite(raw.points).all(axis=1))
+    if len(bad):
+        v = int(bad[0])
+        raise InvalidInputError(f"vertex {v} has a NaN or infinite coordinate {raw.points[v].tolist()} "
+                                f"in {raw.source} (a number too large for float64, such as 1e400, reads as "
+                                "infinity)")
     n = len(raw.points)
     for j, f in enumerate(raw.facets):
         for loop in f.loops:
@@ -59,8 +67,11 @@ def triangulate_facet(points: np.ndarray, facet: Facet, j: int) -> np.ndarray:
     to_local = {v: i for i, v in enumerate(local.tolist())}
     segs = [(to_local[int(lp[i])], to_local[int(lp[(i + 1) % len(lp)])])
             for lp in facet.loops if len(lp) >= 2 for i in range(len(lp) if len(lp) >= 3 else 1)]
-    p = points[first]
+    p = np.ldexp(points[first], -power_of_two_exponent(points[first]))  # exact, and no overflow below
     normal = np.cross(np.roll(p, -1, axis=0) - p, p - p[0]).sum(axis=0)  # Newell: only picks the projection
+    if not normal.any():  # zero area: a self-crossing polygon (a bow tie); project along a corner's normal
+        corners = np.cross(p - p[0], np.roll(p, -1, axis=0) - p[0])
+        normal = corners[np.argmax(np.abs(corners).max(axis=1))]
     drop = int(np.argmax(np.abs(normal)))
     keep = [k for k in range(3) if k != drop]
     try:
@@ -95,7 +106,7 @@ def _check_planar(points: np.ndarray, local: np.ndarray, ref: np.ndarray, j: int
 
 def triangulate_facets(raw: RawInput) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(triangles (m, 3), facet_ids (m,), dangling segments (k, 2)) of all facets."""
-    _check_indices(raw)
+    _check_points_and_indices(raw)
     tris, ids, dangling = [], [], []
     for j, f in enumerate(raw.facets):
         dangling += [lp for lp in f.loops if len(lp) == 2]

@@ -41,6 +41,7 @@ import numpy as np
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io.raw3d import merge_equal_points
+from nonobtuse.mesh3d.gabriel import power_of_two_exponent
 from nonobtuse.mesh3d.load import facet_boundary_segments
 from nonobtuse.mesh3d.plc import PLC, TetMesh, region_attributes
 
@@ -102,13 +103,16 @@ def _in_temporary_directory():
 
 def _plc_arrays(plc: PLC) -> tuple[np.ndarray, ...]:
     """The PLC as the contiguous arrays the core takes: points, triangles, facet_ids, segments, holes,
-    regions."""
-    return (np.ascontiguousarray(plc.points, dtype=np.float64).reshape(-1, 3),
+    regions. Coordinates are scaled exactly by a power of two into a safe range
+    (:func:`power_of_two_exponent`): the exact predicates decide the same, and float sums stay finite."""
+    e = power_of_two_exponent(plc.points)
+    regions = np.asarray(plc.regions, dtype=np.float64).reshape(-1, 4)
+    return (np.ldexp(np.ascontiguousarray(plc.points, dtype=np.float64).reshape(-1, 3), -e),
             np.ascontiguousarray(plc.triangles, dtype=np.int64).reshape(-1, 3),
             np.ascontiguousarray(plc.facet_ids, dtype=np.int64).reshape(-1),
             np.ascontiguousarray(plc.segments, dtype=np.int64).reshape(-1, 2),
-            np.ascontiguousarray(plc.holes, dtype=np.float64).reshape(-1, 3),
-            np.ascontiguousarray(plc.regions, dtype=np.float64).reshape(-1, 4))
+            np.ldexp(np.ascontiguousarray(plc.holes, dtype=np.float64).reshape(-1, 3), -e),
+            np.ascontiguousarray(np.column_stack([np.ldexp(regions[:, :3], -e), regions[:, 3]])))
 
 
 def _cgal(plc: PLC, options: dict[str, Any]) -> TetMesh:
@@ -124,7 +128,8 @@ def _cgal(plc: PLC, options: dict[str, Any]) -> TetMesh:
                        f"to {len(d['uncovered_facets'])} of {n_facets} facets (e.g. facet "
                        f"{int(d['uncovered_facets'][0])}); no regions")
     return TetMesh(plc.points.copy(), tets, plc.triangles.copy(), plc.markers_of_facets(plc.facet_ids),
-                   plc.segments.copy(), regions, {"volume_mesh": volume_mesh}, face_facets=plc.facet_ids.copy())
+                   plc.segments.copy(), regions, {"volume_mesh": volume_mesh},
+                   face_facets=plc.facet_ids.copy())
 
 
 def _tets_by_winding_number(plc: PLC) -> np.ndarray:
@@ -133,9 +138,10 @@ def _tets_by_winding_number(plc: PLC) -> np.ndarray:
     conform to; internal facets and dangling facets blur it."""
     import igl
 
-    cells = _core.delaunay_tetrahedra(plc.points)
-    centroids = plc.points[cells].mean(axis=1)
-    w = igl.winding_number(plc.points, plc.triangles, centroids) if len(cells) else np.zeros(0)
+    points = np.ldexp(plc.points, -power_of_two_exponent(plc.points))  # exact; float sums stay finite
+    cells = _core.delaunay_tetrahedra(points)
+    centroids = points[cells].mean(axis=1)
+    w = igl.winding_number(points, plc.triangles, centroids) if len(cells) else np.zeros(0)
     return cells[np.abs(w) >= 0.5]
 
 
