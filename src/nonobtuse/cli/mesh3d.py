@@ -26,7 +26,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("refine3d", help="refine the boundary of a 3D input until every boundary facet and "
                                         "segment has an empty diametral sphere; write the tet mesh")
     p.add_argument("input", help=".off .obj .ply .stl .poly .smesh")
-    p.add_argument("-o", "--output", required=True, help="output mesh: .json, .vtu or .msh")
+    p.add_argument("-o", "--output", required=True, help="output mesh (.json, .vtu, .msh) or simulator input "
+                   "(.uge, .stor, MESH, .csv, .npz; see `nonobtuse export`)")
     p.add_argument("--max-steiner", type=int, default=None,
                    help="Steiner point budget (default: refine_gabriel's)")
     p.add_argument("--min-length", type=float, default=None,
@@ -67,7 +68,8 @@ def run_check3d(args: argparse.Namespace) -> int:
 
 
 def run_refine3d(args: argparse.Namespace) -> int:
-    from nonobtuse.mesh3d import control_volumes3d, load_plc, refine_gabriel, write_tetmesh
+    from nonobtuse.cli.export import write_output
+    from nonobtuse.mesh3d import control_volumes3d, load_plc, refine_gabriel
 
     t0 = time.perf_counter()
     plc = load_plc(args.input, fix_orientation=args.fix_orientation)
@@ -83,7 +85,7 @@ def run_refine3d(args: argparse.Namespace) -> int:
     # status budget_exhausted. A second, unbounded check here would break --time-limit.
     stats = {**result.stats, "seconds": time.perf_counter() - t0,
              "negative_couplings": control_volumes3d(result.mesh).negative_couplings}
-    write_tetmesh(replace(result.mesh, stats={**result.mesh.stats, **stats}), args.output)
+    write_output(replace(result.mesh, stats={**result.mesh.stats, **stats}), args.output)
     print(f"refine3d: {result.status} after {stats['seconds']:.2f} s; wrote {args.output}", file=sys.stderr)
     _print({"input": args.input, "output": args.output, **stats}, args.json)
     return EXIT_OK if result.status == "converged" else EXIT_NOT_CONVERGED
