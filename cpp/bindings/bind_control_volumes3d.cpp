@@ -27,7 +27,7 @@ void bind_control_volumes3d(py::module_& m) {
       "Exact sign of the Voronoi face area dual to every edge of a tet mesh (per-tet decomposition, clipped to\n"
       "the mesh). points (n,3) float64, tets (t,4) int64 positively oriented (InvalidInputError otherwise).\n"
       "Returns a dict: edges (E,2) int64 (a < b, sorted), sign (E,) int8 (-1, 0, +1), exact_evaluations (int:\n"
-      "edges the interval filter left to exact rationals).");
+      "edges the interval filter left to exact arithmetic).");
 }
 
 }  // namespace nonobtuse::bindings

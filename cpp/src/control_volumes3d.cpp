@@ -1,15 +1,26 @@
-// Exact signs of the 3D dual (Voronoi face) areas: interval filter, exact rationals when it cannot decide.
+// Exact signs of the 3D dual (Voronoi face) areas: interval filter, exact arithmetic when it cannot decide.
 #include "nonobtuse/control_volumes3d.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
+#ifdef CGAL_HAS_MPZF
+#include <CGAL/Mpzf.h>
+#else
+#include <CGAL/Gmpzf.h>
+#endif
 
 #include <algorithm>
 #include <string>
 
 namespace nonobtuse {
 namespace {
+
+// Exact floating point (binary mantissa of any length, no division): doubles convert exactly.
+#ifdef CGAL_HAS_MPZF
+using Exact = CGAL::Mpzf;
+#else
+using Exact = CGAL::Gmpzf;
+#endif
 
 template <class NT>
 struct Vec {
@@ -43,32 +54,29 @@ Vec<NT> lift(const Point3& p) {
   return {NT(p.x), NT(p.y), NT(p.z)};
 }
 
-// Circumcenter of triangle (a, b, c): a + (|u|^2 v x w + |v|^2 w x u) / (2 |w|^2), u = b - a, v = c - a, w = u x v.
+// One tet's piece of the face dual to edge (i, j), as a fraction num / den with den > 0: the signed area of
+// (M, C(ijk), C_T, C(ijl)) along i -> j, times 8 |j - i|. With the origin at i and e = j - i, f = k - i, g = l - i:
+// C(ijk) = n1 / (2 d1), n1 = |e|^2 f x w1 + |f|^2 w1 x e, w1 = e x f, d1 = |w1|^2 (likewise C(ijl) with g);
+// C_T = nt / (2 dt), nt = |e|^2 f x g + |f|^2 g x e + |g|^2 e x f, dt = e . (f x g) > 0 ((i, j, k, l) is positive).
+// Twice the area vector dotted with e is ((C1 - M) x (C_T - M) + (C_T - M) x (C2 - M)) . e, and as M = e / 2 is
+// parallel to e the terms with M vanish: it is ((C1 - C2) x C_T) . e = ((d2 n1 - d1 n2) x nt) . e / (4 d1 d2 dt).
+// No division, so exact arithmetic needs only +, -, x.
 template <class NT>
-Vec<NT> triangle_circumcenter(const Vec<NT>& a, const Vec<NT>& b, const Vec<NT>& c) {
-  Vec<NT> u = b - a, v = c - a, w = cross(u, v);
-  Vec<NT> num = scaled(dot(u, u), cross(v, w)) + scaled(dot(v, v), cross(w, u));
-  return a + scaled(NT(1) / (NT(2) * dot(w, w)), num);
-}
+struct Fraction {
+  NT num, den;
+};
 
-// Circumcenter of tet (a, b, c, d): a + (|u|^2 v x w + |v|^2 w x u + |w|^2 u x v) / (2 u . (v x w)).
 template <class NT>
-Vec<NT> tet_circumcenter(const Vec<NT>& a, const Vec<NT>& b, const Vec<NT>& c, const Vec<NT>& d) {
-  Vec<NT> u = b - a, v = c - a, w = d - a;
-  Vec<NT> num = scaled(dot(u, u), cross(v, w)) + scaled(dot(v, v), cross(w, u)) + scaled(dot(w, w), cross(u, v));
-  return a + scaled(NT(1) / (NT(2) * dot(u, cross(v, w))), num);
-}
-
-// Twice the signed area of the piece (M, C(ijk), C_T, C(ijl)) of the face dual to edge (i, j) inside the tet,
-// times |j - i|. (i, j, k, l) is positively oriented; the piece then runs counter-clockwise seen from j when C_T
-// is inside the tet, so the area vector points along i -> j.
-template <class NT>
-NT dual_piece(const Point3& pi, const Point3& pj, const Point3& pk, const Point3& pl) {
-  Vec<NT> i = lift<NT>(pi), j = lift<NT>(pj), k = lift<NT>(pk), l = lift<NT>(pl);
-  Vec<NT> m = scaled(NT(0.5), i + j);  // exact: halving a sum of doubles
-  Vec<NT> c1 = triangle_circumcenter(i, j, k) - m, c2 = triangle_circumcenter(i, j, l) - m;
-  Vec<NT> ct = tet_circumcenter(i, j, k, l) - m;
-  return dot(cross(c1, ct) + cross(ct, c2), j - i);
+Fraction<NT> dual_piece(const Point3& pi, const Point3& pj, const Point3& pk, const Point3& pl) {
+  Vec<NT> i = lift<NT>(pi);
+  Vec<NT> e = lift<NT>(pj) - i, f = lift<NT>(pk) - i, g = lift<NT>(pl) - i;
+  NT ee = dot(e, e), ff = dot(f, f), gg = dot(g, g);
+  Vec<NT> w1 = cross(e, f), w2 = cross(e, g);
+  Vec<NT> n1 = scaled(ee, cross(f, w1)) + scaled(ff, cross(w1, e));
+  Vec<NT> n2 = scaled(ee, cross(g, w2)) + scaled(gg, cross(w2, e));
+  Vec<NT> nt = scaled(ee, cross(f, g)) + scaled(ff, cross(g, e)) + scaled(gg, w1);
+  NT d1 = dot(w1, w1), d2 = dot(w2, w2), dt = dot(e, cross(f, g));
+  return {dot(cross(scaled(d2, n1) - scaled(d1, n2), nt), e), d1 * d2 * dt};
 }
 
 // The six edges (i, j) of a positive tet (0, 1, 2, 3), each with the other two vertices (k, l) ordered so that
@@ -80,16 +88,32 @@ struct Piece {
   int tet, frame;
 };
 
-template <class NT>
-NT dual_area_sum(const std::vector<Point3>& p, const std::vector<std::array<int, 4>>& tets,
-                 const Piece* first, const Piece* last) {
-  NT sum(0);
+// The sum of the pieces of one edge's tets [first, last). Intervals: sum of num / den (den > 0 exactly; an
+// interval den containing 0 only widens the result). Exact (no division): one fraction over the product of the
+// dens, whose sign is the numerator's.
+CGAL::Interval_nt_advanced dual_area_interval(const std::vector<Point3>& p, const std::vector<std::array<int, 4>>& tets,
+                                              const Piece* first, const Piece* last) {
+  CGAL::Interval_nt_advanced sum(0);
   for (const Piece* q = first; q != last; ++q) {
     const auto& t = tets[q->tet];
     const int* f = kEdgeFrames[q->frame];
-    sum = sum + dual_piece<NT>(p[t[f[0]]], p[t[f[1]]], p[t[f[2]]], p[t[f[3]]]);
+    auto x = dual_piece<CGAL::Interval_nt_advanced>(p[t[f[0]]], p[t[f[1]]], p[t[f[2]]], p[t[f[3]]]);
+    sum += x.num / x.den;
   }
   return sum;
+}
+
+int dual_area_exact_sign(const std::vector<Point3>& p, const std::vector<std::array<int, 4>>& tets,
+                         const Piece* first, const Piece* last) {
+  Exact num(0), den(1);
+  for (const Piece* q = first; q != last; ++q) {
+    const auto& t = tets[q->tet];
+    const int* f = kEdgeFrames[q->frame];
+    auto x = dual_piece<Exact>(p[t[f[0]]], p[t[f[1]]], p[t[f[2]]], p[t[f[3]]]);
+    num = num * x.den + x.num * den;
+    den = den * x.den;
+  }
+  return CGAL::sign(num);
 }
 
 void require_positive_tets(const std::vector<Point3>& p, const std::vector<std::array<int, 4>>& tets) {
@@ -134,7 +158,7 @@ DualAreaSigns dual_area_signs(const std::vector<Point3>& points, const std::vect
   {
     CGAL::Protect_FPU_rounding<true> upward;  // the rounding mode Interval_nt_advanced needs, for this block
     for (std::size_t g = 0; g < edges; ++g) {
-      auto x = dual_area_sum<CGAL::Interval_nt_advanced>(points, tets, &pieces[starts[g]], &pieces[starts[g + 1]]);
+      auto x = dual_area_interval(points, tets, &pieces[starts[g]], &pieces[starts[g + 1]]);
       if (x.inf() > 0) {
         out.signs[g] = 1;
       } else if (x.sup() < 0) {
@@ -144,10 +168,8 @@ DualAreaSigns dual_area_signs(const std::vector<Point3>& points, const std::vect
       }
     }
   }
-  for (std::size_t g : undecided) {
-    auto exact = dual_area_sum<CGAL::Exact_rational>(points, tets, &pieces[starts[g]], &pieces[starts[g + 1]]);
-    out.signs[g] = CGAL::sign(exact);
-  }
+  for (std::size_t g : undecided)
+    out.signs[g] = dual_area_exact_sign(points, tets, &pieces[starts[g]], &pieces[starts[g + 1]]);
   out.exact_evaluations = static_cast<int>(undecided.size());
   out.edges.reserve(edges);
   for (std::size_t g = 0; g < edges; ++g) out.edges.push_back(pieces[starts[g]].edge);

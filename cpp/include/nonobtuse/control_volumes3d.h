@@ -15,12 +15,13 @@ namespace nonobtuse {
 struct DualAreaSigns {
   std::vector<Segment> edges;  // every edge of the mesh, (a, b) with a < b, sorted
   std::vector<int> signs;      // exact sign of A_e: -1, 0 or +1, one per edge
-  int exact_evaluations = 0;   // edges the interval filter could not decide (evaluated in exact rationals)
+  int exact_evaluations = 0;   // edges the interval filter could not decide (evaluated exactly)
 };
 
 // The exact sign of every dual area A_e. sign(A_e) = sign(sum over T of ((C_f1 - M) x (C_T - M) +
 // (C_T - M) x (C_f2 - M)) . (j - i)), the circumcenters taken as exact rational functions of the coordinates as
-// stored: evaluated in interval arithmetic and, when the interval contains 0, in exact rationals.
+// stored: evaluated in interval arithmetic and, when the interval contains 0, exactly (multiprecision floating
+// point, no division: the pieces are put over one positive common denominator).
 // tets: indices into points, each positively oriented (CGAL orientation, exact); InvalidInput on an index out
 // of range or a tet that is not positively oriented (flat or inverted), naming the tet and its vertices.
 // Cost: O(t log t) for t tets (the sort of the 6 t edge pieces), plus exact arithmetic for undecided edges only.

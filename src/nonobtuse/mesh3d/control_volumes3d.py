@@ -11,7 +11,7 @@ with apex i over the three pieces of the edges at i, of volume A * |e| / 6 each,
 of all vertices sum to the mesh volume (signed pieces, exactly up to rounding).
 
 The sign of every A_e (negative, zero or positive) is decided exactly by the C++ core
-(``_core.dual_area_signs``: interval arithmetic, exact rationals when the interval contains 0); the floats
+(``_core.dual_area_signs``: interval arithmetic, exact arithmetic when the interval contains 0); the floats
 give magnitudes only, so a coefficient that is exactly 0 is 0.0 and never a rounding-noise -4e-16.
 """
 
@@ -42,7 +42,7 @@ class ControlVolumes3D:
     volumes:      (n,) Voronoi cell volume of every point (clipped to the mesh; 0 for unused points).
     signs:        (e,) int8 exact sign of each dual area: -1, 0, +1.
     negative_couplings: number of edges whose coupling is exactly negative (a positive off-diagonal).
-    exact_evaluations: edges whose sign the interval filter left to exact rationals.
+    exact_evaluations: edges whose sign the interval filter left to exact arithmetic.
     """
 
     edges: np.ndarray
@@ -132,7 +132,7 @@ def control_volumes3d(mesh: TetMesh) -> ControlVolumes3D:
     """Voronoi dual areas (exact signs), coupling coefficients and cell volumes of `mesh`.
 
     mesh: tets positively oriented (InvalidInputError naming the tet otherwise). Cost: O(t log t) for t tets
-    (numpy, vectorized; the C++ sign pass sorts the 6 t edge pieces), plus exact rationals for the edges the
+    (numpy, vectorized; the C++ sign pass sorts the 6 t edge pieces), plus exact arithmetic for the edges the
     interval filter cannot decide (dual areas that are zero or nearly so).
     """
     points = np.asarray(mesh.points, dtype=np.float64)
