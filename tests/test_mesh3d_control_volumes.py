@@ -10,7 +10,12 @@ from hypothesis import strategies as st
 from mesh3d_shapes import CUBE_POINTS
 from nonobtuse import _core
 from nonobtuse.mesh3d import TetMesh, control_volumes3d
-from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes, tet_circumcenters, triangle_circumcenters
+from nonobtuse.mesh3d.control_volumes3d import (
+    dual_area_pieces,
+    signed_tet_volumes,
+    tet_circumcenters,
+    triangle_circumcenters,
+)
 
 NO_FACES = np.zeros((0, 3), dtype=np.int64)
 
@@ -72,7 +77,10 @@ def test_cube_split_into_tets(tets):
     axis = cv.lengths == 1.0
     assert axis.sum() == 12
     np.testing.assert_allclose(cv.couplings[axis], 1 / 4, rtol=1e-13)
-    np.testing.assert_allclose(cv.dual_areas[~axis], 0.0, atol=1e-14)
+    # Exact signs: the diagonals' areas are exactly zero, not rounding noise of either sign.
+    assert (cv.signs[~axis] == 0).all() and (cv.dual_areas[~axis] == 0.0).all()
+    assert (cv.signs[axis] == 1).all() and cv.negative_couplings == 0
+    assert cv.to_dict()["zero_couplings"] == len(cv.edges) - 12  # the diagonals (6 faces, +1 long in six)
 
 
 def test_volumes_sum_to_the_mesh_volume_on_a_delaunay_mesh():
@@ -87,15 +95,34 @@ def test_volumes_sum_to_the_mesh_volume_on_a_delaunay_mesh():
     assert len(mesh.tets) > 100  # volume 6 in tets of at most 0.05
 
 
+def delaunay_control_volumes(coords):
+    """Points, Delaunay tets and control volumes of integer coordinates (hypothesis: assume some tet)."""
+    points = np.array(coords, dtype=float)
+    tets = np.asarray(_core.delaunay_tetrahedra(points))
+    assume(len(tets) > 0)
+    return points, tets, control_volumes3d(tetmesh(points, tets))
+
+
 @settings(derandomize=True, deadline=None, max_examples=30)
 @given(st.lists(st.tuples(*[st.integers(-50, 50)] * 3), min_size=5, max_size=40, unique=True))
 def test_cell_volumes_sum_to_the_hull_volume(coords):
     # On the Delaunay tetrahedralization of any point set (integer coordinates, so volumes are exact in
     # floating point up to rounding of the circumcenters), the pyramids over the dual pieces tile each tet:
     # the cell volumes sum to the volume of the convex hull, whatever the signs of the pieces.
-    points = np.array(coords, dtype=float)
-    tets = _core.delaunay_tetrahedra(points)
-    assume(len(tets) > 0)
-    cv = control_volumes3d(tetmesh(points, tets))
+    points, tets, cv = delaunay_control_volumes(coords)
     total = signed_tet_volumes(points, tets).sum()
     assert cv.volumes.sum() == pytest.approx(total, rel=1e-9)
+
+
+@settings(derandomize=True, deadline=None, max_examples=30)
+@given(st.lists(st.tuples(*[st.integers(-5, 5)] * 3), min_size=5, max_size=40, unique=True))
+def test_exact_signs_agree_with_clear_float_values(coords):
+    # Small integer grids are full of cospherical points: many dual areas are exactly 0. Where the float
+    # value is far from 0 the exact sign must be its sign; an exactly zero area is 0.0.
+    points, tets, cv = delaunay_control_volumes(coords)
+    _, pieces = dual_area_pieces(points, tets)
+    scale = np.abs(pieces).max()
+    clear = np.abs(cv.dual_areas) > 1e-9 * scale
+    assert (np.sign(cv.dual_areas[clear]) == cv.signs[clear]).all()
+    assert (cv.dual_areas[cv.signs == 0] == 0.0).all()
+    assert cv.negative_couplings == int((cv.signs < 0).sum())

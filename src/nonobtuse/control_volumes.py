@@ -88,31 +88,34 @@ def triangle_conductivity(mesh: Mesh, conductivity: Conductivity) -> np.ndarray:
     return k
 
 
-def _corner_terms(mesh: Mesh) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _corner_terms(points: np.ndarray, triangles: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Per triangle and corner j (the corner opposite edge j): cot of the angle at j, the squared length of
-    the opposite edge, and twice the triangle area. Shapes (m, 3), (m, 3), (m,)."""
-    p = mesh.points[mesh.triangles]  # (m, 3, 2)
+    the opposite edge, and twice the triangle area. Shapes (m, 3), (m, 3), (m,). Points (n, 2) (triangles
+    counter-clockwise) or (n, 3)."""
+    p = points[triangles]  # (m, 3, d)
     u = np.roll(p, -1, axis=1) - p  # corner j -> corner j+1
     v = np.roll(p, -2, axis=1) - p  # corner j -> corner j+2
     dot = np.einsum("mjk,mjk->mj", u, v)
-    cross = u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]  # = twice the area at every corner (ccw)
+    if p.shape[2] == 2:
+        cross = u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]  # = twice the area at every corner (ccw)
+    else:
+        cross = np.linalg.norm(np.cross(u, v), axis=2)
     opposite = np.roll(p, -2, axis=1) - np.roll(p, -1, axis=1)
     return dot / cross, np.einsum("mjk,mjk->mj", opposite, opposite), cross[:, 0]
 
 
-def voronoi_areas(mesh: Mesh) -> np.ndarray:
-    """Area of each vertex's Voronoi control volume clipped to the domain, (n,) float64.
+def triangle_voronoi_shares(points: np.ndarray, triangles: np.ndarray) -> np.ndarray:
+    """The part of each triangle nearer to each of its corners than to the other two, as areas (m, 3) float64.
 
-    Per triangle, each corner gets the part of the triangle closer to it than to the other two corners:
+    points: (n, 2) with counter-clockwise triangles, or (n, 3) (a surface). triangles: (m, 3) int64.
     - nonobtuse triangle (circumcenter inside or on it): corner a of (a, b, c) gets the quadrilateral
       a, mid(ab), circumcenter, mid(ac): (|ab|^2 cot C + |ac|^2 cot B) / 8;
     - triangle obtuse at c: the bisector of ac cuts ab before its midpoint, so a gets the triangle
       a, (that point), mid(ac): |ac|^2 tan A / 8; likewise b; c gets the rest (> 0).
     Both formulas agree on right triangles, so deciding "obtuse" in floats is harmless. Every share is >= 0
-    and the three shares sum to the triangle's area, so the areas sum to the domain area (up to rounding).
-    Cost: O(m).
+    and the three shares sum to the triangle's area (up to rounding). Cost: O(m).
     """
-    cot, sq, twice_area = _corner_terms(mesh)
+    cot, sq, twice_area = _corner_terms(points, triangles)
     # Nonobtuse split: corner j gets (|j j+1|^2 cot(j+2) + |j j+2|^2 cot(j+1)) / 8; |j j+1| is opposite j+2.
     share = (np.roll(sq * cot, -2, axis=1) + np.roll(sq * cot, -1, axis=1)) / 8
     obtuse_rows, obtuse_corner = np.nonzero(cot < 0)
@@ -123,6 +126,13 @@ def voronoi_areas(mesh: Mesh) -> np.ndarray:
         share[obtuse_rows, corner] = sq[obtuse_rows, (corner + shift) % 3] / (8 * cot[obtuse_rows, corner])
     rest = share[obtuse_rows, (obtuse_corner + 1) % 3] + share[obtuse_rows, (obtuse_corner + 2) % 3]
     share[obtuse_rows, obtuse_corner] = twice_area[obtuse_rows] / 2 - rest
+    return share
+
+
+def voronoi_areas(mesh: Mesh) -> np.ndarray:
+    """Area of each vertex's Voronoi control volume clipped to the domain, (n,) float64: the sum of its
+    :func:`triangle_voronoi_shares`, so the areas sum to the domain area (up to rounding). Cost: O(m)."""
+    share = triangle_voronoi_shares(mesh.points, mesh.triangles)
     return np.bincount(mesh.triangles.ravel(), weights=share.ravel(), minlength=len(mesh.points))
 
 
@@ -134,7 +144,7 @@ def control_volumes(mesh: Mesh, conductivity: Conductivity = None) -> ControlVol
     """
     k = triangle_conductivity(mesh, conductivity)
     c = _core.coupling_signs(*core_mesh_arguments(mesh), k)
-    cot, _, _ = _corner_terms(mesh)
+    cot, _, _ = _corner_terms(mesh.points, mesh.triangles)
     # Add each side's k_t cot(apex) / 2; `corner` is the apex's position (0, 1, 2) in its triangle.
     coefficients = np.zeros(len(c.edges))
     for side in (0, 1):
@@ -152,4 +162,6 @@ def control_volumes(mesh: Mesh, conductivity: Conductivity = None) -> ControlVol
                           coefficients=coefficients, signs=c.sign)
 
 
-__all__ = ["ControlVolumes", "control_volumes", "triangle_conductivity", "voronoi_areas"]
+__all__ = [
+    "ControlVolumes", "control_volumes", "triangle_conductivity", "triangle_voronoi_shares", "voronoi_areas",
+]

@@ -23,11 +23,13 @@ def build_parser() -> argparse.ArgumentParser:
         epilog="exit codes: 0 ok, 1 a check found violations, 2 invalid input, 3 refinement did not converge",
     )
     sub = parser.add_subparsers(dest="command", required=True)
-    from nonobtuse.cli import mesh2d, mesh3d, refine  # each module adds its subcommands and sets func=
+    # each module adds its subcommands and sets func=
+    from nonobtuse.cli import export, mesh2d, mesh3d, refine
 
     mesh2d.register(sub)
     refine.register(sub)
     mesh3d.register(sub)
+    export.register(sub)
     return parser
 
 

@@ -28,7 +28,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser("refine3d", help="refine the boundary of a 3D input until every boundary facet and "
                                         "segment has an empty diametral sphere; write the tet mesh")
     p.add_argument("input", help=".off .obj .ply .stl .poly .smesh")
-    p.add_argument("-o", "--output", required=True, help="output mesh: .json, .vtu or .msh")
+    p.add_argument("-o", "--output", required=True, help="output mesh (.json, .vtu, .msh) or simulator input "
+                   "(.uge, .stor, MESH, .csv, .npz; see `nonobtuse export`)")
     p.add_argument("--max-steiner", type=guards.count, default=None,
                    help="Steiner point budget (default: refine_gabriel's)")
     p.add_argument("--min-length", type=guards.non_negative, default=None,
@@ -75,7 +76,8 @@ def run_check3d(args: argparse.Namespace) -> int:
 
 
 def run_refine3d(args: argparse.Namespace) -> int:
-    from nonobtuse.mesh3d import load_plc, refine_gabriel, write_tetmesh
+    from nonobtuse.cli.export import write_output
+    from nonobtuse.mesh3d import load_plc, refine_gabriel
 
     t0 = time.perf_counter()
     guards.refuse_overwriting(_files_read(args.input), [Path(args.output)])
@@ -93,7 +95,7 @@ def run_refine3d(args: argparse.Namespace) -> int:
     written = dict(stats)
     if not args.timings:  # the file is then the same for the same input and options
         written["seconds"] = None
-    write_tetmesh(replace(result.mesh, stats=written), args.output)
+    write_output(replace(result.mesh, stats=written), args.output)
     print(f"refine3d: {result.status} after {stats['seconds']:.2f} s; wrote {args.output}", file=sys.stderr)
     _print({"input": args.input, "output": args.output, **_unchecked_as_unknown(stats)}, args.json)
     return EXIT_OK if result.status == "converged" else EXIT_NOT_CONVERGED

@@ -18,11 +18,15 @@ def register(sub: argparse._SubParsersAction) -> None:
         "refine",
         help="add the fewest Steiner points on boundary edges so that every boundary triangle is nonobtuse",
         description="Refine the boundary of a 2D domain (.poly, .node, CG:SHOP or domain .json) and write "
-        "the constrained Delaunay mesh (.json mesh schema, .node/.ele/.poly, .vtu, .msh). Exit code 3 when "
+        "the constrained Delaunay mesh (.json mesh schema, .node/.ele/.poly, .vtu, .msh) or simulator input "
+        "(.uge, .stor, MESH, .csv, .npz; see `nonobtuse export`). Exit code 3 when "
         "refinement did not converge (budget spent, or stalled): the partial mesh is still written.",
     )
     p.add_argument("input", help="domain file")
-    p.add_argument("-o", "--output", required=True, help="mesh file; the format follows the suffix")
+    p.add_argument("-o", "--output", required=True,
+                   help="mesh file or simulator input; the format follows the name")
+    p.add_argument("--thickness", type=float, default=1.0,
+                   help="simulator input: extrusion thickness (default 1)")
     p.add_argument("--strategy", choices=STRATEGIES, default="greedy", help="default: greedy")
     b0, b1 = default_steiner_budget(0), default_steiner_budget(1)  # the core's rule, affine in n
     p.add_argument("--max-steiner", type=guards.count, default=None,
@@ -36,14 +40,15 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from nonobtuse.io import mesh_output_paths, write_mesh
+    from nonobtuse.cli.export import write_output
+    from nonobtuse.io import mesh_output_paths
     from nonobtuse.refinement import refine
 
     domain = load(args)
     guards.refuse_overwriting(guards.files_read(args.input, domain), mesh_output_paths(args.output))
     result = refine(domain, strategy=args.strategy, max_steiner=args.max_steiner, threads=args.threads)
     require_points_in_domain(domain, result.mesh.triangles)
-    write_mesh(guards.without_timings(result.mesh, args.timings), args.output)
+    write_output(guards.without_timings(result.mesh, args.timings), args.output, thickness=args.thickness)
     s = result.stats
     if args.json:
         json.dump(s, sys.stdout)

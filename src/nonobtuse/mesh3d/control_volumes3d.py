@@ -10,8 +10,9 @@ negative coefficient breaks the M-matrix property. The part of T nearest to i is
 with apex i over the three pieces of the edges at i, of volume A * |e| / 6 each, so the Voronoi cell volumes
 of all vertices sum to the mesh volume (signed pieces, exactly up to rounding).
 
-Everything is computed in floating point (constructions, not decisions): the exact certificate is the Gabriel
-check of the boundary faces, this module measures its consequence.
+The sign of every A_e (negative, zero or positive) is decided exactly by the C++ core
+(``_core.dual_area_signs``: interval arithmetic, exact arithmetic when the interval contains 0); the floats
+give magnitudes only, so a coefficient that is exactly 0 is 0.0 and never a rounding-noise -4e-16.
 """
 
 from __future__ import annotations
@@ -20,6 +21,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from nonobtuse import _core
+from nonobtuse.errors import InternalError
 from nonobtuse.mesh3d.plc import TetMesh
 
 # The six edges (i, j) of a positively oriented tet (0, 1, 2, 3) with the other two vertices (k, l) ordered
@@ -32,11 +35,14 @@ class ControlVolumes3D:
     """Control-volume data of a tet mesh.
 
     edges:        (e, 2) int64, a < b, sorted.
-    dual_areas:   (e,) signed area of the Voronoi face dual to each edge, clipped to the mesh.
+    dual_areas:   (e,) float64 signed area of the Voronoi face dual to each edge, clipped to the mesh: the
+                  exact sign times the float magnitude (exactly 0.0 where the area is exactly 0).
     lengths:      (e,) edge lengths.
     couplings:    (e,) dual_areas / lengths: the finite-volume coupling coefficients.
     volumes:      (n,) Voronoi cell volume of every point (clipped to the mesh; 0 for unused points).
-    negative_couplings: number of edges with a negative coupling coefficient.
+    signs:        (e,) int8 exact sign of each dual area: -1, 0, +1.
+    negative_couplings: number of edges whose coupling is exactly negative (a positive off-diagonal).
+    exact_evaluations: edges whose sign the interval filter left to exact arithmetic.
     """
 
     edges: np.ndarray
@@ -44,11 +50,14 @@ class ControlVolumes3D:
     lengths: np.ndarray
     couplings: np.ndarray
     volumes: np.ndarray
+    signs: np.ndarray
     negative_couplings: int
+    exact_evaluations: int = 0
 
     def to_dict(self) -> dict:
         """Summary for JSON output."""
         return {"edges": len(self.edges), "negative_couplings": self.negative_couplings,
+                "zero_couplings": int((self.signs == 0).sum()),
                 "min_coupling": float(self.couplings.min()) if len(self.couplings) else None,
                 "total_volume": float(self.volumes.sum())}
 
@@ -97,24 +106,46 @@ def dual_area_pieces(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray, 
     return frames[:, :, :2], signed.reshape(-1, 6)
 
 
-def control_volumes3d(mesh: TetMesh) -> ControlVolumes3D:
-    """Voronoi dual areas, coupling coefficients and cell volumes of `mesh` (positively oriented tets).
+def _shares(points: np.ndarray, pairs: np.ndarray, pieces: np.ndarray) -> np.ndarray:
+    """Per tet and local vertex (t, 4): the pyramids with apex at the vertex over the pieces of its three
+    edges (``pairs``, ``pieces`` from :func:`dual_area_pieces`), volume piece * |e| / 6 each."""
+    lengths = np.linalg.norm(points[pairs[..., 1]] - points[pairs[..., 0]], axis=2)
+    pyramid = pieces * lengths / 6.0  # (t, 6)
+    shares = np.zeros((len(pieces), 4))
+    for f, (i, j) in enumerate(_EDGE_FRAMES[:, :2]):
+        shares[:, i] += pyramid[:, f]
+        shares[:, j] += pyramid[:, f]
+    return shares
 
-    Cost: O(t log t) for t tets (numpy, vectorized).
+
+def tet_voronoi_shares(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
+    """The part of each tet nearest to each of its four vertices, as signed volumes (t, 4) float64: the
+    vertex's Voronoi cell within the tet. points (n, 3) float64, tets (t, 4) int64 positively oriented. The
+    four shares sum to the tet's volume (up to rounding); a share can be negative only where the tet's
+    circumcenter lies outside it. Cost: O(t)."""
+    points = np.asarray(points, dtype=np.float64)
+    tets = np.asarray(tets, dtype=np.int64).reshape(-1, 4)
+    return _shares(points, *dual_area_pieces(points, tets))
+
+
+def control_volumes3d(mesh: TetMesh) -> ControlVolumes3D:
+    """Voronoi dual areas (exact signs), coupling coefficients and cell volumes of `mesh`.
+
+    mesh: tets positively oriented (InvalidInputError naming the tet otherwise). Cost: O(t log t) for t tets
+    (numpy, vectorized; the C++ sign pass sorts the 6 t edge pieces), plus exact arithmetic for the edges the
+    interval filter cannot decide (dual areas that are zero or nearly so).
     """
     points = np.asarray(mesh.points, dtype=np.float64)
     tets = np.asarray(mesh.tets, dtype=np.int64).reshape(-1, 4)
+    exact = _core.dual_area_signs(points, tets)
     pairs, pieces = dual_area_pieces(points, tets)
-    pairs = np.sort(pairs.reshape(-1, 2), axis=1)
-    pieces = pieces.ravel()
-    edges, inv = np.unique(pairs, axis=0, return_inverse=True)
-    inv = inv.ravel()
+    edges, inv = np.unique(np.sort(pairs.reshape(-1, 2), axis=1), axis=0, return_inverse=True)
     edges = edges.reshape(-1, 2)
-    dual = np.bincount(inv, weights=pieces, minlength=len(edges))
+    if not np.array_equal(exact["edges"].reshape(-1, 2), edges):
+        raise InternalError("control_volumes3d: the exact pass and the float pass found different edges")
+    signs = exact["sign"]
+    dual = signs * np.abs(np.bincount(inv.ravel(), weights=pieces.ravel(), minlength=len(edges)))
     lengths = np.linalg.norm(points[edges[:, 1]] - points[edges[:, 0]], axis=1)
-    couplings = dual / lengths
-    # pyramid over each piece with apex at either endpoint: height |e| / 2
-    pyramid = pieces * lengths[inv] / 6.0
-    volumes = np.bincount(pairs[:, 0], weights=pyramid, minlength=len(points))
-    volumes += np.bincount(pairs[:, 1], weights=pyramid, minlength=len(points))
-    return ControlVolumes3D(edges, dual, lengths, couplings, volumes, int((couplings < 0).sum()))
+    volumes = np.bincount(tets.ravel(), weights=_shares(points, pairs, pieces).ravel(), minlength=len(points))
+    return ControlVolumes3D(edges, dual, lengths, dual / lengths, volumes, signs, int((signs < 0).sum()),
+                            int(exact["exact_evaluations"]))
