@@ -97,7 +97,7 @@ class ControlVolumeGrid:
             f"cells (control volumes):     {len(self.volumes)}",
             f"connections (dual faces):    {len(self.connections)}",
             f"boundary face pieces:        {len(self.boundary_cells)} "
-            f"(markers {sorted(set(self.boundary_markers.tolist()))})",
+            f"({_marker_list(self.boundary_markers)})",
             f"min / max volume:            {self.volumes.min():.12e} {self.volumes.max():.12e}",
             f"total volume:                {self.volumes.sum():.12e}",
         ]
@@ -108,6 +108,13 @@ class ControlVolumeGrid:
             f"negative coefficients (exact sign of -area/distance > 0): {self.negative_coefficients}",
         ]
         return "\n".join(lines)
+
+
+def _marker_list(markers: np.ndarray) -> str:
+    values = np.unique(markers).tolist()
+    if len(values) <= 10:
+        return f"markers {values}"
+    return f"{len(values)} markers, {values[0]} .. {values[-1]}"
 
 
 def grid_from_mesh(mesh: AnyMesh, *, thickness: float = 1.0) -> ControlVolumeGrid:
