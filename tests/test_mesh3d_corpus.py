@@ -156,3 +156,10 @@ def test_check3d_reports_the_orientation_warning(capsys):
     assert main(["check3d", str(DATA / "schonhardt.off"), "--json"]) == EXIT_VIOLATIONS
     out = json.loads(capsys.readouterr().out)
     assert len(out["warnings"]) == 1 and out["warnings"][0].startswith("inconsistent orientation")
+
+
+def test_loading_never_modifies_the_corpus():
+    before = {f: (DATA / f).read_bytes() for f in FILES}
+    for f in FILES:
+        load_plc(DATA / f)
+    assert {f: (DATA / f).read_bytes() for f in FILES} == before
