@@ -145,8 +145,7 @@ def jittered_icosphere(subdivisions: int, jitter: float, seed: int) -> tuple[np.
 def prism(profile: np.ndarray, depth: float) -> tuple[np.ndarray, Polygons]:
     """The prism over a counter-clockwise polygon `profile` (k, 2) in the xy plane, z from 0 to depth."""
     k = len(profile)
-    points = np.concatenate([np.column_stack([profile, np.zeros(k)]), np.column_stack([profile, np.full(k,
-                                                                                                     depth)])])
+    points = np.concatenate([np.column_stack([profile, np.full(k, z)]) for z in (0.0, depth)])
     faces = [list(range(k))[::-1], list(range(k, 2 * k))]
     faces += [[i, (i + 1) % k, k + (i + 1) % k, k + i] for i in range(k)]
     return points, faces

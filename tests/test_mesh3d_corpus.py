@@ -156,3 +156,24 @@ def test_check3d_reports_the_orientation_warning(capsys):
     assert main(["check3d", str(DATA / "schonhardt.off"), "--json"]) == EXIT_VIOLATIONS
     out = json.loads(capsys.readouterr().out)
     assert len(out["warnings"]) == 1 and out["warnings"][0].startswith("inconsistent orientation")
+
+
+def test_loading_never_modifies_the_corpus():
+    before = {f: (DATA / f).read_bytes() for f in FILES}
+    for f in FILES:
+        load_plc(DATA / f)
+    assert {f: (DATA / f).read_bytes() for f in FILES} == before
+
+
+@pytest.mark.parametrize("suffix", [".vtu", ".msh"])
+def test_region_attributes_reach_the_meshio_formats(tmp_path, suffix):
+    meshio = pytest.importorskip("meshio")
+    from nonobtuse.mesh3d import write_tetmesh
+
+    result = refine_gabriel(load_plc(DATA / "layered_box.poly"), time_limit=60)
+    write_tetmesh(result.mesh, tmp_path / f"out{suffix}")
+    back = meshio.read(tmp_path / f"out{suffix}")
+    key = "marker" if suffix == ".vtu" else "gmsh:physical"
+    tetra = [k for k, block in enumerate(back.cells) if block.type == "tetra"]
+    assert len(tetra) == 1
+    assert np.array_equal(back.cell_data[key][tetra[0]], result.mesh.tet_regions.astype(np.int64))

@@ -88,8 +88,11 @@ struct Restricted {
   std::vector<Triangle> boundary_faces;
   std::vector<int> face_markers;
   std::vector<int> face_facets;  // index into PlcState::facets of each boundary face
+  // Per tet: the attribute of the region seed in its component, 0 for none; without seeds at all, its
+  // component's number 1, 2, ... (components in the order of their smallest cells).
   std::vector<double> tet_regions;
 };
+// Components of cells connected across faces on no facet; the unbounded one and those of hole seeds are outside.
 Restricted restrict_delaunay(const PlcState& s, const PLC3& plc);
 // The subfacets (the facets' triangulations) as boundary faces, oriented like the input triangles of their facet;
 // no tets. Subfacets whose corners became collinear through the rounding of Steiner points (no diametral sphere)
