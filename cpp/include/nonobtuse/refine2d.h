@@ -23,6 +23,10 @@ struct Refine2DOptions {
   // Threads for the passes over the whole mesh of large inputs (the lower bound and the certificate): 1, or 2 and
   // more (two are used). The result is the same for any value.
   int threads = 2;
+  // After every split, check that the triangulation is valid and constrained Delaunay everywhere and that the
+  // maintained domain marks equal a recomputation (InternalError otherwise): O(n) per split, for tests (debug
+  // builds always check).
+  bool check_every_split = false;
 };
 
 // Per boundary edge of the input: a constrained edge of the input's CDT with the domain on one side (a boundary
