@@ -42,6 +42,7 @@ py::dict result_to_dict(const Refine2DResult& r) {
   d["lower_bound"] = r.lower_bound;
   d["optimal"] = r.optimal < 0 ? py::object(py::none()) : py::object(py::bool_(r.optimal == 1));
   d["obtuse_boundary_sides"] = r.obtuse_boundary_sides;
+  d["max_steiner_offset"] = r.max_steiner_offset;
   d["seconds"] = r.seconds;
   std::vector<std::array<int, 4>> rows;
   for (const auto& e : r.edges) rows.push_back({e.edge[0], e.edge[1], e.steiner_points, e.lower_bound});
@@ -74,8 +75,8 @@ void bind_refine2d(py::module_& m) {
       "Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0:\n"
       "default_steiner_budget(n). Returns a dict: mesh (as triangulate), status ('converged' |\n"
       "'budget_exhausted' | 'stalled'), steiner_points, max_steiner (the budget used), lower_bound, optimal\n"
-      "(True | None), obtuse_boundary_sides (exact certificate), edges (k, 4) int64 rows a, b, steiner_points,\n"
-      "lower_bound per input boundary edge, seconds, diagnosis.");
+      "(True | None), obtuse_boundary_sides (exact certificate), max_steiner_offset (float), edges (k, 4) int64\n"
+      "rows a, b, steiner_points, lower_bound per input boundary edge, seconds, diagnosis.");
   m.def(
       "conforming_gabriel_steiner_points",
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,

@@ -1,5 +1,7 @@
 // nonobtuse::refine: strategy dispatch, the midpoint rescue, the optimality flag and the exact certificate.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include "lower_bound.h"
 #include "nonobtuse/check2d.h"
@@ -11,6 +13,25 @@ namespace {
 
 using refine2d::Side;
 using refine2d::State;
+
+// Refine2DResult::max_steiner_offset: for each Steiner point p on input segment [a, b], the distance from p to
+// [a, b] over |b - a|, in doubles relative to a (the differences p - a are exact for points near the segment,
+// Sterbenz; CGAL's point-segment distance goes through the line's equation, whose constant term cancels
+// catastrophically far from the origin).
+double max_steiner_offset(const Mesh2& mesh, const State& st) {
+  double worst = 0.0;
+  for (std::size_t i = st.n_input(); i < mesh.points.size(); ++i) {
+    const Segment& edge = st.edges()[st.steiner_edge(static_cast<int>(i))].edge;
+    const Point2 &a = st.domain().points[edge[0]], &b = st.domain().points[edge[1]], &p = mesh.points[i];
+    const double dx = b.x - a.x, dy = b.y - a.y, vx = p.x - a.x, vy = p.y - a.y, length2 = dx * dx + dy * dy;
+    const double along = vx * dx + vy * dy;
+    const double offset = along <= 0        ? std::hypot(vx, vy) / std::sqrt(length2)
+                          : along >= length2 ? std::hypot(p.x - b.x, p.y - b.y) / std::sqrt(length2)
+                                             : std::abs(vx * dy - vy * dx) / length2;
+    worst = std::max(worst, offset);
+  }
+  return worst;
+}
 
 }  // namespace
 
@@ -69,6 +90,7 @@ Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options) {
   r.max_steiner = budget;
   for (const auto& e : st.edges()) r.lower_bound += e.lower_bound;
   r.edges = st.edges();
+  r.max_steiner_offset = max_steiner_offset(r.mesh, st);
   r.diagnosis = refine2d::diagnose(st);
   r.status = r.obtuse_boundary_sides == 0 ? RefineStatus::Converged
              : st.budget_left()                 ? RefineStatus::Stalled

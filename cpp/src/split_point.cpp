@@ -133,6 +133,23 @@ RankedCandidates ranked_candidates(const Point& s, const Point& e, double t) {
   double len = std::hypot(dx, dy), tx = dx / len, ty = dy / len;  // right normal: (ty, -tx)
   for (int i = -2; i <= 2; ++i)
     for (int j = 1; j <= 8; ++j) out.emplace_back(x0 + u * (i * tx + j * ty), y0 + u * (i * ty - j * tx));
+  // Far from the origin a subsegment may span only a few doubles (coordinates near 1e9, edges of 1e-6: 8 ulps),
+  // and the points above, within ulps of the target, lie off the line by a good fraction of its length. Then
+  // every double strictly between s and e in one coordinate, with the doubles nearest the line in the other
+  // (computed from s, the local origin: v - s is exact there), is a candidate too; those exactly on the line
+  // are collinear candidates (exact orientation below), the others are ranked by their distance off the line.
+  constexpr double kFewUlps = 64;
+  for (bool by_x : {true, false}) {
+    const double from = by_x ? s.x() : s.y(), to = by_x ? e.x() : e.y();
+    if (from == to) continue;
+    const double slope = by_x ? dy / dx : dx / dy, lo = std::min(from, to), hi = std::max(from, to);
+    const double m = std::max(std::abs(lo), std::abs(hi));
+    if (!(hi - lo <= kFewUlps * (step(m, 1) - m))) continue;  // many doubles along: the points above suffice
+    for (double v = step(lo, 1); v < hi; v = step(v, 1)) {
+      const double w_at = (by_x ? s.y() : s.x()) + (v - from) * slope;
+      for (int j = -1; j <= 1; ++j) out.push_back(by_x ? Point(v, step(w_at, j)) : Point(step(w_at, j), v));
+    }
+  }
   out.erase(std::remove_if(out.begin(), out.end(),
                            [&](const Point& q) {
                              // A coordinate over a subnormal slope can overflow: no infinities into predicates.
@@ -141,17 +158,22 @@ RankedCandidates ranked_candidates(const Point& s, const Point& e, double t) {
                            }),
             out.end());
   // Collinear first, then outside (right of s -> e), then inside by ulps; each by distance from the target along
-  // the line (nearest first; ties: the one nearer s).
+  // the line (nearest first; ties: the one nearer s). Last, the points off the line by more than 2^-8 of the
+  // subsegment's length (only where it spans few doubles), nearest the line first, then nearest the target.
   // Each rank computed once (the orientation is exact); ties keep the order above.
-  const double target = t * (dx * dx + dy * dy);
+  const double length2 = dx * dx + dy * dy, target = t * length2;
   RankedCandidates ranked;
   ranked.rank.reserve(out.size());
   for (std::size_t k = 0; k < out.size(); ++k) {
     const Point& q = out[k];
     auto o = CGAL::orientation(s, e, q);
-    int group = o == CGAL::COLLINEAR ? 0 : o == CGAL::RIGHT_TURN ? 1 : 2;
     double along = (q.x() - s.x()) * dx + (q.y() - s.y()) * dy;
-    ranked.rank.emplace_back(group, std::abs(along - target), along, k);
+    double across = std::abs((q.x() - s.x()) * dy - (q.y() - s.y()) * dx);  // |e - s| times the distance off
+    if (o != CGAL::COLLINEAR && across > 0x1p-8 * length2)
+      ranked.rank.emplace_back(3, across, std::abs(along - target), k);
+    else
+      ranked.rank.emplace_back(o == CGAL::COLLINEAR ? 0 : o == CGAL::RIGHT_TURN ? 1 : 2, std::abs(along - target),
+                               along, k);
   }
   ranked.points = std::move(out);
   return ranked;

@@ -18,7 +18,10 @@ namespace nonobtuse::refine2d {
 // coordinates below 2^20), then points off the line to its right (outside the domain: the refined boundary
 // s-p-e bends away from the domain), then to its left, each group nearest to the target first. Off-line
 // candidates are the doubles nearest the line near the rounded point (within 2 ulps of the finer coordinate)
-// and a grid up to 8 ulps outward. Every candidate is strictly between s and e (exact: angle(s, p, e) obtuse).
+// and a grid up to 8 ulps outward. Where the subsegment spans at most 64 doubles in a coordinate (far from the
+// origin), the doubles nearest the line at every double between s and e are candidates too, and off-line points
+// farther than 2^-8 of its length from the line come last, nearest the line first. Every candidate is strictly
+// between s and e (exact: angle(s, p, e) obtuse).
 // Rounding is a construction: the caller picks the first candidate its exact predicates accept (pick_point).
 std::vector<Point> candidates_near(const Point& s, const Point& e, double t);
 

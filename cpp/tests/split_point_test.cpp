@@ -56,6 +56,22 @@ TEST(SplitPoint, OffLineCandidatesPreferTheOutside) {
   EXPECT_NE(o, CGAL::LEFT_TURN);
 }
 
+// Far from the origin: s = (1e9, 1e9) and e = s + (9, 2) ulps (an ulp is 2^-23 there), a segment of 9.2 ulps
+// with no double strictly inside it on its line (gcd(9, 2) = 1). Every candidate's offset off the line, in ulps,
+// is |9 y - 2 x| / sqrt(85) for its coordinates (x, y) in ulps from s (exact integers: the differences are exact);
+// the first candidate is within one ulp of the line, and candidates farther than 2^-8 of the length come in
+// increasing offset.
+TEST(SplitPoint, FarFromTheOriginCandidatesHugTheLine) {
+  const double u = 0x1p-23;
+  const Point s(1e9, 1e9), e(1e9 + 9 * u, 1e9 + 2 * u);
+  const std::vector<Point> c = candidates_near(s, e, 0.5);
+  ASSERT_FALSE(c.empty());
+  auto offset = [&](const Point& q) { return std::abs(9 * (q.y() - s.y()) / u - 2 * (q.x() - s.x()) / u); };
+  EXPECT_LE(offset(c.front()), std::sqrt(85.0));
+  for (std::size_t k = 1; k < c.size(); ++k) EXPECT_LE(offset(c[k - 1]), offset(c[k])) << k;
+  for (const Point& q : c) EXPECT_EQ(CGAL::angle(s, q, e), CGAL::OBTUSE);  // strictly between s and e
+}
+
 // Figure 5's quadrilateral: the foot of c = (90, 20) on (a, d) is (90, 0), exactly representable, so split_at_foot
 // puts the Steiner point there: point index 4, counted once on the input edge (a, d); (a, d) is no constraint any
 // more, (a, p) and (p, d) are boundary sides, neither violated (c sees both at a right angle), and the
