@@ -170,7 +170,7 @@ def check_refine_2d(domain: Domain, strategy: str) -> str:
     m = result.mesh
     assert np.array_equal(m.points[: len(d.points)], d.points), "the input points moved"
     if result.status == "converged":
-        assert result.stats["obtuse_boundary_triangles"] == 0
+        assert result.stats["obtuse_boundary_sides"] == 0
         assert obtuse_constraint_sides(m) == 0, "converged, but an obtuse constraint side (exact)"
         assert non_delaunay_edges(m) == 0, "converged, but an unconstrained edge is not locally Delaunay"
     return result.status

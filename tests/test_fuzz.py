@@ -49,7 +49,7 @@ def test_the_2d_check_refuses_a_mesh_that_lies(monkeypatch):
     def lying_refine(d, **kw):
         r = real(d, max_steiner=0)
         r.status = "converged"
-        r.stats["obtuse_boundary_triangles"] = 0
+        r.stats["obtuse_boundary_sides"] = 0
         return r
 
     monkeypatch.setattr(fuzz.nonobtuse, "refine", lying_refine)

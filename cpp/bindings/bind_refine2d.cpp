@@ -56,6 +56,8 @@ void bind_result_classes(py::module_& m) {
                              "'converged', 'budget_exhausted' or 'stalled'")
       .def_readonly("steiner_points", &Refine2DResult::steiner_points)
       .def_readonly("max_steiner", &Refine2DResult::max_steiner, "the Steiner budget used (its default resolved)")
+      .def_readonly("max_steiner_offset", &Refine2DResult::max_steiner_offset,
+                    "largest distance of a Steiner point off its input segment over the segment's length")
       .def_readonly("lower_bound", &Refine2DResult::lower_bound)
       .def_property_readonly(
           "optimal",

@@ -1,4 +1,4 @@
-// Concentric shells around acute junctions (issue 4).
+// Concentric shells around acute junctions.
 //
 // Where two constraints meet at an input vertex v at an angle theta < 90 degrees, a point on one of them can sit
 // inside the diametral disk of a subsegment at v on the other: a point b at distance |vb| from v encroaches the
@@ -39,15 +39,15 @@ bool is_interior_constraint(const State& st, Vertex_handle a, Vertex_handle b) {
 }  // namespace
 
 bool is_acute_junction(const State& st, Vertex_handle v, Vertex_handle w) {
-  if (v->info() < 0 || v->info() >= st.n_input) return false;
+  if (v->info() < 0 || v->info() >= st.n_input()) return false;
   const bool interior = is_interior_constraint(st, v, w);
-  auto ec = st.cdt.incident_edges(v), done = ec;
+  auto ec = st.cdt().incident_edges(v), done = ec;
   if (ec == nullptr) return false;
   do {
     if (!ec->first->is_constrained(ec->second)) continue;
     Vertex_handle a = ec->first->vertex(CDT::ccw(ec->second)), b = ec->first->vertex(CDT::cw(ec->second));
     Vertex_handle u = a == v ? b : a;
-    if (u != w && !st.cdt.is_infinite(u) && (interior || is_interior_constraint(st, v, u)) &&
+    if (u != w && !st.cdt().is_infinite(u) && (interior || is_interior_constraint(st, v, u)) &&
         CGAL::angle(w->point(), v->point(), u->point()) == CGAL::ACUTE)
       return true;
   } while (++ec != done);

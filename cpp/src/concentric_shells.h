@@ -1,4 +1,4 @@
-// Internal: concentric power-of-two shells around acute junctions (issue 4), after Ruppert and Shewchuk's Triangle.
+// Internal: concentric power-of-two shells around acute junctions, after Ruppert and Shewchuk's Triangle.
 #pragma once
 #include "refine2d_state.h"
 
@@ -15,8 +15,8 @@ bool is_acute_junction(const State& st, Vertex_handle v, Vertex_handle w);
 // split lands on a shell around the junction.
 Side shell_anchor(const State& st, const Side& side);
 
-// The shell parameter for a split of [s, e] from the acute junction s whose greedy (or forbidden-interval) choice
-// is s + t (e - s): the largest power of two 2^k <= t |e - s|, as a parameter of [s, e].
+// The shell at or before s + t (e - s), for a split of [s, e] from the acute junction s whose greedy (or
+// forbidden-interval) choice is t: the largest power of two 2^k <= t |e - s|, returned as a parameter of [s, e].
 double shell_at_or_before(const Point& s, const Point& e, double t);
 
 }  // namespace nonobtuse::refine2d

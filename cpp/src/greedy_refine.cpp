@@ -9,7 +9,7 @@
 // conflict zone), where x would break f (Figure 5). Then x moves back to the interval's start (Theorem 3's
 // rule); where the start is s itself, see choose_point.
 //
-// PSLGs (issue 4): an interface or dangling subsegment is swept once for both of its sides (encroachers of both,
+// PSLGs: an interface or dangling subsegment is swept once for both of its sides (encroachers of both,
 // t* = min over both); a sweep starting at an acute junction puts its first point on a power-of-two shell
 // (concentric_shells.cpp, with the termination argument of that rule).
 //
@@ -23,7 +23,10 @@
 #include <set>
 
 #include "concentric_shells.h"
-#include "refine2d_state.h"
+#include "forbidden_intervals.h"
+#include "greedy_edge.h"
+#include "refine2d_strategies.h"
+#include "split_point.h"
 
 namespace nonobtuse::refine2d {
 namespace {
@@ -31,36 +34,10 @@ namespace {
 using Key = std::pair<int, int>;
 Key key(const Side& side) { return {side.s->info(), side.e->info()}; }
 
-// A boundary side (other than `cur`) that a Steiner point at p on `cur` would break, if any: p in its forbidden
-// interval.
-std::optional<Side> forbidder(const State& st, const Side& cur, const Point& p) {
-  std::vector<Side> broken = st.sides_broken_by(cur, p);
-  if (broken.empty()) return std::nullopt;
-  return broken.front();
-}
-
-// The forbidden interval of [s, e] with respect to f: the parameters t1 <= t2 where s + t (e - s) crosses f's
-// diametral circle (a float construction; every decision made with it is re-checked exactly).
-std::pair<double, double> forbidden_interval(const Point& s, const Point& e, const Side& f) {
-  const Point &a = f.s->point(), &b = f.e->point();
-  double mx = 0.5 * (a.x() + b.x()), my = 0.5 * (a.y() + b.y());
-  double r2 = 0.25 * ((b.x() - a.x()) * (b.x() - a.x()) + (b.y() - a.y()) * (b.y() - a.y()));
-  double dx = e.x() - s.x(), dy = e.y() - s.y(), wx = s.x() - mx, wy = s.y() - my;
-  double A = dx * dx + dy * dy, B = 2 * (dx * wx + dy * wy), C = wx * wx + wy * wy - r2;
-  double disc = std::max(0.0, B * B - 4 * A * C), root = std::sqrt(disc);
-  return {(-B - root) / (2 * A), (-B + root) / (2 * A)};
-}
-
-// True when s lies in the closed diametral disk of f (f's forbidden interval then starts at s: no progress).
-bool in_closed_disk(const Point& s, const Side& f) {
-  const Point &a = f.s->point(), &b = f.e->point();
-  return s == a || s == b || CGAL::angle(a, s, b) != CGAL::ACUTE;
-}
-
 // Paper 4.3: when the greedy step is blocked by a vertex on the boundary whose own subsegment is violated,
 // refine that subsegment first (its refinement may unblock this one).
 bool blocked_by_violated_boundary(const State& st, Vertex_handle blocker) {
-  auto ec = st.cdt.incident_edges(blocker), done = ec;
+  auto ec = st.cdt().incident_edges(blocker), done = ec;
   if (ec == nullptr) return false;
   do {
     if (!ec->first->is_constrained(ec->second)) continue;
@@ -76,11 +53,11 @@ enum class Step { Place, Defer, Stuck };
 Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& deferred, Point& p) {
   const Point &s = cur.s->point(), &e = cur.e->point();
   auto empty = [&](const Point& c) {
-    return st.splittable(cur, c) && st.subsegment_is_empty(cur, s, c, w.encroachers, Sight{});
+    return splittable(st, cur, c) && subsegment_is_empty(st, cur, s, c, w.encroachers, Sight{});
   };
   auto allowed = [&](const Point& c) { return empty(c) && !forbidder(st, cur, c); };
   Vertex_handle blocker;
-  const double t_greedy = st.greedy_parameter(cur, s, e, w.encroachers, Sight{}, &blocker);
+  const double t_greedy = greedy_parameter(st, cur, s, e, w.encroachers, Sight{}, &blocker);
   const bool may_defer = !deferred.count(key(cur));
   auto defer = [&] {
     deferred.insert(key(cur));
@@ -110,7 +87,7 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
         // point, farther along, covers more (the layers of experiments/figure6_propagation.py: 2n - 1 -> n).
         const double te = std::min(t_end, 1.0);
         const Point end = te < 1 ? Point(s.x() + te * (e.x() - s.x()), s.y() + te * (e.y() - s.y())) : e;
-        if (st.subsegment_is_empty(cur, p, end, w.encroachers, Sight{})) return Step::Place;
+        if (subsegment_is_empty(st, cur, p, end, w.encroachers, Sight{})) return Step::Place;
         break;
       }
       t = std::min(t_start, t * (1 - 0x1p-40));
@@ -124,7 +101,7 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
     break;
   }
   // Fallback: the plain greedy point, which breaks f's disk (f is re-queued by the split and refined in turn).
-  st.fallback_used = true;
+  st.note_fallback();
   return pick_point_at_or_before(s, e, t_greedy, empty, p) ? Step::Place : Step::Stuck;
 }
 
@@ -133,17 +110,17 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
 // they do not encroach its other subsegments, so the first walk's encroachers stay a superset; should that ever
 // fail (the apex is not among them), the walk is redone.
 void sweep(State& st, Side cur, std::set<Key>& deferred) {
-  DiskWalk w = st.walk_diametral_disk(cur);
+  DiskWalk w = walk_diametral_disk(st, cur);
   // Interfaces: both sides at once (the walk collected both sides' encroachers).
   while (st.budget_left() && (st.is_violated(cur) || st.is_violated({cur.e, cur.s}))) {
     keep_encroaching(cur.s->point(), cur.e->point(), w.encroachers);
     if (std::find(w.encroachers.begin(), w.encroachers.end(), st.apex(cur)) == w.encroachers.end())
-      w = st.walk_diametral_disk(cur);
+      w = walk_diametral_disk(st, cur);
     Point p;
     Step step = choose_point(st, cur, w, deferred, p);
-    if (step == Step::Defer) st.queue.push_back(cur);
+    if (step == Step::Defer) st.enqueue(cur);
     if (step != Step::Place) return;
-    Vertex_handle v = st.split(cur, p);
+    Vertex_handle v = split(st, cur, p);
     if (v == nullptr) return;
     cur = {v, cur.e};
   }
@@ -154,16 +131,15 @@ void sweep(State& st, Side cur, std::set<Key>& deferred) {
 void greedy_refine(State& st) {
   std::set<Key> deferred;
   st.enqueue_all();
-  while (!st.queue.empty() && st.budget_left()) {
-    Side side = st.queue.front();
-    st.queue.pop_front();
+  while (st.has_work() && st.budget_left()) {
+    Side side = st.next_side();
     if (!st.is_violated(side)) continue;
-    const std::size_t before = st.queue.size();
-    st.propagation.begin(side.s->info(), side.e->info(), st.placed);
+    const std::size_t before = st.queued();
+    st.propagation().begin(side.s->info(), side.e->info(), st.placed());
     sweep(st, shell_anchor(st, side), deferred);
-    for (std::size_t i = before; i < st.queue.size(); ++i)
-      st.propagation.queued(st.queue[i].s->info(), st.queue[i].e->info());
-    st.propagation.end(st.placed);
+    for (std::size_t i = before; i < st.queued(); ++i)
+      st.propagation().queued(st.queued_at(i).s->info(), st.queued_at(i).e->info());
+    st.propagation().end(st.placed());
   }
 }
 

@@ -4,33 +4,18 @@
 // (an encroacher projects strictly between s and e), so each round makes progress; the budget bounds the rounds.
 #include <algorithm>
 
-#include "refine2d_state.h"
+#include "refine2d_strategies.h"
+#include "split_point.h"
+#include "visibility.h"
 
 namespace nonobtuse::refine2d {
-namespace {
-
-// Parameter of the foot of q on the line s + t (e - s).
-double foot_parameter(const Point& s, const Point& e, const Point& q) {
-  double dx = e.x() - s.x(), dy = e.y() - s.y();
-  return ((q.x() - s.x()) * dx + (q.y() - s.y()) * dy) / (dx * dx + dy * dy);
-}
-
-}  // namespace
-
-Vertex_handle split_at_foot(State& st, const Side& side, const Point& q) {
-  Point p;
-  const Point &s = side.s->point(), &e = side.e->point();
-  if (!pick_point(s, e, foot_parameter(s, e, q), [&](const Point& c) { return st.splittable(side, c); }, p)) return nullptr;
-  return st.split(side, p);
-}
 
 void projection_refine(State& st) {
   st.enqueue_all();
-  while (!st.queue.empty() && st.budget_left()) {
-    Side side = st.queue.front();
-    st.queue.pop_front();
+  while (st.has_work() && st.budget_left()) {
+    Side side = st.next_side();
     if (!st.is_violated(side)) continue;
-    std::vector<Vertex_handle> q = st.walk_diametral_disk(side).encroachers;
+    std::vector<Vertex_handle> q = walk_diametral_disk(st, side).encroachers;
     const Point &s = side.s->point(), &e = side.e->point();
     std::sort(q.begin(), q.end(), [&](Vertex_handle a, Vertex_handle b) {
       return foot_parameter(s, e, a->point()) < foot_parameter(s, e, b->point());

@@ -1,15 +1,37 @@
-// nonobtuse::refine: strategy dispatch, the lower bound, the optimality flag and the exact certificate.
+// nonobtuse::refine: strategy dispatch, the midpoint rescue, the optimality flag and the exact certificate.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
-#include "fork_join.h"
+#include "lower_bound.h"
 #include "nonobtuse/check2d.h"
-#include "refine2d_state.h"
+#include "refine2d_strategies.h"
+#include "split_point.h"
 
 namespace nonobtuse {
 namespace {
 
 using refine2d::Side;
 using refine2d::State;
+
+// Refine2DResult::max_steiner_offset: for each Steiner point p on input segment [a, b], the distance from p to
+// [a, b] over |b - a|, in doubles relative to a (the differences p - a are exact for points near the segment,
+// Sterbenz; CGAL's point-segment distance goes through the line's equation, whose constant term cancels
+// catastrophically far from the origin).
+double max_steiner_offset(const Mesh2& mesh, const State& st) {
+  double worst = 0.0;
+  for (std::size_t i = st.n_input(); i < mesh.points.size(); ++i) {
+    const Segment& edge = st.edges()[st.steiner_edge(static_cast<int>(i))].edge;
+    const Point2 &a = st.domain().points[edge[0]], &b = st.domain().points[edge[1]], &p = mesh.points[i];
+    const double dx = b.x - a.x, dy = b.y - a.y, vx = p.x - a.x, vy = p.y - a.y, length2 = dx * dx + dy * dy;
+    const double along = vx * dx + vy * dy;
+    const double offset = along <= 0        ? std::hypot(vx, vy) / std::sqrt(length2)
+                          : along >= length2 ? std::hypot(p.x - b.x, p.y - b.y) / std::sqrt(length2)
+                                             : std::abs(vx * dy - vy * dx) / length2;
+    worst = std::max(worst, offset);
+  }
+  return worst;
+}
 
 }  // namespace
 
@@ -28,36 +50,9 @@ Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options) {
   auto start = std::chrono::steady_clock::now();
   long long budget = options.max_steiner < 0 ? default_steiner_budget(domain.points.size()) : options.max_steiner;
   State st(domain, budget);
+  st.set_check_every_split(options.check_every_split || State::kCheckEverySplit);
 
-  // Lower bound. For each input boundary edge E, every subsegment of E in any valid refinement has an open
-  // half-disk free of the vertices it sees, in particular of the input vertices. Greedy-Refine of E against the
-  // input vertices alone is optimal for that weaker single-edge problem (Theorem 2: the greedy end is as far as
-  // any solution's first point can be, by the exchange argument, which holds because a piece of a valid
-  // subsegment is valid: its disk lies in the subsegment's and it sees no more), and more vertices only add constraints, so no
-  // refinement placing Steiner points on E uses fewer. Edges are disjoint, so the bounds add.
-  // Visibility: a vertex counts for a subsegment only when some point of the open subsegment sees it, tested
-  // exactly against the constraints the walk over E's disk meets (Sight, covered_from: the first constraint on
-  // every sight line from E inside the disk is one of them). A vertex that the walk merely reaches, around the
-  // free end of a dangling segment or an end on the circle, does not count: the bound never counts a vertex that
-  // a valid refinement could leave in the disk, which is what makes it a lower bound.
-  // An interface edge is one single-edge problem with the encroachers of both sides (the walk collects both).
-  // Large inputs (unless options.threads is 1): the edges alternate between two threads, each walking on its own
-  // lane.
-  std::vector<std::pair<int, Side>> first_side;  // (input edge, its first boundary side)
-  std::vector<bool> bounded(st.edges.size(), false);
-  for (const Side& side : st.boundary_sides()) {
-    int k = st.edge_of(side);
-    if (!bounded[k]) first_side.emplace_back(k, side);
-    bounded[k] = true;
-  }
-  auto lower_bounds = [&](int lane) {
-    for (std::size_t i = lane; i < first_side.size(); i += 2) {
-      const auto& [k, side] = first_side[i];
-      st.edges[k].lower_bound = st.greedy_count(side, st.walk_diametral_disk(side, lane));
-    }
-  };
-  fork_join(worth_forking(st.cdt.number_of_faces(), options.threads), [&] { lower_bounds(0); },
-            [&] { lower_bounds(1); });
+  refine2d::lower_bound_per_edge(st, options.threads);
 
   auto run = [&] {
     switch (options.strategy) {
@@ -75,34 +70,35 @@ Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options) {
     for (const Side& side : st.boundary_sides())
       if (st.is_violated(side)) stuck.push_back(side);
     if (stuck.empty()) break;
-    st.fallback_used = true;
+    st.note_fallback();
     for (const Side& side : stuck) {
       refine2d::Point p;
-      auto valid = [&](const refine2d::Point& c) { return st.splittable(side, c); };
+      auto valid = [&](const refine2d::Point& c) { return refine2d::splittable(st, side, c); };
       if (st.budget_left() && st.is_violated(side) &&
           refine2d::pick_point(side.s->point(), side.e->point(), 0.5, valid, p))
-        st.split(side, p);
+        refine2d::split(st, side, p);
     }
     run();
   }
 
   Refine2DResult r;
-  r.mesh = cdt::to_mesh(st.cdt, options.threads);
+  r.mesh = cdt::to_mesh(st.cdt(), options.threads);
   // The exact certificate of the mesh as returned: the obtuse sides of boundary edges and of interfaces (each side
   // of a constrained segment or region jump checked on its own).
   r.obtuse_boundary_sides = count_obtuse_boundary_sides(r.mesh, options.threads);
-  r.steiner_points = st.placed;
+  r.steiner_points = st.placed();
   r.max_steiner = budget;
-  for (const auto& e : st.edges) r.lower_bound += e.lower_bound;
-  r.edges = st.edges;
+  for (const auto& e : st.edges()) r.lower_bound += e.lower_bound;
+  r.edges = st.edges();
+  r.max_steiner_offset = max_steiner_offset(r.mesh, st);
   r.diagnosis = refine2d::diagnose(st);
   r.status = r.obtuse_boundary_sides == 0 ? RefineStatus::Converged
              : st.budget_left()                 ? RefineStatus::Stalled
                                                 : RefineStatus::BudgetExhausted;
   if (r.status == RefineStatus::Converged && r.steiner_points == r.lower_bound)
     r.optimal = 1;
-  else if (r.status == RefineStatus::Converged && options.strategy == RefineStrategy::Greedy && st.convex_polygon &&
-           !st.fallback_used)
+  else if (r.status == RefineStatus::Converged && options.strategy == RefineStrategy::Greedy && st.convex_polygon() &&
+           !st.fallback_used())
     r.optimal = 1;  // Theorem 3
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

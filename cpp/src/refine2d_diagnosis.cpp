@@ -1,4 +1,4 @@
-// The diagnosis of a 2D refinement (issue 4): which junctions and input angles drew the Steiner points, and how
+// The diagnosis of a 2D refinement: which junctions and input angles drew the Steiner points, and how
 // far one initial violation propagated.
 #include "refine2d_diagnosis.h"
 
@@ -45,15 +45,15 @@ void keep_top(std::vector<T>& rows) {
 }  // namespace
 
 Refine2DDiagnosis diagnose(const State& st) {
-  const auto& pts = st.domain.points;
-  const int n = st.n_input;
+  const auto& pts = st.domain().points;
+  const int n = st.n_input();
   // Input constraints per input vertex (the refined edges, plus hull edges when the hull is the boundary): the
   // other ends of v's constraints are around[start[v], start[v + 1]).
-  std::vector<int> start(n + 1, 0), around(2 * st.edges.size());
-  for (const auto& e : st.edges) ++start[e.edge[0] + 1], ++start[e.edge[1] + 1];
+  std::vector<int> start(n + 1, 0), around(2 * st.edges().size());
+  for (const auto& e : st.edges()) ++start[e.edge[0] + 1], ++start[e.edge[1] + 1];
   for (int v = 0; v < n; ++v) start[v + 1] += start[v];
   std::vector<int> next(start.begin(), start.end() - 1);
-  for (const auto& e : st.edges) around[next[e.edge[0]]++] = e.edge[1], around[next[e.edge[1]]++] = e.edge[0];
+  for (const auto& e : st.edges()) around[next[e.edge[0]]++] = e.edge[1], around[next[e.edge[1]]++] = e.edge[0];
   // The constraint at v closest in angle to v -> a, and that angle.
   auto neighbour = [&](int v, int a) {
     std::pair<double, int> best{360.0, -1};
@@ -74,12 +74,12 @@ Refine2DDiagnosis diagnose(const State& st) {
   std::map<std::pair<int, int>, InputAngleStats> angles;  // (vertex, a) -> stats
   std::map<int, std::set<int>> edges_of_cause;
   std::map<int, long long> splits_of_cause;
-  const CDT& t = st.cdt;
+  const CDT& t = st.cdt();
   for (auto v = t.finite_vertices_begin(); v != t.finite_vertices_end(); ++v) {
     int idx = v->info();
     if (idx < n) continue;
     int k = st.steiner_edge(idx);
-    auto [a, b] = st.edges[k].edge;
+    auto [a, b] = st.edges()[k].edge;
     const Point2 p = cdt::from_cgal(v->point());
     auto d2 = [&](int i) { return std::hypot(pts[i].x - p.x, pts[i].y - p.y); };
     int near = d2(a) <= d2(b) ? a : b, far = near == a ? b : a;
@@ -89,7 +89,7 @@ Refine2DDiagnosis diagnose(const State& st) {
       auto& row = angles[{near, far}];
       row = {near, far, other, deg, row.steiner_points + 1};
     }
-    int cause = st.propagation.steiner_cause(idx - n);
+    int cause = st.propagation().steiner_cause(idx - n);
     if (cause >= 0) {
       edges_of_cause[cause].insert(k);
       ++splits_of_cause[cause];
@@ -100,7 +100,7 @@ Refine2DDiagnosis diagnose(const State& st) {
   keep_top(d.junctions);
   for (auto& [key, row] : angles) d.angles.push_back(row);
   keep_top(d.angles);
-  d.initial_violations = st.propagation.causes();
+  d.initial_violations = st.propagation().causes();
   for (auto& [c, e] : edges_of_cause) d.propagation_depth = std::max(d.propagation_depth, static_cast<int>(e.size()));
   for (auto& [c, k] : splits_of_cause) d.propagation_splits = std::max(d.propagation_splits, k);
   return d;

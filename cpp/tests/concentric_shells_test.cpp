@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "refine2d_state_fixtures.h"
+
 namespace nonobtuse::refine2d {
 namespace {
 
@@ -23,11 +25,7 @@ TEST(ConcentricShells, AcuteJunctionNeedsAnInteriorConstraint) {
   d.points = {{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {0, 0}, {6, 0}, {5.9088, 1.0419}};
   d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {4, 6}};
   State st(d, 10);
-  auto vh = [&](int i) {
-    for (auto v = st.cdt.finite_vertices_begin(); v != st.cdt.finite_vertices_end(); ++v)
-      if (v->info() == i) return Vertex_handle(v);
-    throw InternalError("no vertex");
-  };
+  auto vh = [&](int i) { return testing::vertex(st, i); };
   EXPECT_TRUE(is_acute_junction(st, vh(4), vh(5)));
   EXPECT_TRUE(is_acute_junction(st, vh(4), vh(6)));
   EXPECT_FALSE(is_acute_junction(st, vh(5), vh(4)));

@@ -48,9 +48,7 @@ TEST(GreedyRefine, Figure4Walk) {
 // so sensitive greedy puts the point at the interval's start, x = 90: [0,90] and [90,100] both see c at a
 // right angle. 1 point, the lower bound.
 TEST(GreedyRefine, Figure5AvoidsForbiddenInterval) {
-  Domain2 d;
-  d.points = {{0, 0}, {100, 0}, {90, 20}, {0, 60}};
-  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  Domain2 d = testing::figure5_quadrilateral();
   Refine2DResult g = run(d, RefineStrategy::Greedy);
   ASSERT_EQ(g.steiner_points, 1);
   EXPECT_EQ(g.mesh.points[4].x, 90.0);

@@ -21,9 +21,7 @@ TEST(ProjectFlip, Figure3TwoPoints) {
 // Figure 5's quadrilateral: the triangle on (a, d) is (a, d, c), obtuse at c = (90, 20); its foot (90, 0) is the
 // one point, as for greedy (the foot of an apex is never inside the other edges' disks of that triangle).
 TEST(ProjectFlip, Figure5FootOfTheApex) {
-  Domain2 d;
-  d.points = {{0, 0}, {100, 0}, {90, 20}, {0, 60}};
-  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  Domain2 d = testing::figure5_quadrilateral();
   Refine2DResult r = run(d, RefineStrategy::ProjectFlip);
   ASSERT_EQ(r.steiner_points, 1);
   EXPECT_EQ(r.mesh.points[4].x, 90.0);

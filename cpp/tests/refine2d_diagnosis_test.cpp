@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "nonobtuse/refine2d.h"
+#include "refine2d_fixtures.h"
 
 namespace nonobtuse {
 namespace {
@@ -17,7 +17,7 @@ Domain2 rectangle_with_interface() {
 }
 
 TEST(Refine2dDiagnosis, InterfaceRefinedOnBothSidesWithOneCause) {
-  Refine2DResult r = refine(rectangle_with_interface());
+  Refine2DResult r = testing::run(rectangle_with_interface(), RefineStrategy::Greedy);
   EXPECT_EQ(r.status, RefineStatus::Converged);
   EXPECT_EQ(r.obtuse_boundary_sides, 0);
   EXPECT_EQ(r.steiner_points, 2);
@@ -36,12 +36,6 @@ TEST(Refine2dDiagnosis, InterfaceRefinedOnBothSidesWithOneCause) {
     EXPECT_NEAR(j.min_angle_degrees, 90.0, 1e-9);
     EXPECT_EQ(j.steiner_points, 1);
   }
-}
-
-// CGAL's conforming Gabriel refinement also splits the interface (and never fewer than our 2 points there).
-TEST(PeerConformingGabriel, SplitsTheInterface) {
-  Domain2 d = rectangle_with_interface();
-  EXPECT_GE(conforming_gabriel_steiner_points(d), 2);
 }
 
 }  // namespace

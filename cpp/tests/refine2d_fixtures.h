@@ -27,10 +27,25 @@ inline Domain2 half_disk(const std::vector<Point2>& inner) {
 }
 
 // Refines and, when converged, expects the exact certificate to be clean.
+// The per-split invariants (Refine2DOptions::check_every_split) are checked on every run.
 inline Refine2DResult run(const Domain2& d, RefineStrategy s, long long budget = -1) {
-  Refine2DResult r = refine(d, {s, budget});
+  Refine2DOptions options;
+  options.strategy = s;
+  options.max_steiner = budget;
+  options.check_every_split = true;
+  Refine2DResult r = refine(d, options);
   if (r.status == RefineStatus::Converged) EXPECT_EQ(r.obtuse_boundary_sides, 0);
   return r;
+}
+
+// Figure 5 of the paper: the convex quadrilateral a(0,0), d(100,0), c(90,20), b(0,60), counter-clockwise; only c
+// encroaches (a, d) ((90 - 50)^2 + 20^2 = 2000 < 2500), and the disk of (d, c) (centre (95, 10), r^2 125) meets
+// (a, d) in x in (90, 100) (Thales: 90 is the foot of c).
+inline Domain2 figure5_quadrilateral() {
+  Domain2 d;
+  d.points = {{0, 0}, {100, 0}, {90, 20}, {0, 60}};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  return d;
 }
 
 }  // namespace nonobtuse::testing

@@ -30,7 +30,9 @@ class RefineResult:
     stats:  ``status``, ``strategy``, ``steiner_points`` (int), ``lower_bound`` (int), ``optimal`` (True,
             False or None when unknown), ``seconds`` (float), ``obtuse_boundary_sides`` (int, the exact
             certificate of ``mesh``: constraint sides whose triangle is obtuse opposite them, 0 when
-            converged), ``max_steiner`` (int, the budget used), ``edges``: one dict per input boundary edge
+            converged), ``max_steiner`` (int, the budget used), ``max_steiner_offset`` (float: the largest
+            distance of a Steiner point off its input segment over the segment's length; 0 when every point
+            is exactly on its segment), ``edges``: one dict per input boundary edge
             ``{"edge": [a, b], "steiner_points": k, "lower_bound": l}`` (a, b input point indices, the
             domain on the left of a -> b; an interface or dangling segment, with the domain on both sides,
             once as a < b), ``diagnosis``: ``junctions`` (at most 10 dicts ``vertex, constraints,
@@ -161,6 +163,7 @@ def refine(
         "optimal": r.optimal,
         "seconds": r.seconds,
         "obtuse_boundary_sides": r.obtuse_boundary_sides,
+        "max_steiner_offset": r.max_steiner_offset,
         "edges": _edge_stats(r.edges),
         "diagnosis": _diagnosis(r.diagnosis),
     }

@@ -23,6 +23,10 @@ struct Refine2DOptions {
   // Threads for the passes over the whole mesh of large inputs (the lower bound and the certificate): 1, or 2 and
   // more (two are used). The result is the same for any value.
   int threads = 2;
+  // After every split, check that the triangulation is valid and constrained Delaunay everywhere and that the
+  // maintained domain marks equal a recomputation (InternalError otherwise): O(n) per split, for tests (debug
+  // builds always check).
+  bool check_every_split = false;
 };
 
 // Per boundary edge of the input: a constrained edge of the input's CDT with the domain on one side (a boundary
@@ -43,6 +47,9 @@ struct Refine2DResult {
   // Exact certificate of `mesh` as returned: constraint sides (each side of an interface or dangling segment on
   // its own) whose triangle is obtuse opposite the constrained edge. 0 whenever status == Converged.
   long long obtuse_boundary_sides = 0;
+  // The largest distance of a Steiner point off its input segment, over the segment's length (0 when every point
+  // lies exactly on its segment; rounding to doubles far from the origin moves points off). Float, for reporting.
+  double max_steiner_offset = 0.0;
   std::vector<BoundaryEdgeStats> edges;
   Refine2DDiagnosis diagnosis;  // where the Steiner points went (junctions, input angles, propagation)
   double seconds = 0.0;

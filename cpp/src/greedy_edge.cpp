@@ -1,0 +1,90 @@
+// Single-edge Greedy-Refine (Theorem 2): the greedy end, subsegment emptiness and the greedy count.
+#include "greedy_edge.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "split_point.h"
+
+namespace nonobtuse::refine2d {
+
+double greedy_parameter(const State& st, const Side& start, const Point& s, const Point& e,
+                        const std::vector<Vertex_handle>& q, Sight sight, Vertex_handle* blocker) {
+  double dx = e.x() - s.x(), dy = e.y() - s.y();
+  std::vector<std::pair<double, Vertex_handle>> order;
+  for (Vertex_handle v : q) {
+    double wx = v->point().x() - s.x(), wy = v->point().y() - s.y();
+    double den = wx * dx + wy * dy;  // > |w|^2 > 0 for an encroacher: (q - s).(e - s) = |q - s|^2 - (s - q).(e - q)
+    if (den > 0) order.emplace_back((wx * wx + wy * wy) / den, v);
+  }
+  std::sort(order.begin(), order.end(),
+            [](const auto& a, const auto& b) { return std::make_pair(a.first, a.second->info()) <
+                                                      std::make_pair(b.first, b.second->info()); });
+  // q blocks at the first t >= t_q where [s, s + t d] sees it (paper 4.4: only visible vertices encroach).
+  // Subsegments and their disks grow with t, so seeing (either sight) is monotone in t: bisect when q is hidden at
+  // t_q (behind a reflex spike, it may come into view later).
+  auto seen = [&](double t, Vertex_handle v) { return sees(st, start, s, Point(s.x() + t * dx, s.y() + t * dy), v, sight); };
+  double best = 1.0;
+  for (const auto& [tq, v] : order) {
+    if (tq >= best) break;
+    double t = tq;
+    if (!seen(tq, v)) {
+      if (!seen(best, v)) continue;
+      double lo = tq, hi = best;  // hidden at lo, seen at hi
+      for (int k = 0; k < 48 && lo < hi * (1 - 0x1p-40); ++k) (seen(0.5 * (lo + hi), v) ? hi : lo) = 0.5 * (lo + hi);
+      t = hi;
+    }
+    if (t < best) {
+      best = t;
+      if (blocker) *blocker = v;
+    }
+  }
+  return best;
+}
+
+void keep_encroaching(const Point& s, const Point& e, std::vector<Vertex_handle>& q) {
+  q.erase(std::remove_if(q.begin(), q.end(), [&](Vertex_handle v) { return !inside_diametral_disk(s, e, v->point()); }),
+          q.end());
+}
+
+bool subsegment_is_empty(const State& st, const Side& start, const Point& s, const Point& p,
+                         const std::vector<Vertex_handle>& q, Sight sight) {
+  std::vector<Vertex_handle> inside;
+  for (Vertex_handle v : q)
+    if (inside_diametral_disk(s, p, v->point())) inside.push_back(v);
+  if (inside.empty()) return true;
+  if (sight.obstacles != nullptr)
+    return std::none_of(inside.begin(), inside.end(), [&](Vertex_handle v) { return sees(st, start, s, p, v, sight); });
+  // Reach: one walk for all of them (v is reachable iff some face of the whole walk has it).
+  std::sort(inside.begin(), inside.end());
+  bool seen = false;
+  walk_disk(st, st.domain_faces(start), s, p, [&](Face_handle f) {
+    for (int i = 0; i < 3; ++i) seen = seen || std::binary_search(inside.begin(), inside.end(), f->vertex(i));
+    return seen;
+  });
+  return !seen;
+}
+
+int greedy_count(const State& st, const Side& side, const DiskWalk& walk) {
+  std::vector<Vertex_handle> q = walk.encroachers;
+  const Sight sight{&walk.obstacles};
+  Point x = side.s->point();
+  const Point& e = side.e->point();
+  int count = 0;
+  // Each step places a point strictly between x and e; the count of the exact greedy is at most |q| (projecting
+  // every vertex works), the bound below only guards against rounding making steps degenerate.
+  for (std::size_t step = 0; step < 2 * q.size() + 8; ++step) {
+    keep_encroaching(x, e, q);
+    if (q.empty()) break;
+    double t = greedy_parameter(st, side, x, e, q, sight);
+    if (t >= 1) break;
+    Point p;
+    auto empty = [&](const Point& c) { return subsegment_is_empty(st, side, x, c, q, sight); };
+    if (!pick_point_at_or_before(x, e, t, empty, p)) break;
+    x = p;
+    ++count;
+  }
+  return count;
+}
+
+}  // namespace nonobtuse::refine2d

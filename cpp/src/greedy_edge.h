@@ -1,0 +1,31 @@
+// Internal: Greedy-Refine of a single edge (Theorem 2 of the paper): from one end, the longest subsegment whose
+// open half-disk holds no vertex it sees; its closed form, the emptiness test and the greedy count.
+#pragma once
+#include <vector>
+
+#include "visibility.h"
+
+namespace nonobtuse::refine2d {
+
+// The greedy end from s toward e (s on the side `start`, whose left face touches [s, e]): the smallest
+// t = |q - s|^2 / ((q - s) . d), d = e - s, over the vertices q of `q` that [s, s + t d] would see (`sight`;
+// paper 4.4: only visible vertices encroach). At that t, q reaches the circle of [s, s + t d] (paper-notes:
+// (s - q).(x - q) >= 0 iff t (q - s).d <= |q - s|^2). 1 when nothing blocks; `blocker` receives the vertex.
+// Cost: one walk per candidate tried, in increasing t (usually one).
+double greedy_parameter(const State& st, const Side& start, const Point& s, const Point& e,
+                        const std::vector<Vertex_handle>& q, Sight sight, Vertex_handle* blocker = nullptr);
+
+// True when no vertex of q that [s, p] would see (`sight`) encroaches it (exact encroachment, on either side: q
+// only holds vertices of domain sides).
+bool subsegment_is_empty(const State& st, const Side& start, const Point& s, const Point& p,
+                         const std::vector<Vertex_handle>& q, Sight sight);
+
+// Single-edge Greedy-Refine (Theorem 2) of `side` against the encroachers of its disk walk only, without
+// inserting anything: the number of Steiner points it places, each rounded as the refinement rounds them; a
+// vertex counts against a subsegment only when the subsegment sees it (Sight with the walk's obstacles).
+int greedy_count(const State& st, const Side& side, const DiskWalk& walk);
+
+// Keeps the vertices of q still encroaching [s, e] (disks of subsegments that share e shrink as s advances).
+void keep_encroaching(const Point& s, const Point& e, std::vector<Vertex_handle>& q);
+
+}  // namespace nonobtuse::refine2d

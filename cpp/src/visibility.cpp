@@ -1,0 +1,87 @@
+// Visibility from a subsegment: the walk over its diametral disk and exact shading by obstacles.
+#include "visibility.h"
+
+#include <algorithm>
+#include <tuple>
+
+namespace nonobtuse::refine2d {
+
+DiskWalk walk_diametral_disk(const State& st, const Side& side, int lane) {
+  DiskWalk out;
+  const Point &s = side.s->point(), &e = side.e->point();
+  const bool left = st.is_boundary_side(side), right = st.is_boundary_side({side.e, side.s});
+  auto on_domain_side = [&](const Point& q) { return (left && encroaches(s, e, q)) || (right && encroaches(e, s, q)); };
+  std::vector<Vertex_handle> reached;  // the vertices of the faces reached (walks skip infinite faces), once each
+  WalkLane& scratch = st.lane(lane);
+  const unsigned stamp = ++scratch.vertex_lists;
+  std::vector<unsigned>& listed = scratch.vertex_stamp;
+  walk_disk(st, st.domain_faces(side), s, e, [&](Face_handle f) {
+    for (int i = 0; i < 3; ++i) {
+      const auto index = static_cast<std::size_t>(f->vertex(i)->info());
+      if (index >= listed.size()) listed.resize(index + 1, 0);
+      if (listed[index] != stamp) {
+        listed[index] = stamp;
+        reached.push_back(f->vertex(i));
+      }
+      Vertex_handle u = f->vertex(CDT::ccw(i)), w = f->vertex(CDT::cw(i));
+      if (f->is_constrained(i) && !((u == side.s && w == side.e) || (u == side.e && w == side.s)))
+        out.obstacles.emplace_back(u->point(), w->point());
+    }
+    return false;
+  }, lane);
+  for (Vertex_handle v : reached)
+    if (v != side.s && v != side.e && on_domain_side(v->point())) out.encroachers.push_back(v);
+  // Deterministic order (the walk order depends on face handles): by vertex index.
+  std::sort(out.encroachers.begin(), out.encroachers.end(),
+            [](Vertex_handle a, Vertex_handle b) { return a->info() < b->info(); });
+  return out;
+}
+
+bool sees(const State& st, const Side& start, const Point& a, const Point& b, Vertex_handle v, Sight sight) {
+  if (sight.obstacles != nullptr) return !covered_from(v->point(), a, b, *sight.obstacles);
+  bool found = false;
+  walk_disk(st, st.domain_faces(start), a, b, [&](Face_handle f) { return found = f->has_vertex(v); });
+  return found;
+}
+
+// The closed angular intervals the obstacles shade, seen from v, cover the open wedge from a to b. An obstacle
+// shades the directions of its part in front of (a, b), inside the triangle (v, a, b): a constraint meets the line
+// ab inside [a, b] at most at a or b (constraints do not cross the edge; a or b may be its vertices), so one ending
+// at a or b is in front iff its other end is strictly on v's side, and any other iff it meets the triangle; then
+// its own angular span clipped to the wedge is in front.
+bool covered_from(const Point& v, const Point& a, const Point& b, const std::vector<Segment2>& obstacles) {
+  const bool ccw = CGAL::orientation(v, a, b) == CGAL::LEFT_TURN;
+  const Point &lo = ccw ? a : b, &hi = ccw ? b : a;  // the wedge, counter-clockwise from lo to hi (< 180 degrees)
+  // Counter-clockwise order of directions from v; valid for directions less than 180 degrees apart, which holds
+  // for every pair compared below (each obstacle kept meets the wedge and spans less than 180 degrees).
+  auto before = [&v](const Point& p, const Point& q) { return CGAL::orientation(v, p, q) == CGAL::LEFT_TURN; };
+  const K::Triangle_2 tri(v, a, b);
+  std::vector<Segment2> shades;
+  const auto v_side = CGAL::orientation(a, b, v);
+  auto in_front = [&](const Point& c1, const Point& c2) {
+    if (c1 == a || c1 == b) return CGAL::orientation(a, b, c2) == v_side;
+    if (c2 == a || c2 == b) return CGAL::orientation(a, b, c1) == v_side;
+    // Both ends strictly beyond one side's line: it misses the triangle (a cheap exact test first).
+    for (const auto& [p, q, r] : {std::tie(v, a, b), std::tie(a, b, v), std::tie(b, v, a)}) {
+      const auto inside = CGAL::orientation(p, q, r);
+      if (CGAL::orientation(p, q, c1) == -inside && CGAL::orientation(p, q, c2) == -inside) return false;
+    }
+    return CGAL::do_intersect(K::Segment_2(c1, c2), tri);
+  };
+  for (const auto& [c1, c2] : obstacles) {
+    auto o = CGAL::orientation(v, c1, c2);
+    if (c1 == v || c2 == v || o == CGAL::COLLINEAR || !in_front(c1, c2)) continue;
+    const Point &from = o == CGAL::LEFT_TURN ? c1 : c2, &to = o == CGAL::LEFT_TURN ? c2 : c1;
+    const Point &first = before(from, lo) ? lo : from, &last = before(hi, to) ? hi : to;
+    if (before(first, last)) shades.emplace_back(first, last);
+  }
+  std::sort(shades.begin(), shades.end(), [&](const auto& x, const auto& y) { return before(x.first, y.first); });
+  const Point* reach = &lo;  // the directions from lo up to *reach are shaded (none strictly inside yet)
+  for (const auto& [first, last] : shades) {
+    if (before(*reach, first)) return false;  // an open gap of directions between *reach and first
+    if (before(*reach, last)) reach = &last;
+  }
+  return !before(*reach, hi);
+}
+
+}  // namespace nonobtuse::refine2d

@@ -1,0 +1,68 @@
+// Visibility from a subsegment: the walk over its diametral disk and exact shading (covered_from).
+#include "visibility.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "refine2d_fixtures.h"
+#include "refine2d_state_fixtures.h"
+
+namespace nonobtuse::refine2d {
+namespace {
+
+// covered_from, hand-worked: v = (0, 4) above the open segment (-2, 0)-(2, 0); the sight line to (x, 0) crosses
+// y = 2 at x / 2 and y = 1 at 3 x / 4. (-3, 2)-(3, 2) blocks every one; (-3, 2)-(0.9, 2) leaves 1.8 < x < 2 open;
+// (0.5, 1)-(3, 1) blocks x >= 2/3 and closes that gap. Behind the segment, (-3, -1)-(3, -1) shades nothing, nor
+// does one ending at v. From the end a = (-2, 0): to (-1, -3), behind, it shades nothing (counted, it would
+// shade x <= -4/7 and close the gap x < -1 left by (-0.5, 2)-(3, 2)); to (3, 3), in front, every line crosses it.
+TEST(Visibility, CoveredFromShadesOnlyInFront) {
+  const Point v(0, 4), a(-2, 0), b(2, 0);
+  EXPECT_FALSE(covered_from(v, a, b, {}));
+  EXPECT_TRUE(covered_from(v, a, b, {{Point(-3, 2), Point(3, 2)}}));
+  EXPECT_FALSE(covered_from(v, a, b, {{Point(-3, 2), Point(0.9, 2)}}));
+  EXPECT_TRUE(covered_from(v, a, b, {{Point(-3, 2), Point(0.9, 2)}, {Point(0.5, 1), Point(3, 1)}}));
+  EXPECT_FALSE(covered_from(v, a, b, {{Point(-3, -1), Point(3, -1)}, {v, Point(5, 0)}}));
+  // Ending at the segment's end a: shades only when it enters v's side.
+  EXPECT_FALSE(covered_from(v, a, b, {{a, Point(-1, -3)}, {Point(-0.5, 2), Point(3, 2)}}));
+  EXPECT_TRUE(covered_from(v, a, b, {{a, Point(3, 3)}}));
+}
+
+// Figure 3 (greedy_refine_test.cpp): the walk over the disk of e = (0,0) -> (100,0) finds exactly the two inner
+// points q1 (index 201) and q2 (202), by index; the arc vertices lie outside the disk (radius 50 (1 + 1e-6)).
+// Both are seen from e (nothing between), so sees holds for either sight.
+TEST(Visibility, DiskWalkFindsTheEncroachersOfFigure3) {
+  State st(testing::half_disk({{17, 15}, {39, 30.7}}), 10);
+  auto v = [&](int i) { return testing::vertex(st, i); };
+  const Side e{v(200), v(0)};
+  DiskWalk w = walk_diametral_disk(st, e);
+  ASSERT_EQ(w.encroachers.size(), 2u);
+  EXPECT_EQ(w.encroachers[0], v(201));
+  EXPECT_EQ(w.encroachers[1], v(202));
+  for (Vertex_handle q : w.encroachers) {
+    EXPECT_TRUE(sees(st, e, e.s->point(), e.e->point(), q, Sight{}));
+    EXPECT_TRUE(sees(st, e, e.s->point(), e.e->point(), q, Sight{&w.obstacles}));
+  }
+  EXPECT_TRUE(walk_diametral_disk(st, {v(0), v(1)}).encroachers.empty());  // an arc edge: a tiny empty disk
+}
+
+// A dangling segment hides a vertex: the square [0, 10]^2 with the dangling segment (2, 3)-(8, 3) and the point
+// (5, 4) above it. (5, 4) is inside the disk of the bottom edge ((5 - 5)^2 + 4^2 < 25), but the sight line to
+// (x, 0) crosses y = 3 at 5 + (x - 5) / 4, inside [2, 8] for every x in (0, 10): hidden. The walk may reach it
+// around the segment's free ends (both inside the disk); exact sight, against the obstacles the walk met, does not
+// count it.
+TEST(Visibility, ADanglingSegmentHidesAVertex) {
+  Domain2 d;
+  d.points = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {2, 3}, {8, 3}, {5, 4}};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}};
+  State st(d, 10);
+  auto v = [&](int i) { return testing::vertex(st, i); };
+  const Side bottom{v(0), v(1)};
+  DiskWalk w = walk_diametral_disk(st, bottom);
+  EXPECT_FALSE(sees(st, bottom, Point(0, 0), Point(10, 0), v(6), Sight{&w.obstacles}));
+  EXPECT_FALSE(covered_from(Point(5, 4), Point(0, 0), Point(10, 0), {}));
+  EXPECT_TRUE(covered_from(Point(5, 4), Point(0, 0), Point(10, 0), {{Point(2, 3), Point(8, 3)}}));
+}
+
+}  // namespace
+}  // namespace nonobtuse::refine2d
