@@ -58,6 +58,9 @@ py::dict result_to_dict(const Refine3Result& r) {
   d["status"] = to_string(r.status);
   d["steiner_on_segments"] = r.steiner_on_segments;
   d["greedy_splits"] = r.greedy_splits;
+  d["strategy"] = r.strategy;
+  d["other_attempt"] = r.other_attempt;
+  d["protecting_balls"] = r.protecting_balls;
   d["steiner_on_facets"] = r.steiner_on_facets;
   d["seconds"] = r.seconds;
   d["smallest_subsegment"] = r.smallest_subsegment;
@@ -90,7 +93,7 @@ void bind_gabriel3d(py::module_& m) {
       "refine_gabriel",
       [](const DoubleArray& points, const IndexArray& triangles, const IndexArray& facet_ids,
          const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions, long max_steiner,
-         double min_length, double time_limit, const std::string& split, long progress_every,
+         double min_length, double time_limit, const std::string& split, bool protected_fallback, long progress_every,
          std::function<void(long, long, long, double)> progress) {
         PLC3 plc;
         plc.points = to_points3(points, "points");
@@ -104,14 +107,18 @@ void bind_gabriel3d(py::module_& m) {
         for (py::ssize_t i = 0; regions.ndim() == 2 && i < regions.shape(0); ++i)
           plc.regions.push_back({r[4 * i], r[4 * i + 1], r[4 * i + 2], r[4 * i + 3]});
         const std::map<std::string, SplitRule> rules = {
-            {"shells", SplitRule::Shells}, {"midpoint", SplitRule::Midpoint}, {"greedy", SplitRule::Greedy}};
+            {"shells", SplitRule::Shells},
+            {"midpoint", SplitRule::Midpoint},
+            {"greedy", SplitRule::Greedy},
+            {"protected", SplitRule::Protected}};
         if (!rules.count(split))
-          throw InvalidInput("split must be 'shells', 'midpoint' or 'greedy', not '" + split + "'");
+          throw InvalidInput("split must be 'shells', 'midpoint', 'greedy' or 'protected', not '" + split + "'");
         Refine3Options o;
         o.max_steiner = max_steiner;
         o.min_length = min_length;
         o.time_limit = time_limit;
         o.split = rules.at(split);
+        o.protected_fallback = protected_fallback;
         o.progress_every = progress_every;
         if (progress)
           o.progress = [progress](const Refine3Progress& p) {
@@ -127,7 +134,7 @@ void bind_gabriel3d(py::module_& m) {
       },
       py::arg("points"), py::arg("triangles"), py::arg("facet_ids"), py::arg("segments"), py::arg("holes"),
       py::arg("regions"), py::arg("max_steiner"), py::arg("min_length"), py::arg("time_limit"), py::arg("split"),
-      py::arg("progress_every"), py::arg("progress"),
+      py::arg("protected_fallback"), py::arg("progress_every"), py::arg("progress"),
       "Gabriel refinement of a PLC. progress: None or f(steiner, encroached_segments, encroached_facets, seconds).\n"
       "Returns a dict: points, tets, boundary_faces, face_markers, segments, tet_regions, status, steiner counts,\n"
       "seconds, smallest_subsegment, certificate (as check_gabriel), diagnosis.");

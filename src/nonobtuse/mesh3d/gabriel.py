@@ -155,7 +155,8 @@ def refine_gabriel(
     max_steiner: int | None = None,
     min_length: float | None = None,
     time_limit: float = 60.0,
-    split: Literal["shells", "midpoint", "greedy"] = "shells",
+    split: Literal["shells", "midpoint", "greedy", "protected"] = "shells",
+    protected_fallback: bool = True,
     progress: Callable[[int, int, int, float], None] | bool | None = None,
     progress_every: int = 1000,
 ) -> Gabriel3DResult:
@@ -170,16 +171,24 @@ def refine_gabriel(
     segments, or where the greedy piece or the rest would be under 1/4 of the subsegment;
     stats["greedy_splits"] counts the greedy points), then encroached subfacets at their circumcenter, unless
     it encroaches a subsegment of the facet or lies outside the facet, in which case that subsegment is
-    split. The facets' boundary edges
+    split. When that pass does not converge (and time_limit has time left), the protected strategy runs from
+    the input with the same budget, and its result is returned if it converged: protecting balls at every apex
+    vertex (an input segment leaning over a facet through its end at less than 90 degrees; radius a power of
+    two <= 1/4 of the vertex's local feature size), each segment through an apex split on its ball's sphere,
+    and subfacet split points strictly inside a ball moved to its sphere, which ends the cascade down small
+    segment-facet angles. split="protected" runs only that strategy; protected_fallback=False returns the
+    first pass as it ended. stats["strategy"] names the strategy of the returned mesh ("shells", ..., or
+    "shells+protected" after a fallback), stats["other_attempt"] the status and stop reason of the attempt not
+    returned ("" when one ran), stats["protecting_balls"] the apices protected. The facets' boundary edges
     count as segments. Stops at max_steiner (default_steiner_budget(n) when None: 10 n + 10,000 for n input
     points; real CAD parts need about 2-5 n), time_limit (seconds), min_length (no split may create a shorter
     edge; default_min_length(points) when None: 1e-6 of the bounding box diagonal; 0 turns it off) or when
-    stalled; the status says which. time_limit bounds the refinement and the exact check of
-    the result (not the final Delaunay tetrahedralization, O(n log n)); rows the check did not reach are
-    counted in stats["unchecked_faces"] / ["unchecked_segments"].
-    progress: True prints a line to stderr every progress_every insertions and after every exact check of the
-    Delaunay mesh (once per repair round); a callable receives (steiner_points, encroached_subsegments,
-    encroached_subfacets, seconds), the counts of the last scan or check.
+    stalled; the status says which. time_limit bounds the refinement and the exact check of the result (not
+    the final Delaunay tetrahedralization, O(n log n)); rows the check did not reach are counted in
+    stats["unchecked_faces"] / ["unchecked_segments"]. progress: True prints a line to stderr every
+    progress_every insertions and after every exact check of the Delaunay mesh (once per repair round); a
+    callable receives (steiner_points, encroached_subsegments, encroached_subfacets, seconds), the counts of
+    the last scan or check.
     Guarantee: status == "converged" iff the exact check of the returned mesh passes. Deterministic.
     Cost: each round rescans all subsegments and subfacets (O(s log n)); meant for PLCs up to ~1e5 facets.
     Raises InvalidInputError for malformed PLCs (indices, duplicate points, degenerate or crossing facet
@@ -198,6 +207,7 @@ def refine_gabriel(
         float(min_length),
         float(time_limit),
         split,
+        bool(protected_fallback),
         int(progress_every),
         callback,
     )
@@ -208,6 +218,9 @@ def refine_gabriel(
         "steiner_points": d["steiner_on_segments"] + d["steiner_on_facets"],
         "steiner_on_segments": d["steiner_on_segments"],
         "greedy_splits": d["greedy_splits"],
+        "strategy": d["strategy"],
+        "other_attempt": d["other_attempt"],
+        "protecting_balls": d["protecting_balls"],
         "steiner_on_facets": d["steiner_on_facets"],
         "encroached_facets": len(report.faces),
         "encroached_segments": len(report.segments),
