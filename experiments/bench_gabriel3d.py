@@ -5,15 +5,18 @@ For every input of ../shared/data/3d (or the paths given) and every method, the 
 diametral sphere) is run on the mesh produced:
 
 - tetgen-pq: TetGen ``-pq1.414`` (quality; splits the boundary as it likes);
+- tetgen-pD: TetGen ``-pD`` (conforming Delaunay);
 - tetgen-pY: TetGen ``-pY`` (keeps the boundary: no boundary Steiner point);
 - ftetwild:  fTetWild (remeshes the surface within an envelope);
-- ours:      refine_gabriel (boundary Steiner points until no boundary facet or segment is encroached),
-             with its default split rule (concentric shells);
-- ours-greedy: the same with split="greedy" (Greedy-Refine along subsegments; shells at acute input vertices).
+- ours:      refine_gabriel with its defaults (boundary Steiner points until no boundary facet or segment is
+             encroached): concentric shells, then the protected strategy where shells does not converge;
+- ours-greedy: the same with split="greedy" (Greedy-Refine along subsegments; shells at acute input vertices);
+- ours-protected: split="protected" (protecting balls at apex vertices from the start).
 
-Columns: input, method, status, points, boundary_steiner (boundary-face vertices that are not input points),
-steiner (all output points that are not input points), boundary_faces, encroached_facets, encroached_segments
-("n/a" for fTetWild, whose output does not mark segments), seconds. CSV to
+Columns: input, method, status, strategy (ours: the strategy of the returned mesh, e.g. "shells+protected"
+after a fallback), points, boundary_steiner (boundary-face vertices that are not input points), steiner (all
+output points that are not input points), boundary_faces, encroached_facets, encroached_segments ("n/a" for
+fTetWild, whose output does not mark segments), seconds. CSV to
 experiments/results/bench_gabriel3d.csv, and a table on stdout.
 
 Run: ``PYTHONPATH=src .venv/bin/python experiments/bench_gabriel3d.py [--quick] [files...]``
@@ -39,7 +42,7 @@ from nonobtuse.mesh3d.load import PLC_SUFFIXES, SURFACE_SUFFIXES
 ROOT = Path(__file__).resolve().parents[1]
 DATA3D = ROOT / ".." / "shared" / "data" / "3d"
 RESULTS = ROOT / "experiments" / "results"
-COLUMNS = ["input", "method", "status", "points", "boundary_steiner", "steiner", "boundary_faces",
+COLUMNS = ["input", "method", "status", "strategy", "points", "boundary_steiner", "steiner", "boundary_faces",
            "encroached_facets", "encroached_segments", "seconds"]
 
 
@@ -71,7 +74,9 @@ def run_ours(name: str, plc, max_steiner: int | None, time_limit: float,
     t0 = time.perf_counter()
     result = refine_gabriel(plc, max_steiner=max_steiner, time_limit=time_limit, split=split)
     method = "ours" if split == "shells" else f"ours-{split}"
-    return measure(name, method, plc, result.mesh, result.status, time.perf_counter() - t0)
+    row = measure(name, method, plc, result.mesh, result.status, time.perf_counter() - t0)
+    row["strategy"] = result.stats["strategy"]
+    return row
 
 
 def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
@@ -83,6 +88,7 @@ def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
     if len(plc.triangles) > args.max_triangles:
         return [{"input": name, "method": "-", "status": f"skipped: {len(plc.triangles)} triangles"}]
     rows = [run_backend(name, plc, "tetgen-pq", "tetgen", switches="pq1.414AQ"),
+            run_backend(name, plc, "tetgen-pD", "tetgen", switches="pDAQ"),
             run_backend(name, plc, "tetgen-pY", "tetgen", switches="pYAQ")]
     if len(plc.triangles) <= args.ftetwild_max_triangles:
         rows.append(run_backend(name, plc, "ftetwild", "ftetwild"))
@@ -90,6 +96,7 @@ def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
         rows.append({"input": name, "method": "ftetwild", "status": "skipped (size)"})
     rows.append(run_ours(name, plc, args.max_steiner, args.time_limit))
     rows.append(run_ours(name, plc, args.max_steiner, args.time_limit, split="greedy"))
+    rows.append(run_ours(name, plc, args.max_steiner, args.time_limit, split="protected"))
     return rows
 
 

@@ -1,8 +1,10 @@
 """Termination map of the 3D Gabriel repair: where does ``refine_gabriel`` stop on small input angles?
 
-For each PLC family of ``experiments.plc_families`` (fan: every k in 3..12), each angle theta and each split
-rule ("midpoint", "shells"), one case runs ``nonobtuse.mesh3d.refine_gabriel`` under the default Steiner
-budget and a time budget, and records its status, Steiner points, smallest subsegment and time.
+For each PLC family of ``experiments.plc_families`` (fan: every k in 3..12), each angle theta and each
+strategy (``STRATEGIES``: the split rules "midpoint" and "shells" alone, the "protected" strategy alone, and
+the "default": shells, then the protected strategy where shells does not converge), one case runs
+``nonobtuse.mesh3d.refine_gabriel`` under the default Steiner budget and a time budget, and records its
+status, Steiner points, smallest subsegment, time and the strategy that produced the result.
 
     python -m experiments.termination_map --quick        # < 2 min on 2 cores
     python -m experiments.termination_map                # theta = 1..10, 12..30 by 2, 35..120 by 5 (hours)
@@ -27,14 +29,21 @@ from experiments.plc_families import FAMILIES, make_plc
 from experiments.plotting import legend, pyplot
 from experiments.sweep import add_sweep_arguments, error_summary, output_stem, sweep_from_args, write_csv
 
-SPLITS = ("midpoint", "shells")
+# Strategy name -> refine_gabriel keyword arguments.
+STRATEGIES = {
+    "midpoint": {"split": "midpoint", "protected_fallback": False},
+    "shells": {"split": "shells", "protected_fallback": False},
+    "protected": {"split": "protected"},
+    "default": {"split": "shells"},
+}
+SPLITS = tuple(STRATEGIES)
 FULL_THETAS = [float(t) for t in [*range(1, 11), *range(12, 31, 2), *range(35, 121, 5)]]  # dense where small
 QUICK_THETAS = [2.0, 10.0, 30.0, 60.0, 90.0]
 FAN_KS_FULL = list(range(3, 13))
 FAN_KS_QUICK = [3, 6, 12]
 BUDGET_SECONDS = {"quick": 3.0, "full": 60.0}  # refine_gabriel time_limit; the case process is killed later
-COLUMNS = ["family", "k", "theta", "split", "status", "steiner_points", "smallest_subsegment", "seconds",
-           "time_limit", "smallest_input_angle", "diagnosis"]
+COLUMNS = ["family", "k", "theta", "split", "status", "strategy", "steiner_points", "smallest_subsegment",
+           "seconds", "time_limit", "smallest_input_angle", "diagnosis"]
 FRONTIER_COLUMNS = ["family", "k", "split", "converges_from_theta", "not_converged", "thetas",
                     "not_converged_thetas"]
 CONVERGED = "converged"
@@ -42,7 +51,8 @@ CONVERGED = "converged"
 
 def make_cases(quick: bool, budget: float, thetas: list[float] | None = None,
                families: list[str] | None = None, fan_ks: list[int] | None = None) -> list[dict]:
-    """Every (family, k, theta, split) the families accept, with the refinement time budget (seconds)."""
+    """Every (family, k, theta, strategy) the families accept, with the refinement time budget (seconds); the
+    case key "split" names the strategy (one of ``STRATEGIES``)."""
     thetas = thetas or (QUICK_THETAS if quick else FULL_THETAS)
     cases = []
     for name in families or list(FAMILIES):
@@ -66,11 +76,12 @@ def run_case(case: dict) -> dict:
 
     plc = make_plc(case["family"], case["theta"], case["k"])
     start = time.perf_counter()
-    result = refine_gabriel(plc, split=case["split"], time_limit=case["time_limit"])
+    result = refine_gabriel(plc, time_limit=case["time_limit"], **STRATEGIES[case["split"]])
     seconds = time.perf_counter() - start
     stats = result.stats
     smallest_angle, diagnosis = summarize_diagnosis(stats.get("diagnosis"))
-    return {"status": str(result.status), "steiner_points": int(stats["steiner_points"]),
+    return {"status": str(result.status), "strategy": stats["strategy"],
+            "steiner_points": int(stats["steiner_points"]),
             "smallest_subsegment": float(stats["smallest_subsegment"]), "seconds": round(seconds, 4),
             "smallest_input_angle": smallest_angle, "diagnosis": diagnosis}
 
@@ -129,13 +140,13 @@ def frontier(rows: list[dict]) -> list[dict]:
 
 
 def plot(rows: list[dict], path: Path) -> None:
-    """Two columns (split rules); top: status over theta per family row; bottom: log Steiner count."""
+    """One column per strategy; top: status over theta per family row; bottom: log Steiner count."""
     plt = pyplot()
     labels = sorted({_label(r) for r in rows}, key=_label_order)
     statuses = sorted({r["status"] for r in rows}, key=lambda s: (s != CONVERGED, s))
     colours = dict(zip(statuses, plt.get_cmap("tab10").colors[2:] + plt.get_cmap("tab10").colors[:2]))
     colours[CONVERGED] = "tab:green"
-    fig, axes = plt.subplots(2, len(SPLITS), figsize=(13, 9), sharex=True, squeeze=False)
+    fig, axes = plt.subplots(2, len(SPLITS), figsize=(6.5 * len(SPLITS), 9), sharex=True, squeeze=False)
     for col, split in enumerate(SPLITS):
         mine = [r for r in rows if r["split"] == split]
         ax = axes[0, col]

@@ -118,11 +118,11 @@ def test_termination_map_quick_writes_csv_and_png(tmp_path):
                                  "wedge,segments", "--workers", "2"]) == 0
     rows = read_csv(tmp_path / "termination_map_quick.csv")
     assert list(rows[0]) == termination_map.COLUMNS
-    # 2 families x theta 60 x 2 split rules
+    # 2 families x theta 60 x every strategy
     assert sorted((r["family"], r["split"]) for r in rows) == sorted(
-        (f, s) for f in ("wedge", "segments") for s in ("midpoint", "shells"))
+        (f, s) for f in ("wedge", "segments") for s in ("midpoint", "shells", "protected", "default"))
     frontier = read_csv(tmp_path / "termination_frontier_quick.csv")
-    assert list(frontier[0]) == termination_map.FRONTIER_COLUMNS and len(frontier) == 4
+    assert list(frontier[0]) == termination_map.FRONTIER_COLUMNS and len(frontier) == 8
     assert (tmp_path / "termination_map_quick.png").stat().st_size > 0
 
 

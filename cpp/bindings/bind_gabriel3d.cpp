@@ -79,6 +79,10 @@ void bind_result_classes(py::module_& m) {
                              "'converged', 'budget_exhausted', 'min_length_reached' or 'stalled'")
       .def_readonly("steiner_on_segments", &Result::steiner_on_segments)
       .def_readonly("greedy_splits", &Result::greedy_splits)
+      .def_readonly("strategy", &Result::strategy,
+                    "'shells', 'greedy', 'midpoint', 'protected', or '<rule>+protected' after the fallback")
+      .def_readonly("other_attempt", &Result::other_attempt, "status and stop reason of the attempt not returned")
+      .def_readonly("protecting_balls", &Result::protecting_balls, "apex vertices protected")
       .def_readonly("steiner_on_facets", &Result::steiner_on_facets)
       .def_readonly("seconds", &Result::seconds)
       .def_readonly("smallest_subsegment", &Result::smallest_subsegment)
@@ -111,18 +115,23 @@ void bind_gabriel3d(py::module_& m) {
       "refine_gabriel",
       [](const DoubleArray& points, const IndexArray& triangles, const IndexArray& facet_ids,
          const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions, long max_steiner,
-         double min_length, double time_limit, const std::string& split, long progress_every,
+         double min_length, double time_limit, const std::string& split, bool protected_fallback,
+         long progress_every,
          const std::optional<std::function<void(long, long, long, double)>>& progress) {
         PLC3 plc = to_plc3(points, triangles, facet_ids, segments, holes, regions);
         const std::map<std::string, SplitRule> rules = {
-            {"shells", SplitRule::Shells}, {"midpoint", SplitRule::Midpoint}, {"greedy", SplitRule::Greedy}};
+            {"shells", SplitRule::Shells},
+            {"midpoint", SplitRule::Midpoint},
+            {"greedy", SplitRule::Greedy},
+            {"protected", SplitRule::Protected}};
         if (!rules.count(split))
-          throw InvalidInput("split must be 'shells', 'midpoint' or 'greedy', not '" + split + "'");
+          throw InvalidInput("split must be 'shells', 'midpoint', 'greedy' or 'protected', not '" + split + "'");
         Refine3DOptions o;
         o.max_steiner = max_steiner;
         o.min_length = min_length;
         o.time_limit = time_limit;
         o.split = rules.at(split);
+        o.protected_fallback = protected_fallback;
         o.progress_every = progress_every;
         if (progress && *progress)
           o.progress = [f = *progress](const Refine3DProgress& p) {
@@ -134,7 +143,7 @@ void bind_gabriel3d(py::module_& m) {
       },
       py::arg("points"), py::arg("triangles"), py::arg("facet_ids"), py::arg("segments"), py::arg("holes"),
       py::arg("regions"), py::arg("max_steiner"), py::arg("min_length"), py::arg("time_limit"), py::arg("split"),
-      py::arg("progress_every"), py::arg("progress"),
+      py::arg("protected_fallback"), py::arg("progress_every"), py::arg("progress"),
       "Gabriel refinement of a PLC. max_steiner < 0, min_length < 0: the defaults of Refine3DOptions (gabriel3d.h).\n"
       "progress: None or f(steiner, encroached_segments, encroached_facets, seconds).\n"
       "Returns a Refine3DResult.");

@@ -29,6 +29,16 @@ void keep_smallest(std::vector<InputAngle>& all, std::vector<InputAngle>&& kind)
   all.insert(all.end(), kind.begin(), kind.end());
 }
 
+// The input segments at each input vertex.
+std::vector<std::vector<int>> segments_at(const PlcState& s) {
+  std::vector<std::vector<int>> at(s.n_input);
+  for (std::size_t g = 0; g < s.segments.size(); ++g) {
+    at[s.segments[g].a].push_back(static_cast<int>(g));
+    at[s.segments[g].b].push_back(static_cast<int>(g));
+  }
+  return at;
+}
+
 // Angles between input segments (PLC segments and facet edges) at their shared input vertices.
 std::vector<InputAngle> segment_segment(const PlcState& s, const std::vector<std::vector<int>>& at) {
   std::vector<InputAngle> out;
@@ -58,28 +68,12 @@ bool points_into(const Facet& f, int v, const Vec& d) {
     if (f.cdt.is_infinite(fc) || !fc->info().in_domain) continue;
     int i = fc->index(vh);
     const Q2 &p = fc->vertex(FacetCDT::ccw(i))->point(), &q = fc->vertex(FacetCDT::cw(i))->point();
-    if (turn(p) > 0 && turn(q) < 0) return true;  // d strictly inside the angle from p - o to q - o (ccw)
+    // d inside the angle from p - o (included) to q - o (excluded), ccw: a direction along an edge between two
+    // domain triangles counts once (a cone's generator over a regular polygon's fan diagonal does).
+    const bool along_p = turn(p) == 0 && (CGAL::to_double(p.x()) - ox) * dx + (CGAL::to_double(p.y()) - oy) * dy > 0;
+    if ((turn(p) > 0 || along_p) && turn(q) < 0) return true;
   } while (++fc != done);
   return false;
-}
-
-// Angles between an input segment and a facet through one of its ends, where the segment leans over the facet
-// (its projection points into the facet); other directions are covered by the segment-segment angles.
-std::vector<InputAngle> segment_facet(const PlcState& s, const std::vector<std::vector<int>>& at) {
-  std::vector<InputAngle> out;
-  for (int v = 0; v < s.n_input; ++v)
-    for (int g : at[v]) {
-      const auto& seg = s.segments[g];
-      int end = seg.a == v ? seg.b : seg.a;
-      Vec d = sub(s.points[end], s.points[v]);
-      for (int f : s.point_facets[v]) {
-        const Facet& facet = *s.facets[f];
-        if (facet.vertex.count(end) || !points_into(facet, v, d)) continue;
-        double deg = std::abs(90.0 - angle(d, normal(facet)));
-        out.push_back({"segment-facet", deg, {v, end}, {facet.id}});
-      }
-    }
-  return out;
 }
 
 // The facet's corner opposite edge ab in one of its input triangles: a vertex of the facet's triangulation
@@ -121,15 +115,30 @@ std::vector<SteinerCount> top(std::vector<SteinerCount> counts) {
 
 }  // namespace
 
-std::vector<InputAngle> smallest_input_angles(const PlcState& s) {
-  std::vector<std::vector<int>> at(s.n_input);  // input segments at each input vertex
-  for (std::size_t g = 0; g < s.segments.size(); ++g) {
-    at[s.segments[g].a].push_back(static_cast<int>(g));
-    at[s.segments[g].b].push_back(static_cast<int>(g));
-  }
+// Angles between an input segment and a facet through one of its ends, where the segment leans over the facet
+// (its projection points into the facet); other directions are covered by the segment-segment angles.
+std::vector<InputAngle> segment_facet_angles(const PlcState& s) {
+  const auto at = segments_at(s);
   std::vector<InputAngle> out;
-  keep_smallest(out, segment_segment(s, at));
-  keep_smallest(out, segment_facet(s, at));
+  for (int v = 0; v < s.n_input; ++v)
+    for (int g : at[v]) {
+      const auto& seg = s.segments[g];
+      int end = seg.a == v ? seg.b : seg.a;
+      Vec d = sub(s.points[end], s.points[v]);
+      for (int f : s.point_facets[v]) {
+        const Facet& facet = *s.facets[f];
+        if (facet.vertex.count(end) || !points_into(facet, v, d)) continue;
+        double deg = std::abs(90.0 - angle(d, normal(facet)));
+        out.push_back({"segment-facet", deg, {v, end}, {facet.id}});
+      }
+    }
+  return out;
+}
+
+std::vector<InputAngle> smallest_input_angles(const PlcState& s) {
+  std::vector<InputAngle> out;
+  keep_smallest(out, segment_segment(s, segments_at(s)));
+  keep_smallest(out, segment_facet_angles(s));
   keep_smallest(out, dihedral(s));
   std::stable_sort(out.begin(), out.end(), [](const auto& x, const auto& y) { return x.degrees < y.degrees; });
   return out;

@@ -101,6 +101,9 @@ Restricted subfacet_boundary(const PlcState& s, long* collinear);
 
 // The few smallest input angles of each kind; call before refinement (it reads the unsplit input segments).
 std::vector<InputAngle> smallest_input_angles(const PlcState& s);
+// Every angle between an input segment and a facet through one of its ends where the segment leans over the facet
+// (its projection points into the facet): kind "segment-facet", vertices {apex, segment end}. Floating point.
+std::vector<InputAngle> segment_facet_angles(const PlcState& s);
 // Steiner points per input segment and per nearest input vertex, top few.
 void count_steiner(const PlcState& s, Refine3DDiagnosis& d);
 

@@ -52,8 +52,11 @@ struct PLC3 {
 // How an encroached subsegment is split: at its midpoint; by concentric shells (a power-of-two distance from its
 // one input-vertex end, else the midpoint); or Greedy: the end of the longest prefix from one end whose diametral
 // sphere holds none of the subsegment's current encroachers (the 2D paper's Greedy-Refine), with the shells rule
-// where that prefix is short (see refine_gabriel).
-enum class SplitRule : std::int8_t { Midpoint = 0, Shells = 1, Greedy = 2 };
+// where that prefix is short (see refine_gabriel). Protected: concentric shells plus protecting balls at every
+// apex vertex (an input segment leaning over a facet through its end at less than 90 degrees): radius a power of
+// two <= 1/4 of the vertex's local feature size, each segment through the apex split on the ball's sphere, and
+// subfacet split points that would fall strictly inside a ball moved to its sphere (see refine_gabriel).
+enum class SplitRule : std::int8_t { Midpoint = 0, Shells = 1, Greedy = 2, Protected = 3 };
 
 struct Refine3DProgress {
   long steiner_points = 0;
@@ -72,6 +75,7 @@ struct Refine3DOptions {
   double min_length = -1.0;
   double time_limit = 60.0;  // seconds
   SplitRule split = SplitRule::Shells;
+  bool protected_fallback = true;  // run the protected strategy when the split rule's pass does not converge
   long progress_every = 1000;  // insertions between progress calls; one more after each exact check of the mesh
   std::function<void(const Refine3DProgress&)> progress;
 };
@@ -106,6 +110,12 @@ struct Refine3DResult {
   RefineStatus status = RefineStatus::Stalled;
   long max_steiner = 0;     // the limits the run used (options' defaults resolved)
   double min_length = 0.0;
+  // The strategy that produced this result: the split rule's name ("shells", "greedy", "midpoint", "protected"),
+  // or "<rule>+protected" when the rule's pass did not converge and the protected strategy, run from the input,
+  // did. other_attempt: "" when one strategy ran, else the status and stop reason of the attempt not returned.
+  std::string strategy;
+  std::string other_attempt;
+  long protecting_balls = 0;  // apex vertices protected (0 unless the protected strategy ran)
   long steiner_on_segments = 0;
   long greedy_splits = 0;  // of steiner_on_segments, placed by the greedy rule (split == Greedy)
   long steiner_on_facets = 0;
@@ -128,6 +138,12 @@ struct Refine3DResult {
 // A stopped run whose tetrahedralization does not conform to every facet returns the subfacets and no tets
 // (volume_mesh says so). status == Converged iff the exact check of the returned mesh passes. The facets' boundary
 // edges count as segments (their subsegments are returned and checked).
+// Strategy: the pass with options.split first; when it ends without converging (and time is left, and
+// protected_fallback is set), the protected strategy (SplitRule::Protected) runs from the input with the same
+// max_steiner and the rest of time_limit; its result is returned if it converged, else the first pass's
+// (strategy and other_attempt say which). Protecting balls keep the split points of a
+// segment and a facet meeting at a small angle off the apex, which ends the cascade there (the termination argument
+// and what it does not cover are at the split rule in gabriel3d_refine.cpp).
 // Deterministic. Throws InvalidInput on malformed input (index out of range, duplicate points, degenerate
 // triangles, facet edges crossing or passing through a vertex, facet vertices coinciding in the facet's plane).
 Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& options);

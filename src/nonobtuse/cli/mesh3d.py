@@ -38,7 +38,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="seconds for loading, refinement and the exact check of the result (default: "
                         "refine_gabriel's); the final Delaunay tetrahedralization, the control volumes and "
                         "the writing (near-linear in the output) come on top")
-    p.add_argument("--split", choices=("shells", "midpoint", "greedy"), default="shells",
+    p.add_argument("--split", choices=("shells", "midpoint", "greedy", "protected"), default="shells",
                    help="how encroached subsegments are split (see refine_gabriel)")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     guards.add_timings_option(p)

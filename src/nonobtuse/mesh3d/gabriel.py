@@ -225,7 +225,8 @@ def refine_gabriel(
     max_steiner: int | None = None,
     min_length: float | None = None,
     time_limit: float = 60.0,
-    split: Literal["shells", "midpoint", "greedy"] = "shells",
+    split: Literal["shells", "midpoint", "greedy", "protected"] = "shells",
+    protected_fallback: bool = True,
     progress: Callable[[int, int, int, float], None] | bool | None = None,
     progress_every: int = 1000,
     started: float | None = None,
@@ -241,7 +242,15 @@ def refine_gabriel(
     segments, or where the greedy piece or the rest would be under 1/4 of the subsegment;
     stats["greedy_splits"] counts the greedy points), then encroached subfacets at their circumcenter, unless
     it encroaches a subsegment of the facet or lies outside the facet, in which case that subsegment is
-    split. The facets' boundary edges
+    split. When that pass does not converge (and time_limit has time left), the protected strategy runs from
+    the input with the same budget, and its result is returned if it converged: protecting balls at every apex
+    vertex (an input segment leaning over a facet through its end at less than 90 degrees; radius a power of
+    two <= 1/4 of the vertex's local feature size), each segment through an apex split on its ball's sphere,
+    and subfacet split points strictly inside a ball moved to its sphere, which ends the cascade down small
+    segment-facet angles. split="protected" runs only that strategy; protected_fallback=False returns the
+    first pass as it ended. stats["strategy"] names the strategy of the returned mesh ("shells", ..., or
+    "shells+protected" after a fallback), stats["other_attempt"] the status and stop reason of the attempt not
+    returned ("" when one ran), stats["protecting_balls"] the apices protected. The facets' boundary edges
     count as segments. Stops at max_steiner (None: the core's default, ``Refine3DOptions::max_steiner`` in
     ``gabriel3d.h``, linear in the number of input points), time_limit (seconds), min_length (no split may
     create a shorter edge; None: the core's default, a small fraction of the bounding box diagonal; 0 turns it
@@ -277,6 +286,7 @@ def refine_gabriel(
         -1.0 if min_length is None else float(np.ldexp(min_length, -e)),
         max(0.0, float(time_limit) - (time.perf_counter() - started)),
         split,
+        bool(protected_fallback),
         int(progress_every),
         callback,
     )
@@ -292,6 +302,9 @@ def refine_gabriel(
         "steiner_points": r.steiner_on_segments + r.steiner_on_facets,
         "steiner_on_segments": r.steiner_on_segments,
         "greedy_splits": r.greedy_splits,
+        "strategy": r.strategy,
+        "other_attempt": r.other_attempt,
+        "protecting_balls": r.protecting_balls,
         "steiner_on_facets": r.steiner_on_facets,
         "encroached_facets": len(report.faces),
         "encroached_segments": len(report.segments),
