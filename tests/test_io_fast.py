@@ -1,0 +1,189 @@
+"""The fast paths of the readers and writers give exactly what the plain ones give: the vectorised block
+reader of Triangle files (same arrays, markers, line numbers and error messages as the line-by-line
+reader)."""
+
+from __future__ import annotations
+
+from dataclasses import fields
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from nonobtuse.errors import InvalidInputError
+from nonobtuse.io import _files, read_mesh, triangle, write_mesh
+from nonobtuse.mesh import Mesh
+
+DATA = Path(__file__).parent / "data"
+SHARED = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "2d"
+
+
+def _line_by_line(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(_files, "numeric_rows", lambda *args, **kwargs: None)
+
+
+def _read(read, path: Path):
+    """The reader's result as comparable data, or its error message."""
+    try:
+        return read(path)
+    except InvalidInputError as e:
+        return str(e)
+
+
+def _assert_same(a, b) -> None:
+    """Equal messages, or equal objects field by field (arrays bit for bit, with their dtype and shape)."""
+    assert type(a) is type(b)
+    if isinstance(a, str):
+        assert a == b
+        return
+    for f in fields(a):
+        x, y = getattr(a, f.name), getattr(b, f.name)
+        if f.name == "origin" and x is not None:
+            _assert_same(x, y)
+        elif isinstance(x, np.ndarray):
+            assert (x.dtype, x.shape, x.tobytes()) == (y.dtype, y.shape, y.tobytes()), f.name
+        else:
+            assert x == y, f.name
+
+
+def _both(monkeypatch: pytest.MonkeyPatch, read, path: Path) -> None:
+    fast = _read(read, path)
+    with monkeypatch.context() as m:
+        _line_by_line(m)
+        slow = _read(read, path)
+    _assert_same(fast, slow)
+
+
+def _triangle_inputs() -> list[Path]:
+    files = sorted(DATA.glob("*.poly")) + sorted(DATA.glob("*.node"))
+    if SHARED.is_dir():
+        files += sorted(SHARED.glob("*.poly")) + sorted(SHARED.glob("*.node"))
+    return files
+
+
+@pytest.mark.parametrize("path", _triangle_inputs(), ids=lambda p: f"{p.parent.name}/{p.name}")
+def test_fast_reader_equals_line_by_line_on_real_inputs(monkeypatch, path):
+    read = triangle.read_poly if path.suffix == ".poly" else triangle.read_node
+    _both(monkeypatch, read, path)
+
+
+def test_real_inputs_take_the_fast_path(monkeypatch):
+    calls = []
+    real = _files.numeric_rows
+    monkeypatch.setattr(_files, "numeric_rows", lambda *a, **k: calls.append(r := real(*a, **k)) or r)
+    triangle.read_poly(DATA / "cdt_cdt.poly")
+    assert calls and all(r is not None for r in calls)
+
+
+GOOD = """\
+# header comment
+5 2 1 1
+1 0.5 0 7 1
+2 4 0 -1e-3 1
+3 4 4 .5 2
+4 0 4 5. -3
+5 1 1 0 0
+4 1
+1 1 2 5
+2 2 3 5
+3 3 4 6
+4 4 1 6
+0
+"""
+
+# Each one an input the fast path must hand to the line-by-line reader: accepted there or refused with
+# its file:line message.
+VARIANTS = {
+    "good": lambda s: s,
+    "comment in the block": lambda s: s.replace("3 4 4 .5 2", "3 4 4 .5 2 # c"),
+    "blank line in the block": lambda s: s.replace("3 4 4 .5 2\n", "3 4 4 .5 2\n\n"),
+    "extra token": lambda s: s.replace("3 4 4 .5 2", "3 4 4 .5 2 9"),
+    "missing token": lambda s: s.replace("3 4 4 .5 2", "3 4 4 .5"),
+    "ragged but same count": lambda s: s.replace("1 0.5 0 7 1\n2", "1 0.5 0 7 1 2\n"),
+    "float id": lambda s: s.replace("2 4 0 -1e-3 1", "2.0 4 0 -1e-3 1"),
+    "exponent marker": lambda s: s.replace("4 0 4 5. -3", "4 0 4 5. 1e1"),
+    "float segment endpoint": lambda s: s.replace("2 2 3 5", "2 2 3.0 5"),
+    "nan coordinate": lambda s: s.replace("1 0.5 0 7", "1 nan 0 7"),
+    "underscore": lambda s: s.replace("1 0.5 0 7", "1 1_0 0 7"),
+    "two numbers in a token": lambda s: s.replace("1 0.5 0 7", "1 0.5-1 7"),
+    "not a number": lambda s: s.replace("1 0.5 0 7", "1 0.5. 0 7"),
+    "ids from 0": lambda s: "".join(
+        f"{int(ln.split()[0]) - 1} {ln.split(' ', 1)[1]}\n" if 2 <= k <= 6 else ln + "\n"
+        for k, ln in enumerate(s.splitlines())
+    ),
+    "ids not consecutive": lambda s: s.replace("4 0 4 5.", "6 0 4 5."),
+    "first id 2": lambda s: s.replace("1 0.5 0 7 1", "2 0.5 0 7 1"),
+    "endpoint out of range": lambda s: s.replace("4 4 1 6", "4 4 9 6"),
+    "huge marker": lambda s: s.replace("4 0 4 5. -3", f"4 0 4 5. {2**60 + 1}"),
+    "non-ASCII space": lambda s: s.replace("1 0.5 0 7", "1 0.5\u00a00 7"),
+    "file ends early": lambda s: s[: s.index("4 1\n")],
+    "content after the end": lambda s: s + "1 2\n",
+}
+
+
+@pytest.mark.parametrize("variant", sorted(VARIANTS))
+def test_fast_reader_variants(tmp_path, monkeypatch, variant):
+    path = tmp_path / "v.poly"
+    path.write_text(VARIANTS[variant](GOOD), encoding="utf-8")
+    _both(monkeypatch, triangle.read_poly, path)
+
+
+def test_variant_results_are_what_the_file_says(tmp_path):
+    path = tmp_path / "v.poly"
+    path.write_text(GOOD)
+    d = triangle.read_poly(path)
+    assert d.points.tolist() == [[0.5, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0], [1.0, 1.0]]
+    assert d.point_markers.tolist() == [1, 1, 2, -3, 0]
+    assert d.segments.tolist() == [[0, 1], [1, 2], [2, 3], [3, 0]]
+    assert d.segment_markers.tolist() == [5, 5, 6, 6]
+    assert d.origin.points.tolist() == [3, 4, 5, 6, 7] and d.origin.segments.tolist() == [9, 10, 11, 12]
+    path.write_text(VARIANTS["huge marker"](GOOD))
+    assert triangle.read_poly(path).point_markers[3] == 2**60 + 1
+
+
+@pytest.mark.parametrize("regions", [False, True])
+def test_fast_mesh_reader_equals_line_by_line(tmp_path, monkeypatch, regions):
+    """.node/.ele/.poly written by us read back the same on both paths, and as written."""
+    mesh = _mesh(50, seed=3)
+    mesh = Mesh(
+        mesh.points, mesh.triangles, mesh.segments, mesh.points.copy(), mesh.segments.copy(),
+        mesh.regions if regions else None, stats={"source": str(tmp_path / "m.ele")},
+        point_markers=mesh.point_markers, segment_markers=mesh.segment_markers,
+    )  # fmt: skip
+    write_mesh(mesh, tmp_path / "m.ele")
+    _both(monkeypatch, read_mesh, tmp_path / "m.ele")
+    _assert_same(read_mesh(tmp_path / "m.ele"), mesh)
+    ele = tmp_path / "m.ele"
+    ele.write_text(ele.read_text().replace("\n3 ", "\n3 1e9 ", 1))
+    _both(monkeypatch, read_mesh, ele)
+
+
+TOKEN = st.text(alphabet="0123456789.eE+-", min_size=1, max_size=8)
+
+
+@settings(max_examples=300, deadline=2000, derandomize=True)
+@given(st.lists(st.lists(TOKEN, min_size=3, max_size=3), min_size=1, max_size=4))
+def test_numeric_rows_agree_with_float_and_int(rows):
+    """Whatever plain numeric tokens the fast path accepts, it reads as float() (and column 0 as int())."""
+    got = _files.numeric_rows([" ".join(r) for r in rows], 3, (0,))
+    if got is None:
+        return
+    for row, values in zip(rows, got.tolist()):
+        assert [float(t) for t in row] == values
+        assert int(row[0]) == values[0]
+
+
+def _mesh(n: int, seed: int) -> Mesh:
+    rng = np.random.default_rng(seed)
+    points = rng.normal(size=(n, 2)) * 10.0 ** rng.integers(-30, 30, size=(n, 1))
+    points[0] = [-0.0, 5e-324]
+    triangles = rng.integers(0, n, size=(2 * n, 3))
+    segments = rng.integers(0, n, size=(n, 2))
+    k = max(1, n // 2)
+    return Mesh(
+        points, triangles, segments, points[:k].copy(), rng.integers(0, k, size=(3, 2)),
+        rng.normal(size=2 * n), stats={"status": "ok", "seconds": 0.5, "per_edge": np.arange(3)},
+        point_markers=rng.integers(-(2**40), 2**40, size=n), segment_markers=rng.integers(0, 9, size=n),
+    )  # fmt: skip
