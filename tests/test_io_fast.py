@@ -1,9 +1,10 @@
 """The fast paths of the readers and writers give exactly what the plain ones give: the vectorised block
 reader of Triangle files (same arrays, markers, line numbers and error messages as the line-by-line
-reader)."""
+reader), and the streaming .json writer (byte-identical to json.dump of the lists)."""
 
 from __future__ import annotations
 
+import json
 from dataclasses import fields
 from pathlib import Path
 
@@ -13,7 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.io import _files, read_mesh, triangle, write_mesh
+from nonobtuse.io import _files, json_formats, read_mesh, triangle, write_mesh
 from nonobtuse.mesh import Mesh
 
 DATA = Path(__file__).parent / "data"
@@ -187,3 +188,28 @@ def _mesh(n: int, seed: int) -> Mesh:
         rng.normal(size=2 * n), stats={"status": "ok", "seconds": 0.5, "per_edge": np.arange(3)},
         point_markers=rng.integers(-(2**40), 2**40, size=n), segment_markers=rng.integers(0, 9, size=n),
     )  # fmt: skip
+
+
+def _json_dump_of_lists(mesh: Mesh) -> str:
+    """The .json the mesh schema defines, written the plain way (json.dump of the lists)."""
+    data = {k: getattr(mesh, k).tolist() for k in json_formats.MESH_ARRAYS if getattr(mesh, k) is not None}
+    data["stats"] = mesh.stats
+    return json.dumps(data, allow_nan=False, separators=(",", ":"), default=json_formats._plain) + "\n"
+
+
+@pytest.mark.parametrize("n", [1, 7, 5000])
+def test_json_writer_is_byte_identical_to_json_dump(tmp_path, n):
+    mesh = _mesh(n, seed=n)
+    write_mesh(mesh, tmp_path / "m.json")
+    assert (tmp_path / "m.json").read_text() == _json_dump_of_lists(mesh)
+    back = read_mesh(tmp_path / "m.json")
+    assert np.array_equal(back.points, mesh.points) and np.array_equal(back.regions, mesh.regions)
+    assert np.array_equal(np.signbit(back.points), np.signbit(mesh.points))
+
+
+def test_json_writer_refuses_nan_and_writes_nothing(tmp_path):
+    mesh = _mesh(5, seed=1)
+    mesh.points[2, 1] = np.nan
+    with pytest.raises(ValueError, match="JSON compliant"):
+        write_mesh(mesh, tmp_path / "m.json")
+    assert list(tmp_path.iterdir()) == []
