@@ -1,6 +1,7 @@
 """The fast paths of the readers and writers give exactly what the plain ones give: the vectorised block
 reader of Triangle files (same arrays, markers, line numbers and error messages as the line-by-line
-reader), and the streaming .json writer (byte-identical to json.dump of the lists)."""
+reader), the streaming .json writer (byte-identical to json.dump of the lists) and the appended raw .vtu
+writer (read back by meshio as the meshio form of the mesh)."""
 
 from __future__ import annotations
 
@@ -15,6 +16,7 @@ from hypothesis import strategies as st
 
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import _files, json_formats, read_mesh, triangle, write_mesh
+from nonobtuse.io.meshio_formats import to_meshio
 from nonobtuse.mesh import Mesh
 
 DATA = Path(__file__).parent / "data"
@@ -213,3 +215,32 @@ def test_json_writer_refuses_nan_and_writes_nothing(tmp_path):
     with pytest.raises(ValueError, match="JSON compliant"):
         write_mesh(mesh, tmp_path / "m.json")
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("regions", [False, True])
+@pytest.mark.parametrize("markers", [False, True])
+@pytest.mark.parametrize("segments", [0, 40])
+def test_vtu_writer_gives_meshio_the_meshio_form(tmp_path, regions, markers, segments):
+    """meshio reads the appended raw .vtu back as the meshio form of the mesh, every array bit for bit."""
+    import meshio
+
+    full = _mesh(60, seed=segments + 2 * regions + markers)
+    mesh = Mesh(
+        full.points, full.triangles, full.segments[:segments], full.input_points, full.input_segments,
+        full.regions if regions else None, {}, point_markers=full.point_markers if markers else None,
+        segment_markers=full.segment_markers[:segments] if markers else None,
+    )  # fmt: skip
+    write_mesh(mesh, tmp_path / "m.vtu")
+    back, want = meshio.read(tmp_path / "m.vtu"), to_meshio(mesh)
+    assert back.points.tobytes() == want.points.tobytes()
+    blocks = [(c.type, c.data.astype(np.int64).tobytes()) for c in want.cells if len(c.data)]
+    assert [(c.type, c.data.astype(np.int64).tobytes()) for c in back.cells] == blocks
+    assert sorted(back.cell_data) == sorted(want.cell_data)
+    for key, values in want.cell_data.items():
+        got = np.concatenate([np.ravel(v) for v in back.cell_data[key]])
+        assert got.tobytes() == np.concatenate([np.ravel(v) for v in values]).astype(got.dtype).tobytes()
+        assert got.dtype == np.concatenate(values).dtype
+    assert sorted(back.point_data) == sorted(want.point_data)
+    for key, values in want.point_data.items():
+        assert back.point_data[key].tobytes() == values.tobytes()
+    assert [p.name for p in tmp_path.iterdir()] == ["m.vtu"]
