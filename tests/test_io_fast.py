@@ -244,3 +244,50 @@ def test_vtu_writer_gives_meshio_the_meshio_form(tmp_path, regions, markers, seg
     for key, values in want.point_data.items():
         assert back.point_data[key].tobytes() == values.tobytes()
     assert [p.name for p in tmp_path.iterdir()] == ["m.vtu"]
+
+
+def _raw_input(path: Path):
+    """read_off's result as plain data (points bytes, facet loops and places, markers), or its message."""
+    from nonobtuse.io.surfaces import read_off
+
+    try:
+        raw = read_off(path)
+    except InvalidInputError as e:
+        return str(e)
+    loops = [([loop.tolist() for loop in f.loops], f.where) for f in raw.facets]
+    return raw.points.dtype, raw.points.shape, raw.points.tobytes(), loops, raw.facet_markers
+
+
+OFF = "OFF\n# a tetrahedron\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1.5e0\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"
+OFF_VARIANTS = {
+    "good": OFF,
+    "comment in the vertices": OFF.replace("1 0 0\n", "1 0 0 # c\n"),
+    "colour after a vertex": OFF.replace("1 0 0\n", "1 0 0 255\n"),
+    "missing coordinate": OFF.replace("1 0 0\n", "1 0\n"),
+    "nan": OFF.replace("0 1 0\n", "0 nan 0\n"),
+    "not a number": OFF.replace("0 1 0\n", "0 1x 0\n"),
+}
+
+
+def _off_files() -> list[Path]:
+    shared = SHARED.parent / "3d"
+    return sorted(shared.glob("*.off")) if shared.is_dir() else []
+
+
+@pytest.mark.parametrize("variant", sorted(OFF_VARIANTS))
+def test_fast_off_reader_variants(tmp_path, monkeypatch, variant):
+    path = tmp_path / "t.off"
+    path.write_text(OFF_VARIANTS[variant])
+    fast = _raw_input(path)
+    with monkeypatch.context() as m:
+        _line_by_line(m)
+        assert _raw_input(path) == fast
+
+
+@pytest.mark.skipif(not _off_files(), reason="../shared/data/3d (the real 3D inputs) is absent")
+@pytest.mark.parametrize("path", _off_files(), ids=lambda p: p.name)
+def test_fast_off_reader_equals_line_by_line_on_real_inputs(monkeypatch, path):
+    fast = _raw_input(path)
+    with monkeypatch.context() as m:
+        _line_by_line(m)
+        assert _raw_input(path) == fast
