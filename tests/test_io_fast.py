@@ -291,3 +291,16 @@ def test_fast_off_reader_equals_line_by_line_on_real_inputs(monkeypatch, path):
     with monkeypatch.context() as m:
         _line_by_line(m)
         assert _raw_input(path) == fast
+
+
+@pytest.mark.parametrize("bad_row", [None, 69_000])
+def test_fast_reader_across_chunks(tmp_path, monkeypatch, bad_row):
+    """70,000 vertices span two chunks of the block reader; an unusual token in the second chunk sends the
+    whole block to the line-by-line reader."""
+    rng = np.random.default_rng(5)
+    rows = [f"{i} {x!r} {y!r}" for i, (x, y) in enumerate(rng.normal(size=(70_000, 2)).tolist())]
+    if bad_row is not None:
+        rows[bad_row] = f"{bad_row} 1_5 0"
+    path = tmp_path / "big.node"
+    path.write_text(f"{len(rows)} 2 0 0\n" + "\n".join(rows) + "\n")
+    _both(monkeypatch, triangle.read_node, path)
