@@ -36,7 +36,8 @@ Meshes (:func:`write_mesh`, :func:`read_mesh`), chosen by suffix:
   Triangle's triangles; it never re-triangulates the ``.node``. :func:`is_mesh_file` says so for the CLI.
 - ``.vtu`` and ``.msh`` through meshio (triangles, segments as line cells, region, segment markers and point
   markers; in ``.msh`` the region and segment marker are physical tags and the tag-to-region map is written
-  beside it as ``NAME.msh.regions.json``; see :mod:`nonobtuse.io.meshio_formats`).
+  beside it as ``NAME.msh.regions.json``; see :mod:`nonobtuse.io.meshio_formats`). The .vtu is written
+  directly, binary appended raw.
 
 Floats are written in shortest round-trip form, so reading gives back the same float64 values. Writes are
 atomic (a temporary file beside the target, then os.replace); input files are never modified. Every problem

@@ -1,5 +1,6 @@
-"""VTK ``.vtu`` and Gmsh ``.msh`` (format 2.2, binary) through meshio, and the conversion of a 2D
-:class:`~nonobtuse.mesh.Mesh` to and from a ``meshio.Mesh``.
+"""VTK ``.vtu`` (written directly as binary appended raw: :func:`write_vtu`; read through meshio) and Gmsh
+``.msh`` (format 2.2, binary, through meshio), and the conversion of a 2D :class:`~nonobtuse.mesh.Mesh` to
+and from a ``meshio.Mesh``.
 
 The meshio form: points padded with z = 0; cell blocks ``triangle`` then ``line`` (the constrained
 subsegments); cell data ``region`` (the region attribute on triangles, 0 on lines) and ``marker`` (the

@@ -16,6 +16,11 @@ Vertex and segment boundary markers are kept (``Domain.point_markers`` / ``segme
 file has no marker column); vertex attributes and maximum areas are read (and checked to be numbers) but not
 kept. Every error names ``file:line``.
 
+Blocks of plain numeric lines (the vertices, segments and triangles) are parsed in one numpy pass
+(:meth:`nonobtuse.io._files.Lines.numbers`); anything unusual in a block (comments, blank lines, extra
+columns, nan, ids out of order or out of range) sends it to the line-by-line reader, which gives the same
+values and names the problem.
+
 Meshes: :func:`write_triangle` writes ``.node``/``.ele``/``.poly`` with marker columns;
 :func:`read_triangle_mesh` reads them back (or Triangle's own output) as a :class:`Mesh`.
 """
