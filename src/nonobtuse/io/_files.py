@@ -23,7 +23,7 @@ def read_text(path: Path) -> str:
         text = path.read_text(encoding="utf-8")
     except (OSError, UnicodeDecodeError) as e:
         raise InvalidInputError(f"{path}: cannot read the file ({e})") from None
-    if not text.strip():
+    if not text or text.isspace():  # as `not text.strip()`, without copying the text
         raise InvalidInputError(f"{path}: the file is empty")
     return text
 
