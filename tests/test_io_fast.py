@@ -247,15 +247,19 @@ def test_vtu_writer_gives_meshio_the_meshio_form(tmp_path, regions, markers, seg
 
 
 def _raw_input(path: Path):
-    """read_off's result as plain data (points bytes, facet loops and places, markers), or its message."""
+    """read_off's or read_tetgen's result as plain data (points bytes, facet loops, holes and places,
+    markers, volume holes and regions), or its message."""
     from nonobtuse.io.surfaces import read_off
+    from nonobtuse.io.tetgen import read_tetgen
 
     try:
-        raw = read_off(path)
+        raw = (read_off if path.suffix == ".off" else read_tetgen)(path)
     except InvalidInputError as e:
         return str(e)
-    loops = [([loop.tolist() for loop in f.loops], f.where) for f in raw.facets]
-    return raw.points.dtype, raw.points.shape, raw.points.tobytes(), loops, raw.facet_markers
+    facets = [([loop.tolist() for loop in f.loops], f.holes.tolist(), f.where) for f in raw.facets]
+    markers = None if raw.facet_markers is None else raw.facet_markers.tolist()
+    arrays = [(a.dtype, a.shape, a.tobytes()) for a in (raw.points, raw.holes, raw.regions)]
+    return arrays, facets, markers
 
 
 OFF = "OFF\n# a tetrahedron\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1.5e0\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"
@@ -270,8 +274,34 @@ OFF_VARIANTS = {
 
 
 def _off_files() -> list[Path]:
+    """The OFF and TetGen inputs of ../shared/data/3d."""
     shared = SHARED.parent / "3d"
-    return sorted(shared.glob("*.off")) if shared.is_dir() else []
+    names = ("*.off", "*.smesh", "*.poly")
+    return sorted(p for n in names for p in shared.glob(n)) if shared.is_dir() else []
+
+
+SMESH = "8 3 0 1\n" + "".join(
+    f"{i} {x} {y} {z} 7\n" for i, (x, y, z) in enumerate(np.ndindex(2, 2, 2), start=1)
+) + "6 1\n4 1 2 4 3 1\n4 5 6 8 7 2\n4 1 2 6 5 3\n4 3 4 8 7 4\n4 1 3 7 5 5\n4 2 4 8 6 6\n0\n0\n"
+SMESH_VARIANTS = {
+    "good": SMESH,
+    "no marker column": SMESH.replace("8 3 0 1", "8 3 0 0"),
+    "index 1.0": SMESH.replace("\n2 0 0 1 7", "\n2.0 0 0 1 7"),
+    "header count not a number": SMESH.replace("8 3 0 1", "8 3 x 1"),
+    "comment": SMESH.replace("\n3 0 1 0 7", "\n3 0 1 0 7 # c"),
+}
+
+
+@pytest.mark.parametrize("variant", sorted(SMESH_VARIANTS))
+def test_fast_tetgen_node_reader_variants(tmp_path, monkeypatch, variant):
+    path = tmp_path / "cube.smesh"
+    path.write_text(SMESH_VARIANTS[variant])
+    fast = _raw_input(path)
+    with monkeypatch.context() as m:
+        _line_by_line(m)
+        assert _raw_input(path) == fast
+    if variant == "good":
+        assert fast[0][0][2] == np.array(list(np.ndindex(2, 2, 2)), np.float64).tobytes()
 
 
 @pytest.mark.parametrize("variant", sorted(OFF_VARIANTS))
@@ -286,7 +316,7 @@ def test_fast_off_reader_variants(tmp_path, monkeypatch, variant):
 
 @pytest.mark.skipif(not _off_files(), reason="../shared/data/3d (the real 3D inputs) is absent")
 @pytest.mark.parametrize("path", _off_files(), ids=lambda p: p.name)
-def test_fast_off_reader_equals_line_by_line_on_real_inputs(monkeypatch, path):
+def test_fast_3d_readers_equal_line_by_line_on_real_inputs(monkeypatch, path):
     fast = _raw_input(path)
     with monkeypatch.context() as m:
         _line_by_line(m)
