@@ -262,6 +262,15 @@ def _raw_input(path: Path):
     return arrays, facets, markers
 
 
+def _raw_both(monkeypatch: pytest.MonkeyPatch, path: Path):
+    """:func:`_raw_input` with the fast path, asserted equal to it without; returns it."""
+    fast = _raw_input(path)
+    with monkeypatch.context() as m:
+        _line_by_line(m)
+        assert _raw_input(path) == fast
+    return fast
+
+
 OFF = "OFF\n# a tetrahedron\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1.5e0\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"
 OFF_VARIANTS = {
     "good": OFF,
@@ -296,10 +305,7 @@ SMESH_VARIANTS = {
 def test_fast_tetgen_node_reader_variants(tmp_path, monkeypatch, variant):
     path = tmp_path / "cube.smesh"
     path.write_text(SMESH_VARIANTS[variant])
-    fast = _raw_input(path)
-    with monkeypatch.context() as m:
-        _line_by_line(m)
-        assert _raw_input(path) == fast
+    fast = _raw_both(monkeypatch, path)
     if variant == "good":
         assert fast[0][0][2] == np.array(list(np.ndindex(2, 2, 2)), np.float64).tobytes()
 
@@ -308,19 +314,13 @@ def test_fast_tetgen_node_reader_variants(tmp_path, monkeypatch, variant):
 def test_fast_off_reader_variants(tmp_path, monkeypatch, variant):
     path = tmp_path / "t.off"
     path.write_text(OFF_VARIANTS[variant])
-    fast = _raw_input(path)
-    with monkeypatch.context() as m:
-        _line_by_line(m)
-        assert _raw_input(path) == fast
+    _raw_both(monkeypatch, path)
 
 
 @pytest.mark.skipif(not _off_files(), reason="../shared/data/3d (the real 3D inputs) is absent")
 @pytest.mark.parametrize("path", _off_files(), ids=lambda p: p.name)
 def test_fast_3d_readers_equal_line_by_line_on_real_inputs(monkeypatch, path):
-    fast = _raw_input(path)
-    with monkeypatch.context() as m:
-        _line_by_line(m)
-        assert _raw_input(path) == fast
+    _raw_both(monkeypatch, path)
 
 
 @pytest.mark.parametrize("bad_row", [None, 69_000])
