@@ -36,7 +36,8 @@ Meshes (:func:`write_mesh`, :func:`read_mesh`), chosen by suffix:
   Triangle's triangles; it never re-triangulates the ``.node``. :func:`is_mesh_file` says so for the CLI.
 - ``.vtu`` and ``.msh`` through meshio (triangles, segments as line cells, region, segment markers and point
   markers; in ``.msh`` the region and segment marker are physical tags and the tag-to-region map is written
-  beside it as ``NAME.msh.regions.json``; see :mod:`nonobtuse.io.meshio_formats`).
+  beside it as ``NAME.msh.regions.json``; see :mod:`nonobtuse.io.meshio_formats`). The .vtu is written
+  directly, binary appended raw.
 
 3D: :func:`load_plc` (OFF, OBJ, PLY, STL surfaces and TetGen .poly/.smesh PLCs, see
 :mod:`nonobtuse.mesh3d.load`), :func:`write_tetmesh` and :func:`read_tetmesh_json` (see

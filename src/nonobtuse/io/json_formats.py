@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Any, NoReturn
+from typing import IO, Any, NoReturn
 
 import numpy as np
 
@@ -189,25 +189,44 @@ def mesh_from_json(path: Path, data: Any) -> Mesh:
     return Mesh(points, triangles, segments, input_points, input_segments, regions, stats, **markers)
 
 
+MESH_ARRAYS = (
+    "points", "triangles", "segments", "input_points", "input_segments", "regions", "point_markers",
+    "segment_markers",
+)  # fmt: skip
+_CHUNK_ROWS = 1 << 16
+_COMPACT = {"allow_nan": False, "separators": (",", ":")}
+
+
 def write_mesh_json(mesh: Mesh, path: Path) -> None:
-    """The mesh schema of :mod:`nonobtuse.io`, atomically. Floats are written in shortest round-trip form, so
-    reading gives the same float64 values. NaN or infinity (never produced by nonobtuse) raise ValueError."""
-    data = {
-        "points": mesh.points.tolist(),
-        "triangles": mesh.triangles.tolist(),
-        "segments": mesh.segments.tolist(),
-        "input_points": mesh.input_points.tolist(),
-        "input_segments": mesh.input_segments.tolist(),
+    """The mesh schema of :mod:`nonobtuse.io`, atomically: the arrays in the order of ``MESH_ARRAYS`` (the
+    optional ones when the mesh has them), then ``stats``. Floats are written in shortest round-trip form, so
+    reading gives the same float64 values. The text is what ``json.dump`` of the arrays' lists with
+    ``separators=(",", ":")`` gives, byte for byte, but written in chunks of rows so the lists of the whole
+    mesh are never built. NaN or infinity (never produced by nonobtuse) raise ValueError and leave ``path``
+    untouched. Cost: O(size of the file), memory O(chunk)."""
+    stats = json.dumps(mesh.stats, default=_plain, **_COMPACT)
+    dtypes = {"regions": np.float64, "point_markers": np.int64, "segment_markers": np.int64}
+    arrays = {
+        key: np.asarray(getattr(mesh, key), dtype=dtypes.get(key))
+        for key in MESH_ARRAYS
+        if getattr(mesh, key) is not None
     }
-    if mesh.regions is not None:
-        data["regions"] = np.asarray(mesh.regions, dtype=np.float64).tolist()
-    for key in ("point_markers", "segment_markers"):
-        if getattr(mesh, key) is not None:
-            data[key] = np.asarray(getattr(mesh, key), dtype=np.int64).tolist()
-    data["stats"] = mesh.stats
     with atomic_text(path) as f:
-        json.dump(data, f, allow_nan=False, separators=(",", ":"), default=_plain)
-        f.write("\n")
+        for i, (key, values) in enumerate(arrays.items()):
+            f.write(("{" if i == 0 else ",") + json.dumps(key) + ":")
+            _write_list(f, values)
+        f.write(f',"stats":{stats}}}\n')
+
+
+def _write_list(f: IO[str], values: np.ndarray) -> None:
+    """``values`` as a JSON list: each chunk of rows through json's own encoder (the same text as the whole
+    list's, floats by ``float.__repr__``), its brackets dropped and the chunks joined by commas."""
+    f.write("[")
+    for start in range(0, len(values), _CHUNK_ROWS):
+        if start:
+            f.write(",")
+        f.write(json.dumps(values[start : start + _CHUNK_ROWS].tolist(), **_COMPACT)[1:-1])
+    f.write("]")
 
 
 def _plain(value: Any) -> Any:

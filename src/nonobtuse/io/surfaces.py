@@ -29,7 +29,12 @@ def read_off(path: Path) -> RawInput:
     counts = head if len(head.tokens) > 1 else lines.next("the OFF counts")
     start = 1 if counts is head else 0
     nv, nf = (counts.count(start + k, "the OFF counts") for k in range(2))
-    pts = [floats(lines.next(f"vertex {i}"), 0, 3, f"vertex {i}") for i in range(nv)]
+    fast = lines.numbers(nv, 3)
+    if fast is not None:
+        lines.skip(nv)
+        pts = fast[0]
+    else:
+        pts = [floats(lines.next(f"vertex {i}"), 0, 3, f"vertex {i}") for i in range(nv)]
     facets = []
     for j in range(nf):
         line = lines.next(f"face {j}")

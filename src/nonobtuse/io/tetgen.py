@@ -25,7 +25,7 @@ def read_tetgen(path: Path) -> RawInput:
     if n_nodes == 0:
         points, first_index = _read_nodes(Lines(path.with_suffix(".node")))
     else:
-        points, first_index = _node_rows(lines, n_nodes)
+        points, first_index = _node_rows(lines, n_nodes, _node_width(head))
     base = first_index if first_index in (0, 1) else 0
     facet_head = lines.next("the facet header")
     n_facets = facet_head.count(0, "the number of facets")
@@ -40,8 +40,18 @@ def read_tetgen(path: Path) -> RawInput:
     return RawInput(points, [f for f, _ in rows], holes, regions, source=str(path), facet_markers=markers)
 
 
-def _node_rows(lines: Lines, n: int) -> tuple[np.ndarray, int]:
+def _node_width(head: Line) -> int:
+    """The tokens of a node line the header announces: index, x, y, z, attributes, marker (the fast path's
+    guess; the line-by-line reader needs only the first four)."""
+    return 4 + sum(int(t) for t in head.tokens[2:4] if t.isascii() and t.isdigit())
+
+
+def _node_rows(lines: Lines, n: int, width: int) -> tuple[np.ndarray, int]:
     """n node lines "index x y z ..."; returns the coordinates and the first index (0 or 1 based)."""
+    fast = lines.numbers(n, width, (0,))
+    if fast is not None:
+        lines.skip(n)
+        return np.ascontiguousarray(fast[0][:, 1:4]), int(fast[0][0, 0])
     rows = [lines.next(f"node {i}").need(4, f"node {i}: an index and 3 coordinates") for i in range(n)]
     points = np.array([floats(r, 1, 3, f"node {i}") for i, r in enumerate(rows)], dtype=np.float64)
     return points.reshape(-1, 3), (rows[0].int(0, "the node index") if rows else 0)
@@ -52,7 +62,7 @@ def _read_nodes(lines: Lines) -> tuple[np.ndarray, int]:
     n = head.count(0, "the number of nodes")
     if n == 0:
         raise head.error("no nodes")
-    return _node_rows(lines, n)
+    return _node_rows(lines, n, _node_width(head))
 
 
 def _loop(line: Line, base: int, what: str) -> np.ndarray:

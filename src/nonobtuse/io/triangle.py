@@ -16,6 +16,11 @@ Vertex and segment boundary markers are kept (``Domain.point_markers`` / ``segme
 file has no marker column); vertex attributes and maximum areas are read (and checked to be numbers) but not
 kept. Every error names ``file:line``.
 
+Blocks of plain numeric lines (the vertices, segments and triangles) are parsed in one numpy pass
+(:meth:`nonobtuse.io._files.Lines.numbers`); anything unusual in a block (comments, blank lines, extra
+columns, nan, ids out of order or out of range) sends it to the line-by-line reader, which gives the same
+values and names the problem.
+
 Meshes: :func:`write_triangle` writes ``.node``/``.ele``/``.poly`` with marker columns;
 :func:`read_triangle_mesh` reads them back (or Triangle's own output) as a :class:`Mesh`.
 """
@@ -92,6 +97,15 @@ def _read_vertices(lines: Lines) -> tuple[np.ndarray, np.ndarray, int, np.ndarra
     n_mark = _optional_count(head, 3, "the number of boundary markers")
     if n_mark > 1:
         raise head.error(f"the number of boundary markers must be 0 or 1, found {n_mark}")
+    width = 3 + n_attr + n_mark
+    fast = lines.numbers(n, width, (0, width - 1) if n_mark else (0,))
+    if fast is not None:
+        values, point_lines = fast
+        ids = values[:, 0].astype(np.int64)
+        if ids[0] in (0, 1) and np.array_equal(ids, np.arange(ids[0], ids[0] + n)):
+            lines.skip(n)
+            markers = values[:, -1].astype(np.int64) if n_mark else None
+            return np.ascontiguousarray(values[:, 1:3]), point_lines, int(ids[0]), markers
     points = np.empty((lines.room_for(n), 2), dtype=np.float64)
     point_lines = np.empty(lines.room_for(n), dtype=np.int64)
     markers = np.zeros(lines.room_for(n), dtype=np.int64) if n_mark else None
@@ -123,6 +137,10 @@ def _read_segments(
     n_mark = _optional_count(head, 1, "the number of boundary markers")
     if n_mark > 1:
         raise head.error(f"the number of boundary markers must be 0 or 1, found {n_mark}")
+    fast = lines.numbers(m, 3 + n_mark, tuple(range(3 + n_mark)))
+    if fast is not None and (segments := _ids_in_range(fast[0][:, 1:3], n_points, first_id)) is not None:
+        lines.skip(m)
+        return segments, fast[1], fast[0][:, 3].astype(np.int64) if n_mark else None
     markers = np.zeros(lines.room_for(m), dtype=np.int64) if n_mark else None
     segments = np.empty((lines.room_for(m), 2), dtype=np.int64)
     seg_lines = np.empty(lines.room_for(m), dtype=np.int64)
@@ -134,6 +152,13 @@ def _read_segments(
             markers[k] = line.int(3, "the boundary marker")
         seg_lines[k] = line.number
     return segments, seg_lines, markers
+
+
+def _ids_in_range(ids: np.ndarray, n_points: int, first_id: int) -> np.ndarray | None:
+    """Integer-valued float ids (k, c) as 0-based int64 indices, or None when one is out of range (the
+    line-by-line reader then names it)."""
+    v = ids.astype(np.int64) - first_id
+    return np.ascontiguousarray(v) if len(v) == 0 or (v.min() >= 0 and v.max() < n_points) else None
 
 
 def _vertex_ids(line: Line, count: int, n_points: int, first_id: int, what: str) -> list[int]:
@@ -254,6 +279,11 @@ def _read_elements(lines: Lines, n_points: int, first_id: int) -> tuple[np.ndarr
     if corners != 3:
         raise head.error(f"only 3-node triangles are read, found {corners} nodes per triangle")
     n_attr = _optional_count(head, 2, "the number of attributes")
+    fast = lines.numbers(m, 4 + n_attr, (1, 2, 3))
+    if fast is not None and (triangles := _ids_in_range(fast[0][:, 1:4], n_points, first_id)) is not None:
+        lines.skip(m)
+        lines.expect_end()
+        return triangles, np.ascontiguousarray(fast[0][:, 4]) if n_attr else None
     triangles = np.empty((m, 3), dtype=np.int64)
     regions = np.empty(m, dtype=np.float64) if n_attr else None
     for k in range(m):
