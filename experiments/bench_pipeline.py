@@ -61,8 +61,9 @@ def write_disk_poly(path: Path, n: int, seed: int = 0) -> None:
 
 
 def run_ours(path: Path, out: Path) -> dict[str, float]:
-    from nonobtuse.io import triangle, write_mesh
     from nonobtuse.refine import refine
+
+    from nonobtuse.io import triangle, write_mesh
     from nonobtuse.validate import check_coverage, validate_graph
 
     clock = _Clock()
