@@ -19,7 +19,7 @@ output points that are not input points), boundary_faces, encroached_facets, enc
 fTetWild, whose output does not mark segments), seconds. CSV to
 experiments/results/bench_gabriel3d.csv, and a table on stdout.
 
-Run: ``PYTHONPATH=src .venv/bin/python experiments/bench_gabriel3d.py [--quick] [files...]``
+Run: ``PYTHONPATH=src .venv/bin/python -m experiments.bench_gabriel3d [--quick] [files...]``
 (default: our refinement limited to 60 s and its default budget, 10 n + 10,000 points; --quick: inputs
 up to 500 triangles, our refinement limited to 20 s and 2,000 points, about 1 min).
 """

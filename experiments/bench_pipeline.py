@@ -15,7 +15,7 @@ peak resident memory (``resource.getrusage``, ru_maxrss) after the .vtu (the iss
 write .vtu) and after the .json. Runs of the two tools alternate, best of ``--repeat`` each (a shared
 machine).
 
-    PYTHONPATH=src .venv/bin/python experiments/bench_pipeline.py [--quick] [--sizes 10000 1000000]
+    PYTHONPATH=src .venv/bin/python -m experiments.bench_pipeline [--quick] [--sizes 10000 1000000]
         [--repeat 1]
 
 Writes experiments/results/bench_pipeline.csv (``--quick``: n = 1e4 and 1e5, bench_pipeline_quick.csv) and

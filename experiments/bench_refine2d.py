@@ -8,7 +8,7 @@ domains of 1e3 .. 1e6 vertices: convex polygons with interior points, star-shape
 with interior points, and thin layers (a 1000 m x 1 m strip whose top and bottom are polylines, with
 interior points).
 
-    PYTHONPATH=src .venv/bin/python experiments/bench_refine2d.py [--quick] [--pslg] [--ratio]
+    PYTHONPATH=src .venv/bin/python -m experiments.bench_refine2d [--quick] [--pslg] [--ratio]
 
 Writes experiments/results/bench_refine2d.csv and .png and prints a table. --quick: generated sizes up to 1e4.
 --pslg: only the PSLG inputs, with the CG:SHOP best known counts beside; writes

@@ -70,7 +70,7 @@ We refine each instance with nonobtuse.refine (greedy and project-flip; budget n
 n = 300), Triangle -pD and CGAL make_conforming_Gabriel_2: layers for n = 10..10,000, the fan for
 n = 10..1,000.
 
-    PYTHONPATH=src .venv/bin/python experiments/figure6_propagation.py [--quick]
+    PYTHONPATH=src .venv/bin/python -m experiments.figure6_propagation [--quick]
 
 Writes experiments/results/figure6_propagation.csv (one row per family and n) and .png (--quick: n up to
 1,000 and 100, *_quick.* files) and prints the table and the fitted exponent of each count against n.

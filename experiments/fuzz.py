@@ -16,7 +16,7 @@ a relative 1e-3..1e-15 off a segment, interior points, a hole or radial interfac
 families (``plc_families.py``) at random angles.
 
 Short mode: ``tests/test_fuzz.py`` (derandomized, a fixed number of examples). Long mode, for manual runs:
-``python experiments/fuzz.py --minutes N [--seed S] [--dims 2,3]``: fresh seeds until the time is up; every
+``python -m experiments.fuzz --minutes N [--seed S] [--dims 2,3]``: fresh seeds until the time is up; every
 failure is printed with its falsifying input (hypothesis's shrunk example) and the run exits 1.
 """
 

@@ -21,7 +21,7 @@ Cases: the 2D geological section of ``nonobtuse.demo`` (refined by ``nonobtuse.r
 constrained Delaunay triangulation) and a 3D part from ``../shared/data/3d`` (joint.off: ``refine_gabriel``
 against TetGen ``-pq1.414``). ``--quick`` runs the 2D section only.
 
-    PYTHONPATH=src python experiments/fv_maximum_principle.py [--quick] [--part PATH]
+    PYTHONPATH=src python -m experiments.fv_maximum_principle [--quick] [--part PATH]
 
 Outputs ``experiments/results/fv_maximum_principle.csv`` (counts) and ``fv_maximum_principle.png`` (per mesh,
 the cells where either problem breaks the principle, coloured by the overshoot or the negative response),

@@ -1,6 +1,6 @@
 """Timing of 2D domain validation (nonobtuse.validate.validate_domain) on large generated inputs and Sweden.
 
-Run: PYTHONPATH=src .venv/bin/python experiments/validate2d_timing.py [n]   (default n = 1_000_000)
+Run: PYTHONPATH=src .venv/bin/python -m experiments.validate2d_timing [n]   (default n = 1_000_000)
 Prints seconds for: n uniform random points (convex hull), a smooth star-shaped n-gon
 (r = 1 + 0.2 sin 7t), and cdt_Constrained_Sweden.poly with convex_hull=True when ../shared/data is present;
 then what validating once saves: triangulate on the n-gon as validated (not checked again) and as built
