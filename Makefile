@@ -58,7 +58,9 @@ SANITIZE := build/sanitize
 SANITIZER_ENV = ASAN_OPTIONS=halt_on_error=1:detect_leaks=$(1):exitcode=86 \
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:exitcode=86
 
-# -O1 -g: readable reports at a fraction of -O2's compile time.
+# -O1 -g: readable reports at a fraction of -O2's compile time. Python runs preload the ASan runtime (it must
+# come first) and libstdc++: the python binary does not link libstdc++, so without it ASan's __cxa_throw
+# interceptor finds no real __cxa_throw and aborts at the first C++ exception (CGAL's interval filters throw).
 sanitize: deps $(PY)
 	$(PY) -m pip install -q scikit-build-core pybind11 ninja
 	cmake -S . -B $(SANITIZE) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
@@ -69,7 +71,8 @@ sanitize: deps $(PY)
 	$(call SANITIZER_ENV,1) $(SANITIZE)/nonobtuse_tests --gtest_brief=1
 	rm -rf $(SANITIZE)/py && mkdir -p $(SANITIZE)/py && cp -r src/nonobtuse $(SANITIZE)/py/
 	rm -f $(SANITIZE)/py/nonobtuse/_core*.so && cp $(SANITIZE)/_core*.so $(SANITIZE)/py/nonobtuse/
-	$(call SANITIZER_ENV,0) LD_PRELOAD=$$($(CXX) -print-file-name=libasan.so) PYTHONPATH=$(SANITIZE)/py \
+	$(call SANITIZER_ENV,0) LD_PRELOAD="$$($(CXX) -print-file-name=libasan.so) $$($(CXX) -print-file-name=libstdc++.so)" \
+	  PYTHONPATH=$(SANITIZE)/py \
 	  .ci/sanitize-smoke $(abspath $(PY)) $(SANITIZE)/smoke
 
 clean:
