@@ -12,6 +12,8 @@ from nonobtuse.cli.mesh2d import add_domain_options, load
 from nonobtuse.refinement import STRATEGIES, default_steiner_budget
 from nonobtuse.validate import require_points_in_domain
 
+PER_EDGE_KEYS = ("edges", "diagnosis")  # in --json only with --verbose: one entry per input edge
+
 
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
@@ -33,7 +35,11 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help=f"Steiner budget (default: {b1 - b0} n + {b0} for n input points)")
     p.add_argument("--threads", type=int, default=2,
                    help="threads for the whole-mesh passes of large inputs (default 2; same output)")
-    p.add_argument("--json", action="store_true", help="print the statistics as JSON on stdout")
+    p.add_argument("--json", action="store_true", help="print the summary statistics as JSON on stdout")
+    p.add_argument("--verbose", action="store_true", help="with --json: also the per-edge statistics and "
+                   "the diagnosis (one entry per input edge: large on big inputs)")
+    p.add_argument("-q", "--quiet", action="store_true", help="print nothing on success (no summary, no "
+                   "progress); errors still go to stderr")
     guards.add_timings_option(p)
     add_domain_options(p)
     p.set_defaults(func=run)
@@ -46,16 +52,20 @@ def run(args: argparse.Namespace) -> int:
 
     domain = load(args)
     guards.refuse_overwriting(guards.files_read(args.input, domain), mesh_output_paths(args.output))
+    progress = guards.Progress(quiet=args.quiet, size=len(domain.points))
+    progress.start(f"refining {len(domain.points)} points, {len(domain.segments)} segments ({args.strategy})")
     result = refine(domain, strategy=args.strategy, max_steiner=args.max_steiner, threads=args.threads)
+    progress.done(f"{result.status}, {result.stats['steiner_points']} Steiner points; writing {args.output}")
     require_points_in_domain(domain, result.mesh.triangles)
     write_output(guards.without_timings(result.mesh, args.timings), args.output, thickness=args.thickness)
     s = result.stats
     if args.json:
-        json.dump(s, sys.stdout)
+        json.dump(s if args.verbose else {k: v for k, v in s.items() if k not in PER_EDGE_KEYS}, sys.stdout)
         print()
-    else:
+    elif not args.quiet:
         print(
             f"{args.input}: {s['status']}, {s['steiner_points']} Steiner points ({args.strategy}), "
             f"lower bound {s['lower_bound']}, optimal {s['optimal']}, {s['seconds']:.3f} s -> {args.output}"
         )
     return EXIT_OK if result.converged else EXIT_NOT_CONVERGED
+
