@@ -41,6 +41,22 @@ def non_negative(text: str) -> float:
     return x
 
 
+def positive(text: str) -> float:
+    """An argparse type: a finite number > 0 (a vertical exaggeration)."""
+    x = non_negative(text)
+    if x == 0:
+        raise argparse.ArgumentTypeError("expected a finite number > 0, found 0")
+    return x
+
+
+def add_plot_options(p: argparse.ArgumentParser, what: str) -> None:
+    p.add_argument("--plot", metavar="PNG", help=f"also draw {what}: edges facing an obtuse angle in red "
+                   "with their diametral circles and apex, Steiner points in blue, close-ups of the worst at "
+                   "true scale")
+    p.add_argument("--exaggeration", type=positive, default=1.0,
+                   help="vertical exaggeration of the main panels (labelled on them; default 1)")
+
+
 def _same_file(a: Path, b: Path) -> bool:
     if a.resolve() == b.resolve():
         return True
