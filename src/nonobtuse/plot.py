@@ -29,7 +29,7 @@ def _offending_edges(report: CheckReport) -> list[ObtuseAngle]:
     """One offender per offending edge (an interface edge may be obtuse on both sides): the larger angle."""
     seen: dict[tuple[int, int], ObtuseAngle] = {}
     for o in report.offenders:  # largest angle first
-        seen.setdefault(tuple(sorted(o.edge)), o)
+        seen.setdefault((min(o.edge), max(o.edge)), o)
     return list(seen.values())
 
 
