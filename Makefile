@@ -1,5 +1,7 @@
-# make run   : install what is missing, build, run the demo on the built-in cross-section
-# make test  : install what is missing, build, run the C++ tests (ctest) and the Python tests (pytest)
+# make run   : install what the demo needs (the package and its light dependencies, no dev/3D extras), build,
+#              run the demo on the built-in cross-section
+# make test  : install what is missing (the dev extra: 3D backends, test tools), build, run the C++ tests
+#              (ctest) and the Python tests (pytest)
 # make dev   : incremental developer build (through ccache when installed); puts _core next to the sources
 #              (use PYTHONPATH=src)
 # make stubs : regenerate src/nonobtuse/_core.pyi from the built _core (after make dev; commit the result)
@@ -10,13 +12,12 @@ SHELL := /bin/bash
 PYTHON ?= python3
 VENV := .venv
 PY := $(VENV)/bin/python
-APT_PACKAGES := libcgal-dev libgmp-dev libmpfr-dev libboost-dev libgtest-dev cmake ninja-build \
-                libusb-1.0-0 libvulkan1 mesa-vulkan-drivers
+APT_PACKAGES := libcgal-dev libgmp-dev libmpfr-dev libboost-dev libgtest-dev cmake ninja-build
 BUILD := build/pkg
 
-.PHONY: run test dev sanitize deps install clean stubs mypy
+.PHONY: run test dev sanitize deps install install-demo clean stubs mypy
 
-run: install
+run: install-demo
 	$(VENV)/bin/nonobtuse demo
 
 test: install
@@ -34,6 +35,9 @@ deps:
 $(PY):
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade pip
+
+install-demo: deps $(PY)
+	$(PY) -m pip install -q ".[demo]" -Cbuild-dir=$(BUILD)
 
 install: deps $(PY)
 	$(PY) -m pip install -q ".[dev]" -Cbuild-dir=$(BUILD) -Ccmake.define.NONOBTUSE_BUILD_TESTS=ON

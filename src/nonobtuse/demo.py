@@ -11,6 +11,7 @@ same figures again, beside the lower bound and Triangle -pD's count for the same
 from __future__ import annotations
 
 from collections.abc import Callable
+from pathlib import Path
 
 import numpy as np
 
@@ -30,6 +31,7 @@ CURVES = (
     (30.0, 1.5, 900.0, 4.1, 83),
     (42.0, 3.0, 3100.0, 2.7, 37),  # topography
 )
+EXAGGERATION = 20.0  # vertical exaggeration of the demo's picture: 4 km by 42 m is a line at true scale
 # Region attribute (layer number, bottom = 1) -> conductivity (e.g. m/day): shale, sand, silt, gravel.
 CONDUCTIVITY = {1.0: 1e-3, 2.0: 5.0, 3.0: 0.1, 4.0: 20.0}
 
@@ -78,17 +80,27 @@ def stage_report(title: str, mesh: Mesh, conductivity: dict[float, float] = COND
     return "\n".join(lines)
 
 
-def run(out: Callable[[str], None] = print) -> int:
-    """Build the cross-section, triangulate it, report. Returns the exit code (0)."""
+def run(out: Callable[[str], None] = print, plot: str | Path | None = None) -> int:
+    """Build the cross-section, triangulate it, refine it, report; with ``plot``, also write the
+    before/after picture there (vertical exaggeration ``EXAGGERATION``, labelled; close-ups at true scale).
+    Returns the exit code (0)."""
     domain = cross_section()
     out(f"{domain.source}: {LENGTH_M / 1000:g} km long, {CURVES[-1][0]:g} m thick, {len(CURVES) - 2} "
         f"interfaces, {len(domain.points)} points, {len(domain.segments)} segments")
-    out(stage_report("before: constrained Delaunay triangulation", triangulate(domain)))
+    before = triangulate(domain)
+    out(stage_report("before: constrained Delaunay triangulation", before))
     result = refine(domain)
     s = result.stats
     out(stage_report(f"after: refine (greedy, {s['status']} in {s['seconds']:.2f} s)", result.mesh))
     out(f"  Steiner points: {s['steiner_points']} (lower bound {s['lower_bound']})")
     out(f"  Triangle -pD on the same domain: {_triangle_pd_summary(domain)}")
+    if plot is not None:
+        from nonobtuse.plot import plot_stages  # matplotlib only when asked
+
+        plot_stages([("before", before, check_mesh(before)), ("after refine", result.mesh,
+                                                               check_mesh(result.mesh))],
+                    plot, vertical_exaggeration=EXAGGERATION, title=domain.source, unit="m")
+        out(f"picture -> {plot}")
     return 0
 
 

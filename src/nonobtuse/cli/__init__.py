@@ -22,6 +22,9 @@ def build_parser() -> argparse.ArgumentParser:
         "repair with few Steiner points.",
         epilog="exit codes: 0 ok, 1 a check found violations, 2 invalid input, 3 refinement did not converge",
     )
+    from nonobtuse import __version__
+
+    parser.add_argument("--version", action="version", version=f"nonobtuse {__version__}")
     sub = parser.add_subparsers(dest="command", required=True)
     # each module adds its subcommands and sets func=
     from nonobtuse.cli import export, mesh2d, mesh3d, refine
@@ -42,6 +45,9 @@ def main(argv: list[str] | None = None) -> int:
         return int(args.func(args))
     except InvalidInputError as e:
         print(f"nonobtuse: invalid input: {e}", file=sys.stderr)
+        return EXIT_INVALID
+    except ModuleNotFoundError as e:  # an optional package (the 3d or demo extra) is not installed
+        print(f"nonobtuse: {e}", file=sys.stderr)
         return EXIT_INVALID
     except BrokenPipeError:  # the reader of stdout went away (`nonobtuse check ... | head`): stop quietly
         devnull = os.open(os.devnull, os.O_WRONLY)

@@ -7,6 +7,8 @@ import argparse
 import dataclasses
 import math
 import os
+import sys
+import time
 from pathlib import Path
 
 from nonobtuse.domain import Domain
@@ -37,6 +39,22 @@ def non_negative(text: str) -> float:
     if not math.isfinite(x) or x < 0:
         raise argparse.ArgumentTypeError(f"expected a finite number >= 0, found {text}")
     return x
+
+
+def positive(text: str) -> float:
+    """An argparse type: a finite number > 0 (a vertical exaggeration)."""
+    x = non_negative(text)
+    if x == 0:
+        raise argparse.ArgumentTypeError("expected a finite number > 0, found 0")
+    return x
+
+
+def add_plot_options(p: argparse.ArgumentParser, what: str) -> None:
+    p.add_argument("--plot", metavar="PNG", help=f"also draw {what}: edges facing an obtuse angle in red "
+                   "with their diametral circles and apex, Steiner points in blue, close-ups of the worst at "
+                   "true scale")
+    p.add_argument("--exaggeration", type=positive, default=1.0,
+                   help="vertical exaggeration of the main panels (labelled on them; default 1)")
 
 
 def _same_file(a: Path, b: Path) -> bool:
@@ -74,3 +92,24 @@ def without_timings(mesh: Mesh, keep: bool) -> Mesh:
     if keep:
         return mesh
     return dataclasses.replace(mesh, stats={k: v for k, v in mesh.stats.items() if k != "seconds"})
+
+
+PROGRESS_MIN_POINTS = 100_000  # below this a 2D refine takes about a second: no progress lines
+
+
+class Progress:
+    """Progress lines on stderr for long work: only when stderr is a terminal, the input has at least
+    ``PROGRESS_MIN_POINTS`` points and ``quiet`` is false (pipes, logs and tests see nothing)."""
+
+    def __init__(self, *, quiet: bool, size: int) -> None:
+        self.active = not quiet and size >= PROGRESS_MIN_POINTS and sys.stderr.isatty()
+        self._t0 = time.perf_counter()
+
+    def start(self, what: str) -> None:
+        if self.active:
+            self._t0 = time.perf_counter()
+            print(f"nonobtuse: {what} ...", file=sys.stderr, flush=True)
+
+    def done(self, what: str) -> None:
+        if self.active:
+            print(f"nonobtuse: {what} ({time.perf_counter() - self._t0:.1f} s)", file=sys.stderr, flush=True)

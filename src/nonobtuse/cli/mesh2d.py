@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 from pathlib import Path
 
 from nonobtuse import demo
@@ -53,6 +54,7 @@ def _check(args: argparse.Namespace) -> int:
         from nonobtuse.plot import plot_check  # matplotlib only when asked
 
         plot_check(mesh, report, args.plot, vertical_exaggeration=args.exaggeration)
+        print(f"picture -> {args.plot}", file=sys.stderr)
     return EXIT_OK if report.ok else EXIT_VIOLATIONS
 
 
@@ -70,9 +72,16 @@ def register(sub: argparse._SubParsersAction) -> None:
                    "file (its constrained Delaunay triangulation is checked)")
     p.add_argument("--json", action="store_true", help="print the full report as JSON")
     add_domain_options(p)
-    p.add_argument("--plot", metavar="PNG", help="also draw the mesh, offending edges in red")
-    p.add_argument("--exaggeration", type=float, default=1.0, help="vertical exaggeration of the plot")
+    guards.add_plot_options(p, "the mesh")
     p.set_defaults(func=_check)
 
     p = sub.add_parser("demo", help="run on a built-in thin-layer geological cross-section")
-    p.set_defaults(func=lambda args: demo.run())
+    p.add_argument("--plot", metavar="PNG", help="also draw the cross-section before and after refinement "
+                   f"(vertical exaggeration x{demo.EXAGGERATION:g}, labelled; close-ups at true scale)")
+    p.set_defaults(func=_demo)
+
+
+def _demo(args: argparse.Namespace) -> int:
+    if args.plot:
+        guards.refuse_overwriting([], [Path(args.plot)])
+    return demo.run(plot=args.plot)

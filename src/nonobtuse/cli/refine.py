@@ -5,12 +5,17 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from pathlib import Path
 
 from nonobtuse.cli import guards
 from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK
 from nonobtuse.cli.mesh2d import add_domain_options, load
+from nonobtuse.domain import Domain
+from nonobtuse.mesh import Mesh
 from nonobtuse.refinement import STRATEGIES, default_steiner_budget
 from nonobtuse.validate import require_points_in_domain
+
+PER_EDGE_KEYS = ("edges", "diagnosis")  # in --json only with --verbose: one entry per input edge
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -33,8 +38,13 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help=f"Steiner budget (default: {b1 - b0} n + {b0} for n input points)")
     p.add_argument("--threads", type=int, default=2,
                    help="threads for the whole-mesh passes of large inputs (default 2; same output)")
-    p.add_argument("--json", action="store_true", help="print the statistics as JSON on stdout")
+    p.add_argument("--json", action="store_true", help="print the summary statistics as JSON on stdout")
+    p.add_argument("--verbose", action="store_true", help="with --json: also the per-edge statistics and "
+                   "the diagnosis (one entry per input edge: large on big inputs)")
+    p.add_argument("-q", "--quiet", action="store_true", help="print nothing on success (no summary, no "
+                   "progress); errors still go to stderr")
     guards.add_timings_option(p)
+    guards.add_plot_options(p, "the constrained Delaunay triangulation before and the mesh after refinement")
     add_domain_options(p)
     p.set_defaults(func=run)
 
@@ -45,17 +55,36 @@ def run(args: argparse.Namespace) -> int:
     from nonobtuse.refinement import refine
 
     domain = load(args)
-    guards.refuse_overwriting(guards.files_read(args.input, domain), mesh_output_paths(args.output))
+    plots = [Path(args.plot)] if args.plot else []
+    guards.refuse_overwriting(guards.files_read(args.input, domain), mesh_output_paths(args.output) + plots)
+    progress = guards.Progress(quiet=args.quiet, size=len(domain.points))
+    progress.start(f"refining {len(domain.points)} points, {len(domain.segments)} segments ({args.strategy})")
     result = refine(domain, strategy=args.strategy, max_steiner=args.max_steiner, threads=args.threads)
+    progress.done(f"{result.status}, {result.stats['steiner_points']} Steiner points; writing {args.output}")
     require_points_in_domain(domain, result.mesh.triangles)
     write_output(guards.without_timings(result.mesh, args.timings), args.output, thickness=args.thickness)
     s = result.stats
     if args.json:
-        json.dump(s, sys.stdout)
+        json.dump(s if args.verbose else {k: v for k, v in s.items() if k not in PER_EDGE_KEYS}, sys.stdout)
         print()
-    else:
+    elif not args.quiet:
         print(
             f"{args.input}: {s['status']}, {s['steiner_points']} Steiner points ({args.strategy}), "
             f"lower bound {s['lower_bound']}, optimal {s['optimal']}, {s['seconds']:.3f} s -> {args.output}"
         )
+    if args.plot:
+        _plot(domain, result.mesh, args)
     return EXIT_OK if result.converged else EXIT_NOT_CONVERGED
+
+
+def _plot(domain: Domain, refined: Mesh, args: argparse.Namespace) -> None:
+    """The before/after picture: the constrained Delaunay triangulation of ``domain`` and ``refined``."""
+    from nonobtuse.certificate import check
+    from nonobtuse.plot import plot_stages
+    from nonobtuse.triangulation import triangulate
+
+    before = triangulate(domain)
+    plot_stages([("before", before, check(before)), ("after refine", refined, check(refined))], args.plot,
+                vertical_exaggeration=args.exaggeration, title=Path(args.input).name)
+    if not args.quiet:
+        print(f"picture -> {args.plot}", file=sys.stderr)

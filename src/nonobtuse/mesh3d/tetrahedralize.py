@@ -135,8 +135,15 @@ def _cgal(plc: PLC, options: dict[str, Any]) -> TetMesh:
 def _tets_by_winding_number(plc: PLC) -> np.ndarray:
     """Delaunay cells of the PLC's vertices whose centroid has generalized winding number >= 1/2 w.r.t. the
     PLC's (outward oriented) triangles: floating point, for PLCs the Delaunay tetrahedralization does not
-    conform to; internal facets and dangling facets blur it."""
-    import igl
+    conform to; internal facets and dangling facets blur it. Needs libigl (the 3d extra): ModuleNotFoundError
+    saying so without it."""
+    try:
+        import igl
+    except ModuleNotFoundError:
+        raise ModuleNotFoundError("backend 'cgal': the Delaunay tetrahedralization of this PLC's vertices "
+                                  "does not conform to its facets, and the fallback (generalized winding "
+                                  "numbers) needs libigl: pip install 'nonobtuse[3d]' (or libigl), or use "
+                                  "--backend tetgen") from None
 
     points = np.ldexp(plc.points, -power_of_two_exponent(plc.points))  # exact; float sums stay finite
     cells = _core.delaunay_tetrahedra(points)
