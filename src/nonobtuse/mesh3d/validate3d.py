@@ -189,12 +189,17 @@ def outward_flips(plc: PLC, triangles: np.ndarray) -> np.ndarray:
     """Per face, whether to reverse it so that each connected component of the (consistently oriented)
     surface (faces joined by edges of exactly two faces) encloses a positive signed volume, i.e. faces
     outward. Cavities (nested shells) come out outward-facing as well. The sign is a floating-point sum; it is
-    a convention for writers and viewers, not a certificate, and nothing downstream depends on it."""
+    a convention for writers and viewers, not a certificate, and nothing downstream depends on it. It is
+    computed on the points scaled by a power of two, so it does not overflow at any float64 scale."""
     m = len(triangles)
     r1, r2 = manifold_face_pairs(edge_faces(triangles))
     graph = coo_matrix((np.ones(len(r1)), (r1 // 3, r2 // 3)), shape=(m, m))
     _, comp = connected_components(graph, directed=False)
-    p = plc.points[triangles]
+    # Scaled by a power of two so the largest |coordinate| lies in [1/2, 1): the triple products neither
+    # overflow (coordinates near 1e300) nor underflow to 0 (near 1e-300); the sign is unchanged.
+    largest = float(np.abs(plc.points).max()) if plc.points.size else 0.0
+    scale = -int(np.frexp(largest)[1]) if np.isfinite(largest) and largest > 0 else 0
+    p = np.ldexp(plc.points[triangles], scale)
     vol6 = np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2]))
     comp_vol = np.bincount(comp, weights=vol6)
     return comp_vol[comp] < 0
