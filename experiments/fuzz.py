@@ -203,7 +203,7 @@ def hull_plc(draw) -> PLC:
         faces.append(s if np.dot(np.cross(b - a, c - a), eq[:3]) > 0 else s[::-1])
     raw = RawInput(p[keep], [Facet([index[f]]) for f in faces], source="hull")
     try:
-        return build_plc(raw, surface=True, fix_orientation=True)
+        return build_plc(raw, surface=True)
     except InvalidInputError:
         assume(False)
 

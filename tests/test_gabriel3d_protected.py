@@ -78,7 +78,7 @@ def test_schonhardt_with_orientation_fixed_reports_both_attempts():
     path = DATA / "schonhardt.off"
     if not path.exists():
         pytest.skip("../shared/data not present")
-    plc = load_plc(path, fix_orientation=True)
+    plc = load_plc(path)  # load_plc orients it (orientation is never refused)
     res = refine_gabriel(plc, max_steiner=2_000, time_limit=20)
     assert (res.status == "converged") == check_gabriel(res.mesh).ok
     if res.status != "converged":
