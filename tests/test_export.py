@@ -428,16 +428,21 @@ def test_3d_corner_tet_has_negative_coefficients():
 def test_refine3d_writes_uge_with_no_negative_coefficient(tmp_path, capsys):
     from mesh3d_shapes import TET_TRIANGLES, write_off
 
-    low = write_off(tmp_path / "low.off", np.array([[0, 0, 0], [4, 0, 0], [0, 4, 0], [1, 1, 2]]),
-                    TET_TRIANGLES.tolist())
+    corners = np.array([[0, 0, 0], [4, 0, 0], [0, 4, 0], [1, 1, 2]])
+    low = write_off(tmp_path / "low.off", corners, TET_TRIANGLES.tolist())
     out = tmp_path / "low.uge"
     assert main(["refine3d", str(low), "-o", str(out), "--max-steiner", "500"]) == 0
     assert "negative coefficients (exact sign of -area/distance > 0): 0" in capsys.readouterr().err
     cells, conns = read_uge(out)
     assert (conns[:, 5] >= 0).all()
     assert cells[:, 4].sum() == pytest.approx(4 * 4 / 2 * 2 / 3)  # base area 8 times height 2 over 3
+    # Boundary files are grouped by facet marker; OFF has none, so every facet has marker 0 and the whole
+    # boundary is one file, whose pieces cover the tet's surface.
     markers = sorted(int(p.stem.rsplit("_", 1)[1]) for p in tmp_path.glob("low_boundary_*.ex"))
-    assert len(markers) == 4  # the four facets of the tet
+    assert markers == [0]
+    c = corners[TET_TRIANGLES]
+    surface = np.linalg.norm(np.cross(c[:, 1] - c[:, 0], c[:, 2] - c[:, 0]), axis=1).sum() / 2
+    assert read_ex(boundary_path(out, 0))[:, 4].sum() == pytest.approx(surface, rel=1e-12)
 
 
 def test_fv_maximum_principle_quick(tmp_path):
