@@ -110,7 +110,7 @@ def test_region_attributes_land_on_the_tets_of_their_region(name):
 
 
 def test_internal_facets_are_refined_and_certified():
-    # the two wavy interfaces of the layered box are internal facets (facet ids of their triangles: marker
+    # the two wavy interfaces of the layered box are internal facets (facet ids of their triangles; marker
     # 11 and 12 in the file); the Delaunay tetrahedralization of the input has encroached interface faces
     plc = load_plc(DATA / "layered_box.poly")
     interface = set(range(2, 2 + 2 * len(corpus3d.layer_grid()[1])))  # after the bottom and top facets
@@ -120,7 +120,7 @@ def test_internal_facets_are_refined_and_certified():
     assert result.status == "converged"
     # the certificate covers every facet, the interfaces included, once: the boundary faces of each facet
     # have the area of the facet
-    got = facet_areas(result.mesh.points, result.mesh.boundary_faces, result.mesh.face_markers)
+    got = facet_areas(result.mesh.points, result.mesh.boundary_faces, result.mesh.face_facets)
     want = facet_areas(plc.points, plc.triangles, plc.facet_ids)
     assert got.keys() == want.keys() and interface <= got.keys()
     assert all(got[f] == pytest.approx(want[f], rel=1e-12) for f in want)
@@ -173,7 +173,11 @@ def test_region_attributes_reach_the_meshio_formats(tmp_path, suffix):
     result = refine_gabriel(load_plc(DATA / "layered_box.poly"), time_limit=60)
     write_tetmesh(result.mesh, tmp_path / f"out{suffix}")
     back = meshio.read(tmp_path / f"out{suffix}")
-    key = "marker" if suffix == ".vtu" else "gmsh:physical"
+    # .vtu: the region attribute is cell data "region" ("marker" holds the face markers, 0 on tets);
+    # .msh: the physical tag of a tet (the integer regions of the layered box map to themselves)
+    key = "region" if suffix == ".vtu" else "gmsh:physical"
     tetra = [k for k, block in enumerate(back.cells) if block.type == "tetra"]
     assert len(tetra) == 1
-    assert np.array_equal(back.cell_data[key][tetra[0]], result.mesh.tet_regions.astype(np.int64))
+    assert sorted(set(result.mesh.tet_regions.tolist())) == [1.0, 2.0, 3.0]
+    regions = np.asarray(back.cell_data[key][tetra[0]], dtype=np.float64)
+    assert np.array_equal(regions, result.mesh.tet_regions)
