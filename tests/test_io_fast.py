@@ -178,17 +178,46 @@ def test_numeric_rows_agree_with_float_and_int(rows):
         assert int(row[0]) == values[0]
 
 
+def _axis(rng: np.random.Generator, m: int, special: float) -> np.ndarray:
+    """m strictly increasing coordinates of magnitudes 1e-30 to 1e30, both signs, ``special`` among them."""
+    v = rng.normal(size=m) * 10.0 ** rng.integers(-30, 30, size=m)
+    v[0] = special
+    v = np.unique(v)  # sorted; keeps -0.0
+    assert len(v) == m
+    return v
+
+
 def _mesh(n: int, seed: int) -> Mesh:
+    """A valid mesh of about n points (read_mesh refuses overlapping triangles): a tensor grid of random
+    strictly increasing x and y values (so every cell is a proper rectangle and its two triangles are
+    counter-clockwise, exactly) cut by random diagonals, the points in random order, one at (-0.0, 5e-324)."""
     rng = np.random.default_rng(seed)
-    points = rng.normal(size=(n, 2)) * 10.0 ** rng.integers(-30, 30, size=(n, 1))
-    points[0] = [-0.0, 5e-324]
-    triangles = rng.integers(0, n, size=(2 * n, 3))
-    segments = rng.integers(0, n, size=(n, 2))
-    k = max(1, n // 2)
+    nx = max(1, int(np.sqrt(n)))
+    ny = -(-n // nx)
+    x, y = _axis(rng, nx, -0.0), _axis(rng, ny, 5e-324)
+    grid = np.column_stack([np.repeat(x, ny), np.tile(y, nx)])  # grid point i * ny + j is (x[i], y[j])
+    special = int(np.flatnonzero(x == 0)[0]) * ny + int(np.flatnonzero(y == 5e-324)[0])
+    order = rng.permutation(len(grid))
+    at = int(np.flatnonzero(order == special)[0])
+    order[[0, at]] = order[[at, 0]]
+    new = np.empty_like(order)
+    new[order] = np.arange(len(order))  # new index of grid point g
+    points = grid[order]
+    assert points[0].tolist() == [-0.0, 5e-324] and np.signbit(points[0, 0])
+    i, j = (a.ravel() for a in np.meshgrid(np.arange(nx - 1), np.arange(ny - 1), indexing="ij"))
+    a, b, c, d = (new[(i + di) * ny + j + dj] for di, dj in ((0, 0), (1, 0), (1, 1), (0, 1)))  # CCW
+    flip = rng.integers(0, 2, size=len(a)).astype(bool)
+    first = np.where(flip[:, None], np.column_stack([a, b, d]), np.column_stack([a, b, c]))
+    second = np.where(flip[:, None], np.column_stack([b, c, d]), np.column_stack([a, c, d]))
+    triangles = np.concatenate([first, second]).reshape(-1, 3)
+    edges = np.unique(np.sort(triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1), axis=0)
+    segments = edges[rng.permutation(len(edges))[:n]].reshape(-1, 2)
+    m, k = len(points), max(1, len(points) // 2)
     return Mesh(
         points, triangles, segments, points[:k].copy(), rng.integers(0, k, size=(3, 2)),
-        rng.normal(size=2 * n), stats={"status": "ok", "seconds": 0.5, "per_edge": np.arange(3)},
-        point_markers=rng.integers(-(2**40), 2**40, size=n), segment_markers=rng.integers(0, 9, size=n),
+        rng.normal(size=len(triangles)), stats={"status": "ok", "seconds": 0.5, "per_edge": np.arange(3)},
+        point_markers=rng.integers(-(2**40), 2**40, size=m),
+        segment_markers=rng.integers(0, 9, size=len(segments)),
     )  # fmt: skip
 
 

@@ -12,6 +12,7 @@ import pytest
 import nonobtuse
 from nonobtuse import Domain, _core
 from nonobtuse.cli import main
+from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import load_domain
 from nonobtuse.validate import check_coverage, ensure_validated, validate_domain
 
@@ -105,10 +106,19 @@ def test_no_entry_point_modifies_its_argument(entry, validated):
 
 
 def test_check_coverage_decides_the_hull_on_a_copy():
-    # Only dangling segments (they enclose nothing): the hull is decided True, on the copy only.
-    d = Domain([[0, 0], [1, 0], [0, 1], [1, 1]], [[0, 3]])
+    # A point set (no segments): the hull is decided True, on the copy only.
+    d = Domain([[0, 0], [1, 0], [0, 1], [1, 1]])
     out = check_coverage(d, decide_convex_hull=True)
     assert out.convex_hull and not d.convex_hull and out is not d
+    # Only dangling segments (they enclose nothing): decided False on the copy, so refused as an open
+    # boundary (the hull closes it only when asked); the argument is untouched either way.
+    d = Domain([[0, 0], [1, 0], [0, 1], [1, 1]], [[0, 3]])
+    with pytest.raises(InvalidInputError, match=r"not closed; dangling ends at .*convex_hull=True"):
+        check_coverage(d, decide_convex_hull=True)
+    assert not d.convex_hull and d.repairs == []
+    d.convex_hull = True
+    out = check_coverage(d, decide_convex_hull=False)
+    assert out is d and d.convex_hull
 
 
 def test_load_domain_marks_the_domain_validated(tmp_path):

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'Junction', 'Mesh2D', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'check_gabriel', 'classify_edges', 'conforming_gabriel_steiner_points', 'coupling_signs', 'default_steiner_budget', 'delaunay_tetrahedra', 'find_segment_intersections', 'inspect_domain', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'refine', 'refine_gabriel', 'triangulate']
+__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'Junction', 'Mesh2D', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'check_gabriel', 'classify_edges', 'conforming_gabriel_steiner_points', 'coupling_signs', 'default_steiner_budget', 'delaunay_restricted_to_plc', 'delaunay_tetrahedra', 'dual_area_signs', 'find_segment_intersections', 'inspect_domain', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'refine', 'refine_gabriel', 'triangulate']
 class Mesh2D:
     """
     A triangulated 2D domain (read-only; each array attribute is a new array on each access).
@@ -218,12 +218,22 @@ class Refine2DResult:
     def lower_bound(self) -> int:
         ...
     @property
+    def max_steiner(self) -> int:
+        """
+        the Steiner budget used (its default resolved)
+        """
+    @property
+    def max_steiner_offset(self) -> float:
+        """
+        largest distance of a Steiner point off its input segment over the segment's length
+        """
+    @property
     def mesh(self) -> Mesh2D:
         """
         the constrained Delaunay triangulation of the refined domain
         """
     @property
-    def obtuse_boundary_triangles(self) -> int:
+    def obtuse_boundary_sides(self) -> int:
         """
         exact certificate of mesh: obtuse boundary sides (0 when converged)
         """
@@ -368,9 +378,29 @@ class Refine3DResult:
     def greedy_splits(self) -> int:
         ...
     @property
+    def max_steiner(self) -> int:
+        """
+        the Steiner budget used (its default resolved)
+        """
+    @property
+    def min_length(self) -> float:
+        """
+        the minimum length used (its default resolved)
+        """
+    @property
+    def other_attempt(self) -> str:
+        """
+        status and stop reason of the attempt not returned
+        """
+    @property
     def points(self) -> numpy.typing.NDArray[numpy.float64]:
         """
         (n, 3) float64
+        """
+    @property
+    def protecting_balls(self) -> int:
+        """
+        apex vertices protected
         """
     @property
     def seconds(self) -> float:
@@ -394,6 +424,11 @@ class Refine3DResult:
     @property
     def steiner_on_segments(self) -> int:
         ...
+    @property
+    def strategy(self) -> str:
+        """
+        'shells', 'greedy', 'midpoint', 'protected', or '<rule>+protected' after the fallback
+        """
     @property
     def tet_regions(self) -> numpy.typing.NDArray[numpy.float64]:
         """
@@ -430,12 +465,25 @@ def coupling_signs(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float6
     """
 def default_steiner_budget(n_points: typing.SupportsInt | typing.SupportsIndex) -> int:
     """
-    The default Steiner budget for n input points: 10 n + 1000.
+    The Steiner budget refine uses for n input points when max_steiner < 0 (refine2d.h).
+    """
+def delaunay_restricted_to_plc(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], facet_ids: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> dict:
+    """
+    The Delaunay tetrahedralization of a PLC's vertices restricted to its regions (exact flood fill across
+    faces on no facet). Returns a dict: tets (t, 4), tet_regions (t,), boundary_faces (f, 3), face_markers
+    (f,), uncovered_facets (facet ids the faces do not cover; empty iff it conforms to every facet).
     """
 def delaunay_tetrahedra(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> numpy.typing.NDArray[numpy.int64]:
     """
     Finite cells (t, 4) int64 of the Delaunay tetrahedralization of points (n, 3), positively oriented.
     Raises InvalidInputError when two points coincide.
+    """
+def dual_area_signs(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], tets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> dict:
+    """
+    Exact sign of the Voronoi face area dual to every edge of a tet mesh (per-tet decomposition, clipped to
+    the mesh). points (n,3) float64, tets (t,4) int64 positively oriented (InvalidInputError otherwise).
+    Returns a dict: edges (E,2) int64 (a < b, sorted), sign (E,) int8 (-1, 0, +1), exact_evaluations (int:
+    edges the interval filter left to exact arithmetic).
     """
 def find_segment_intersections(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> SegmentIntersections:
     """
@@ -462,12 +510,13 @@ def plc_self_intersections(points: typing.Annotated[numpy.typing.ArrayLike, nump
     """
 def refine(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool, strategy: str = 'greedy', max_steiner: typing.SupportsInt | typing.SupportsIndex = -1, threads: typing.SupportsInt | typing.SupportsIndex = 2) -> Refine2DResult:
     """
-    Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0: default
-    budget 10 n + 1000. Returns a Refine2DResult.
+    Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0:
+    default_steiner_budget(n). Returns a Refine2DResult.
     """
-def refine_gabriel(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], facet_ids: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_steiner: typing.SupportsInt | typing.SupportsIndex, min_length: typing.SupportsFloat | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex, split: str, progress_every: typing.SupportsInt | typing.SupportsIndex, progress: collections.abc.Callable[[int, int, int, float], None] | None) -> Refine3DResult:
+def refine_gabriel(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], facet_ids: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_steiner: typing.SupportsInt | typing.SupportsIndex, min_length: typing.SupportsFloat | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex, split: str, protected_fallback: bool, progress_every: typing.SupportsInt | typing.SupportsIndex, progress: collections.abc.Callable[[int, int, int, float], None] | None) -> Refine3DResult:
     """
-    Gabriel refinement of a PLC. progress: None or f(steiner, encroached_segments, encroached_facets, seconds).
+    Gabriel refinement of a PLC. max_steiner < 0, min_length < 0: the defaults of Refine3DOptions (gabriel3d.h).
+    progress: None or f(steiner, encroached_segments, encroached_facets, seconds).
     Returns a Refine3DResult.
     """
 def triangulate(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool) -> Mesh2D:

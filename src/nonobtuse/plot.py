@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 
 from nonobtuse.certificate import CheckReport, ObtuseAngle
-from nonobtuse.io._files import atomic_path
+from nonobtuse.io import atomic_path
 from nonobtuse.mesh import Mesh
 
 DIAMETRAL_GID = "diametral-circles"  # the gid of the collection of diametral circles, one per offending edge

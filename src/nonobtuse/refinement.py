@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import gc
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, overload
 
 import numpy as np
 
@@ -89,6 +89,14 @@ def _diagnosis(g: _core.Refine2DDiagnosis) -> dict[str, Any]:
     }
 
 
+@overload
+def refine(
+    domain: Domain, strategy: str = ..., max_steiner: int | None = ..., threads: int = ...
+) -> RefineResult: ...
+@overload
+def refine(
+    domain: dict[str, Any], strategy: str = ..., max_steiner: int | None = ..., threads: int = ...
+) -> dict[str, Any]: ...
 def refine(
     domain: Domain | dict[str, Any],
     strategy: str = "greedy",

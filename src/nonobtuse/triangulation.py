@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, overload
 
 from nonobtuse import _core
 from nonobtuse.domain import Domain
@@ -11,6 +11,10 @@ from nonobtuse.mesh import Mesh
 from nonobtuse.validate import ensure_validated
 
 
+@overload
+def triangulate(domain: Domain) -> Mesh: ...
+@overload
+def triangulate(domain: dict[str, Any]) -> dict[str, Any]: ...
 def triangulate(domain: Domain | dict[str, Any]) -> Mesh | dict[str, Any]:
     """Constrained Delaunay triangulation (CDT) of ``domain``, without Steiner points.
 

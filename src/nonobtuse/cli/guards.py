@@ -13,7 +13,7 @@ from pathlib import Path
 
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.io._files import require_writable
+from nonobtuse.io import require_writable
 from nonobtuse.mesh import Mesh
 
 MAX_COUNT = 2**62  # budgets cross into C++ as 64-bit integers

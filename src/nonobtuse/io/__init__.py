@@ -47,7 +47,8 @@ One module per format family: :mod:`~nonobtuse.io.triangle`, :mod:`~nonobtuse.io
 :mod:`~nonobtuse.io.meshio_formats` (the one table of meshio formats), :mod:`~nonobtuse.io.surfaces`,
 :mod:`~nonobtuse.io.tetgen`, :mod:`~nonobtuse.io.tetmesh`; :mod:`~nonobtuse.io.raw3d` is what a 3D file holds
 before its facets are triangulated. Shared plumbing for every writer, public here: :func:`atomic_path`,
-:func:`atomic_text` (atomic writes) and :func:`jsonable` (numpy values to JSON ones).
+:func:`atomic_text` (atomic writes), :func:`require_writable` (the output's folder, checked before any work)
+and :func:`jsonable` (numpy values to JSON ones).
 
 Floats are written in shortest round-trip form, so reading gives back the same float64 values. Writes are
 atomic (a temporary file beside the target, then os.replace); input files are never modified. Every problem
@@ -66,7 +67,7 @@ from nonobtuse import _core
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import json_formats, triangle
-from nonobtuse.io._files import atomic_path, atomic_text, jsonable
+from nonobtuse.io._files import atomic_path, atomic_text, jsonable, require_writable
 from nonobtuse.io.meshio_formats import FORMATS as _MESHIO_FORMATS
 from nonobtuse.io.meshio_formats import read_meshio, region_map_path, write_meshio
 from nonobtuse.mesh import Mesh
@@ -78,7 +79,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "atomic_path", "atomic_text", "is_mesh_file", "jsonable", "load_domain", "load_plc", "mesh_output_paths",
-    "read_mesh", "read_tetmesh_json", "write_mesh", "write_tetmesh",
+    "read_mesh", "read_tetmesh_json", "require_writable", "write_mesh", "write_tetmesh",
 ]
 
 _3D_ENTRY_POINTS = {"load_plc": "nonobtuse.mesh3d.load", "read_tetmesh_json": "nonobtuse.io.tetmesh",

@@ -51,7 +51,7 @@ def domain_from_json(path: Path, data: Any) -> tuple[Domain, bool | None]:
         raise InvalidInputError(f"{path}: 'convex_hull' must be true or false, found {hull!r}")
     points = rows(data["points"], 2, float, f"{path}: points")
     segments = rows(data.get("segments", []), 2, int, f"{path}: segments")
-    markers = _markers(path, data, len(points), len(segments))
+    markers: dict[str, Any] = _markers(path, data, len(points), len(segments))
     domain = Domain(
         points,
         segments,
@@ -194,7 +194,7 @@ MESH_ARRAYS = (
     "segment_markers",
 )  # fmt: skip
 _CHUNK_ROWS = 1 << 16
-_COMPACT = {"allow_nan": False, "separators": (",", ":")}
+_COMPACT: dict[str, Any] = {"allow_nan": False, "separators": (",", ":")}
 
 
 def write_mesh_json(mesh: Mesh, path: Path) -> None:

@@ -52,8 +52,8 @@ def region_tags(regions: np.ndarray) -> tuple[np.ndarray, dict[int, float]]:
     if integral:
         tags = regions.astype(np.int32)
         return tags, {int(t): float(t) for t in np.unique(tags)}
-    values, tags = np.unique(regions, return_inverse=True)
-    return (tags.ravel() + 1).astype(np.int32), {i + 1: float(v) for i, v in enumerate(values)}
+    values, inverse = np.unique(regions, return_inverse=True)
+    return (inverse.ravel() + 1).astype(np.int32), {i + 1: float(v) for i, v in enumerate(values)}
 
 
 def to_meshio(mesh: Mesh, *, gmsh: bool = False) -> Any:
@@ -225,7 +225,7 @@ def write_vtu(mesh: Mesh, path: Path) -> None:
         f.write(head.encode("ascii"))
         for values in blocks:
             f.write(np.uint64(values.nbytes).astype("<u8").tobytes())
-            f.write(memoryview(values).cast("B"))
+            f.write(values.data.cast("B"))
         f.write(b"\n</AppendedData>\n</VTKFile>\n")
 
 

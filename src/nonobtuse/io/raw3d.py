@@ -55,5 +55,5 @@ def merge_equal_points(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return corners[np.sort(first)], rank[inv]
 
 
-def points_array(pts: list) -> np.ndarray:
+def points_array(pts: list | np.ndarray) -> np.ndarray:
     return np.array(pts, dtype=np.float64).reshape(-1, 3)

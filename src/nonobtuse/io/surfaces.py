@@ -30,6 +30,7 @@ def read_off(path: Path) -> RawInput:
     start = 1 if counts is head else 0
     nv, nf = (counts.count(start + k, "the OFF counts") for k in range(2))
     fast = lines.numbers(nv, 3)
+    pts: np.ndarray | list[list[float]]
     if fast is not None:
         lines.skip(nv)
         pts = fast[0]
