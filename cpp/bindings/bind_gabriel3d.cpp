@@ -77,6 +77,8 @@ void bind_result_classes(py::module_& m) {
       .def_property_readonly("tet_regions", [](const Result& r) { return from_vector(r.tet_regions); }, "(t,) float64")
       .def_property_readonly("status", [](const Result& r) { return std::string(to_string(r.status)); },
                              "'converged', 'budget_exhausted', 'min_length_reached' or 'stalled'")
+      .def_readonly("max_steiner", &Result::max_steiner, "the Steiner budget used (its default resolved)")
+      .def_readonly("min_length", &Result::min_length, "the minimum length used (its default resolved)")
       .def_readonly("steiner_on_segments", &Result::steiner_on_segments)
       .def_readonly("greedy_splits", &Result::greedy_splits)
       .def_readonly("strategy", &Result::strategy,

@@ -13,8 +13,8 @@ import numpy as np
 from nonobtuse import _core
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.markers import mesh_markers
 from nonobtuse.mesh import Mesh
+from nonobtuse.triangulation import mesh_of_core
 from nonobtuse.validate import ensure_validated
 
 STRATEGIES = ("greedy", "project-flip", "projection")
@@ -175,15 +175,6 @@ def refine(
         "edges": _edge_stats(r.edges),
         "diagnosis": _diagnosis(r.diagnosis),
     }
-    m = r.mesh
-    mesh = Mesh(
-        points=m.points,
-        triangles=m.triangles,
-        segments=m.segments,
-        input_points=domain.points.copy(),
-        input_segments=domain.segments.copy(),
-        regions=m.triangle_region if len(domain.regions) else None,
-        stats=stats,
-    )
-    mesh_markers(mesh, domain)
+    regions = r.mesh.triangle_region if len(domain.regions) else None
+    mesh = mesh_of_core(r.mesh, domain, regions, stats)
     return RefineResult(mesh=mesh, stats=stats, status=r.status)

@@ -39,14 +39,22 @@ def triangulate(domain: Domain | dict[str, Any]) -> Mesh | dict[str, Any]:
         return mesh_to_dict(triangulate(validated_domain(domain)), domain)
     valid = ensure_validated(domain)
     out = _core.triangulate(valid.points, valid.segments, valid.holes, valid.regions, valid.convex_hull)
+    stats = {"source": valid.source, "repairs": list(valid.repairs)}
+    return mesh_of_core(out, valid, out.triangle_region, stats)
+
+
+def mesh_of_core(m: _core.Mesh2D, domain: Domain, regions: Any, stats: dict[str, Any]) -> Mesh:
+    """The :class:`Mesh` of the core's triangulation ``m`` of the validated ``domain`` (its input points and
+    segments recorded, its markers carried by Triangle's rules), with ``regions`` per triangle (or None) and
+    ``stats``."""
     mesh = Mesh(
-        points=out.points,
-        triangles=out.triangles,
-        segments=out.segments,
-        input_points=valid.points.copy(),
-        input_segments=valid.segments.copy(),
-        regions=out.triangle_region,
-        stats={"source": valid.source, "repairs": list(valid.repairs)},
+        points=m.points,
+        triangles=m.triangles,
+        segments=m.segments,
+        input_points=domain.points.copy(),
+        input_segments=domain.segments.copy(),
+        regions=regions,
+        stats=stats,
     )
-    mesh_markers(mesh, valid)
+    mesh_markers(mesh, domain)
     return mesh
