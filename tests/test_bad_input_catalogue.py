@@ -330,11 +330,9 @@ CASES = [
     K("mesh-overflowing-literal", "check a.json", ("a.json", "not finite"),
       {"a.json": mesh().replace("[2, 2]", "[2, 1e400]")}, defect=True, subprocess=True),
     # .vtu and .msh meshes (meshio)
-    K("vtu-garbage", "check a.vtu", ("a.vtu", "cannot read the mesh"), {"a.vtu": "<VTKFile><nonsense"},
-      defect=True),
-    K("vtu-empty", "check a.vtu", ("a.vtu", "empty"), {"a.vtu": ""}, defect=True),
-    K("msh-garbage", "check a.msh", ("a.msh", "cannot read the mesh"), {"a.msh": "$MeshFormat\n9 9 9\n"},
-      defect=True),
+    K("vtu-garbage", "check a.vtu", ("a.vtu", "cannot read the mesh"), {"a.vtu": "<VTKFile><nonsense"}),
+    K("vtu-empty", "check a.vtu", ("a.vtu", "empty"), {"a.vtu": ""}),
+    K("msh-garbage", "check a.msh", ("a.msh", "cannot read the mesh"), {"a.msh": "$MeshFormat\n9 9 9\n"}),
     K("msh-lines-only", "check a.msh", ("a.msh", "no triangle cells"),
       {"a.msh": "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n2\n1 0 0 0\n2 1 0 0\n$EndNodes\n"
                 "$Elements\n1\n1 1 2 0 0 1 2\n$EndElements\n"}),
