@@ -16,6 +16,8 @@ Point markers are ``$NodeData`` ``point_marker`` (floats, exact for markers up t
 
 from __future__ import annotations
 
+import contextlib
+import io
 import json
 import warnings
 from pathlib import Path
@@ -252,16 +254,32 @@ def read_region_map(path: Path) -> dict[int, float] | None:
         raise InvalidInputError(f"{table}: not a region map ({type(e).__name__}: {e})") from None
 
 
+def meshio_read(path: Path, file_format: str) -> Any:
+    """``meshio.read`` with InvalidInputError naming ``path`` for any failure: an empty file, any exception
+    meshio raises, and the ``sys.exit(1)`` meshio calls (after printing its ReadError to stdout and a line
+    to stderr) when its reader gives up; what meshio printed becomes part of the message."""
+    import meshio
+
+    if path.is_file() and path.stat().st_size == 0:
+        raise InvalidInputError(f"{path}: the file is empty")
+    printed = io.StringIO()
+    try:
+        with (warnings.catch_warnings(), contextlib.redirect_stdout(printed),
+              contextlib.redirect_stderr(printed)):
+            warnings.simplefilter("ignore")  # meshio warns about formats details it skips
+            return meshio.read(path, file_format=file_format)
+    except SystemExit:
+        lines = [line.strip() for line in printed.getvalue().splitlines()]
+        detail = "; ".join(line for line in lines if line and "Couldn't read file" not in line)
+        raise InvalidInputError(f"{path}: cannot read the mesh as {file_format}"
+                                + (f" ({detail})" if detail else "")) from None
+    except Exception as e:  # meshio raises many types (ReadError, ValueError, KeyError) for broken files
+        raise InvalidInputError(f"{path}: cannot read the mesh ({type(e).__name__}: {e})") from None
+
+
 def read_meshio(path: Path) -> Mesh:
     """Triangles and line cells of a .vtu/.msh file, with regions and markers (:func:`from_meshio`; a .msh
     with a region map beside it gets its float regions back)."""
-    import meshio
-
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")  # meshio warns about formats details it skips
-            m = meshio.read(path, file_format=FORMATS[path.suffix.lower()].read)
-    except Exception as e:  # meshio raises many types (ReadError, ValueError, KeyError) for broken files
-        raise InvalidInputError(f"{path}: cannot read the mesh ({type(e).__name__}: {e})") from None
+    m = meshio_read(path, FORMATS[path.suffix.lower()].read)
     region_map = read_region_map(path) if path.suffix.lower() == ".msh" else None
     return from_meshio(m, str(path), region_map)

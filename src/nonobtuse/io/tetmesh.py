@@ -28,6 +28,7 @@ from nonobtuse.errors import InvalidInputError
 from nonobtuse.io._files import atomic_path, atomic_text, jsonable
 from nonobtuse.io.meshio_formats import FORMATS as MESHIO_FORMATS
 from nonobtuse.io.meshio_formats import (
+    meshio_read,
     read_region_map,
     region_tags,
     regions_from_tags,
@@ -147,12 +148,7 @@ def read_tetmesh(path: str | Path) -> TetMesh:
         return read_tetmesh_json(path)
     if suffix not in MESHIO_FORMATS:
         raise InvalidInputError(f"{path}: unknown mesh format {suffix!r}; expected .json, .vtu or .msh")
-    import meshio
-
-    try:
-        m = meshio.read(path, file_format=MESHIO_FORMATS[suffix].read)
-    except Exception as e:  # meshio raises many types for broken files
-        raise InvalidInputError(f"{path}: cannot read the mesh ({type(e).__name__}: {e})") from None
+    m = meshio_read(path, MESHIO_FORMATS[suffix].read)
     return tetmesh_from_meshio(m, str(path), read_region_map(path) if suffix == ".msh" else None)
 
 

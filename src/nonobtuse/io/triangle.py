@@ -106,9 +106,25 @@ def _read_vertices(lines: Lines) -> tuple[np.ndarray, np.ndarray, int, np.ndarra
             lines.skip(n)
             markers = values[:, -1].astype(np.int64) if n_mark else None
             return np.ascontiguousarray(values[:, 1:3]), point_lines, int(ids[0]), markers
-    points = np.empty((lines.room_for(n), 2), dtype=np.float64)
-    point_lines = np.empty(lines.room_for(n), dtype=np.int64)
-    markers = np.zeros(lines.room_for(n), dtype=np.int64) if n_mark else None
+    room = lines.room_for(n)
+    points = np.empty((room, 2), dtype=np.float64)
+    point_lines = np.empty(room, dtype=np.int64)
+    markers = np.zeros(room, dtype=np.int64) if n_mark else None
+    try:
+        first_id = _vertex_lines(lines, n, n_attr, n_mark, points, point_lines, markers)
+    except InvalidInputError as e:
+        if room == n:
+            raise
+        # a count the rest of the file cannot hold: the line blamed may belong to a later section, so also
+        # name the count and its line
+        raise InvalidInputError(f"{e} (the vertex count {n} at {head.file}:{head.number} is more than the "
+                                f"{room} lines after it)") from None
+    return points, point_lines, first_id, markers
+
+
+def _vertex_lines(lines: Lines, n: int, n_attr: int, n_mark: int, points: np.ndarray, point_lines: np.ndarray,
+                  markers: np.ndarray | None) -> int:
+    """Read ``n`` vertex lines one by one into ``points``, ``point_lines`` and ``markers``; the first id."""
     first_id = 0
     for k in range(n):
         line = lines.next(f"vertex {k + 1} of {n}").need(3 + n_attr + n_mark, "id, x, y, attributes, markers")
@@ -125,7 +141,7 @@ def _read_vertices(lines: Lines) -> tuple[np.ndarray, np.ndarray, int, np.ndarra
         if markers is not None:
             markers[k] = line.int(3 + n_attr, "the boundary marker")
         point_lines[k] = line.number
-    return points, point_lines, first_id, markers
+    return first_id
 
 
 def _read_segments(
