@@ -147,8 +147,8 @@ def refine(
         return {**mesh_to_dict(result.mesh, domain), "stats": result.stats}
     if strategy not in STRATEGIES:
         raise InvalidInputError(f"unknown strategy {strategy!r}; choose one of {', '.join(STRATEGIES)}")
-    if max_steiner is not None and (int(max_steiner) != max_steiner or max_steiner < 0):
-        raise InvalidInputError(f"max_steiner must be a non-negative integer, got {max_steiner!r}")
+    if max_steiner is not None and (int(max_steiner) != max_steiner or not 0 <= max_steiner < 2**62):
+        raise InvalidInputError(f"max_steiner must be an integer in [0, 2^62), got {max_steiner!r}")
     if isinstance(threads, bool) or int(threads) != threads or threads < 1:
         raise InvalidInputError(f"threads must be a positive integer, got {threads!r}")
     domain = ensure_validated(domain)
