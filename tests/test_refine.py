@@ -109,8 +109,8 @@ def test_deterministic():
 
 @pytest.mark.parametrize(
     "kwargs",
-    [{"strategy": "midpoint"}, {"max_steiner": -1}, {"max_steiner": 1.5}, {"max_steiner": 10**20}, {"threads": 0},
-     {"threads": 1.5}, {"threads": True}],
+    [{"strategy": "midpoint"}, {"max_steiner": -1}, {"max_steiner": 1.5}, {"max_steiner": 10**20},
+     {"threads": 0}, {"threads": 1.5}, {"threads": True}],
 )
 def test_bad_options_are_invalid_input(kwargs):
     with pytest.raises(InvalidInputError):
