@@ -562,8 +562,11 @@ def test_a_utf8_bom_does_not_lose_a_vertex(tmp_path, capsys):
         assert (code, got["points"], got["tets"]) == (want[0], want[1]["points"], want[1]["tets"])
 
 
-@pytest.mark.xfail(strict=True, reason="control volumes of tets flat in floating point (exact volume > 0) are "
-                   "not computed: check3d reports total_volume null and counts them in flat_in_floating_point")
+FLAT_TETS = ("control volumes of tets flat in floating point (exact volume > 0) are not computed: check3d "
+             "reports total_volume null and counts them in flat_in_floating_point")
+
+
+@pytest.mark.xfail(strict=True, reason=FLAT_TETS)
 def test_check3d_reports_finite_volumes_on_a_uv_sphere(tmp_path):
     # A UV sphere 30 x 40 is a valid closed surface: its tetrahedralization has positive volume, a little
     # under the ball's 4 pi / 3; the JSON output is strict JSON (no NaN) and nothing is printed as a warning.
