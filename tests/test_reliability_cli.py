@@ -87,14 +87,14 @@ def test_outputs_into_a_missing_folder_exit_2(tmp_path, capsys):
 
 
 def test_a_closed_pipe_ends_quietly(tmp_path):
-    # check on a large mesh prints a long JSON report; the reader closes the pipe after the first line.
-    n = 60
-    points = [[float(i), float(j)] for j in range(n) for i in range(n)]
-    triangles = [t for j in range(n - 1) for i in range(n - 1)
-                 for t in ([j * n + i, j * n + i + 1, (j + 1) * n + i + 1], [j * n + i, (j + 1) * n + i + 1,
-                                                                              (j + 1) * n + i])]
-    mesh = Mesh(*[np.array(x) for x in (points, triangles, [[0, 1]], points, [[0, 1]])])
-    path = tmp_path / "grid.json"
+    # check on a strip of flat triangles (every boundary side obtuse) prints a JSON report of about 1 MB, far
+    # more than a pipe holds; the reader closes the pipe after the first line, so the writer meets EPIPE.
+    n = 2000
+    points = np.array([[float(i), 0.0] for i in range(n)] + [[i + 0.5, 0.1] for i in range(n - 1)])
+    triangles = np.array([[i, i + 1, n + i] for i in range(n - 1)]
+                         + [[i + 1, n + i + 1, n + i] for i in range(n - 2)])
+    mesh = Mesh(points, triangles, np.array([[0, 1]]), points, np.array([[0, 1]]))
+    path = tmp_path / "strip.json"
     write_mesh(mesh, path)
     env = {**os.environ, "PYTHONPATH": str(SRC)}
     with subprocess.Popen([sys.executable, "-m", "nonobtuse.cli", "check", "--json", str(path)], env=env,

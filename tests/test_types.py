@@ -15,8 +15,10 @@ import pytest
 import nonobtuse
 from nonobtuse import _core
 
+# SRC: where the built package is imported from (src, or site-packages when installed); ROOT: the repository
+# (pyproject.toml's mypy settings and the committed stubs).
 SRC = Path(nonobtuse.__file__).parent.parent
-ROOT = SRC.parent
+ROOT = Path(__file__).resolve().parents[1]
 
 
 def run(args: list[str], cwd: Path) -> subprocess.CompletedProcess:
@@ -30,7 +32,7 @@ def test_committed_stubs_are_the_generated_ones(tmp_path):
     out = run(["pybind11_stubgen", "nonobtuse._core", "-o", str(tmp_path), "--exit-code"], ROOT)
     assert out.returncode == 0, out.stderr
     generated = (tmp_path / "nonobtuse" / "_core.pyi").read_text()
-    assert generated == (SRC / "nonobtuse" / "_core.pyi").read_text(), "stale stubs: run make stubs"
+    assert generated == (ROOT / "src" / "nonobtuse" / "_core.pyi").read_text(), "stale stubs: run make stubs"
 
 
 @pytest.mark.skipif(importlib.util.find_spec("mypy") is None,
