@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import nonobtuse
 from nonobtuse.certificate import check
 from nonobtuse.cli import EXIT_BROKEN_PIPE, EXIT_INVALID, EXIT_OK, main
 from nonobtuse.cli.mesh3d import _unchecked_as_unknown
@@ -22,7 +23,7 @@ from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import write_mesh
 from nonobtuse.mesh import Mesh
 
-SRC = Path(__file__).resolve().parents[1] / "src"
+SRC = Path(nonobtuse.__file__).resolve().parent.parent  # the imported package: src, or site-packages
 SQUARE_NODE = "4 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n"
 SQUARE_POLY = SQUARE_NODE + "4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n"
 CORNER_TET_OFF = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"
