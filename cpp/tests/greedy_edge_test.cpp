@@ -15,7 +15,8 @@ namespace {
 // 514 / 1700 = 0.3024, q2 = (39, 30.7) gives 2463.49 / 3900 = 0.6317; q1 blocks first. [0, 30] is empty (its disk,
 // centre 15, r^2 225, misses q1: 2^2 + 15^2 = 229), [0, 31] is not (centre 15.5, r^2 240.25: 1.5^2 + 225 = 227.25).
 TEST(GreedyEdge, Figure3GreedyEndAndEmptiness) {
-  State st(testing::half_disk({{17, 15}, {39, 30.7}}), 10);
+  const auto domain = testing::half_disk({{17, 15}, {39, 30.7}});  // State keeps a reference to it
+  State st(domain, 10);
   auto v = [&](int i) { return testing::vertex(st, i); };
   const Side e{v(200), v(0)};
   DiskWalk w = walk_diametral_disk(st, e);
@@ -33,7 +34,8 @@ TEST(GreedyEdge, Figure3GreedyEndAndEmptiness) {
 // Figure 4: (20,2), (50,2), (80,2) need 3 greedy points (worked out in greedy_refine_test.cpp); from x = 50.2 on,
 // (20, 2) no longer encroaches (keep_encroaching drops it) but (50, 2) and (80, 2) still do.
 TEST(GreedyEdge, Figure4CountsThreePoints) {
-  State st(testing::half_disk({{20, 2}, {50, 2}, {80, 2}}), 10);
+  const auto domain = testing::half_disk({{20, 2}, {50, 2}, {80, 2}});  // State keeps a reference to it
+  State st(domain, 10);
   auto v = [&](int i) { return testing::vertex(st, i); };
   const Side e{v(200), v(0)};
   DiskWalk w = walk_diametral_disk(st, e);

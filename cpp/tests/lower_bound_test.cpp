@@ -26,7 +26,8 @@ TEST(LowerBound, HexagonOnePointOnOneEdge) {
 
 // Figure 4 (three points in a row under e): the bound on e is greedy's count, 3, and the arc edges' 0.
 TEST(LowerBound, Figure4BoundIsTheGreedyCount) {
-  State st(testing::half_disk({{20, 2}, {50, 2}, {80, 2}}), 10);
+  const auto domain = testing::half_disk({{20, 2}, {50, 2}, {80, 2}});  // State keeps a reference to it
+  State st(domain, 10);
   lower_bound_per_edge(st, 1);
   long long total = 0;
   for (const auto& e : st.edges()) total += e.lower_bound;

@@ -22,7 +22,8 @@ namespace {
 // of (a, d, c), centre (50, -12.5), leaves b outside, so the diagonal is a-c). Not a polygon with inner points:
 // convex_polygon.
 TEST(Refine2dState, BoundarySidesAndEdgesOfAQuadrilateral) {
-  State st(testing::figure5_quadrilateral(), 10);
+  const auto domain = testing::figure5_quadrilateral();  // State keeps a reference to it
+  State st(domain, 10);
   auto v = [&](int i) { return testing::vertex(st, i); };
   const std::vector<Side> sides = st.boundary_sides();
   ASSERT_EQ(sides.size(), 4u);

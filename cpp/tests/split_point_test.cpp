@@ -77,7 +77,8 @@ TEST(SplitPoint, FarFromTheOriginCandidatesHugTheLine) {
 // more, (a, p) and (p, d) are boundary sides, neither violated (c sees both at a right angle), and the
 // triangulation is valid with domain marks equal to a recomputation.
 TEST(SplitPoint, SplitAtTheFootOfTheApex) {
-  State st(testing::figure5_quadrilateral(), 10);
+  const Domain2 domain = testing::figure5_quadrilateral();  // State keeps a reference: it must outlive st
+  State st(domain, 10);
   st.set_check_every_split(true);
   auto v = [&](int i) { return testing::vertex(st, i); };
   const Side ad{v(0), v(1)};
@@ -104,7 +105,8 @@ TEST(SplitPoint, SplitAtTheFootOfTheApex) {
 // (a, d, c) next to (a, d) (left of c -> a: orientation(c, a, p) is a right turn), so the polyline a-p-d would
 // cross the diagonal's triangle and pass c's constraints: not splittable. (50, -1), outside the hull, is.
 TEST(SplitPoint, SplittableOnlyInsideTheTriangleBesideTheEdge) {
-  State st(testing::figure5_quadrilateral(), 10);
+  const auto domain = testing::figure5_quadrilateral();  // State keeps a reference to it
+  State st(domain, 10);
   auto v = [&](int i) { return testing::vertex(st, i); };
   const Side ad{v(0), v(1)};
   EXPECT_FALSE(splittable(st, ad, Point(50, 30)));

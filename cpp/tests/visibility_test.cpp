@@ -32,7 +32,8 @@ TEST(Visibility, CoveredFromShadesOnlyInFront) {
 // points q1 (index 201) and q2 (202), by index; the arc vertices lie outside the disk (radius 50 (1 + 1e-6)).
 // Both are seen from e (nothing between), so sees holds for either sight.
 TEST(Visibility, DiskWalkFindsTheEncroachersOfFigure3) {
-  State st(testing::half_disk({{17, 15}, {39, 30.7}}), 10);
+  const auto domain = testing::half_disk({{17, 15}, {39, 30.7}});  // State keeps a reference to it
+  State st(domain, 10);
   auto v = [&](int i) { return testing::vertex(st, i); };
   const Side e{v(200), v(0)};
   DiskWalk w = walk_diametral_disk(st, e);
