@@ -24,16 +24,15 @@ TEST(ConcentricShells, AcuteJunctionNeedsAnInteriorConstraint) {
   Domain2 d;
   d.points = {{-10, -10}, {10, -10}, {10, 10}, {-10, 10}, {0, 0}, {6, 0}, {5.9088, 1.0419}};
   d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {4, 6}};
-  State st(d, 10);
-  auto vh = [&](int i) { return testing::vertex(st, i); };
-  EXPECT_TRUE(is_acute_junction(st, vh(4), vh(5)));
-  EXPECT_TRUE(is_acute_junction(st, vh(4), vh(6)));
-  EXPECT_FALSE(is_acute_junction(st, vh(5), vh(4)));
-  EXPECT_FALSE(is_acute_junction(st, vh(0), vh(1)));
+  testing::OwningState st(std::move(d));
+  EXPECT_TRUE(is_acute_junction(st, st.v(4), st.v(5)));
+  EXPECT_TRUE(is_acute_junction(st, st.v(4), st.v(6)));
+  EXPECT_FALSE(is_acute_junction(st, st.v(5), st.v(4)));
+  EXPECT_FALSE(is_acute_junction(st, st.v(0), st.v(1)));
   // The sweep of (6, 0) -> (0, 0) starts at the junction instead (its reverse is a domain side too).
-  Side anchored = shell_anchor(st, {vh(5), vh(4)});
-  EXPECT_EQ(anchored.s, vh(4));
-  EXPECT_EQ(anchored.e, vh(5));
+  Side anchored = shell_anchor(st, {st.v(5), st.v(4)});
+  EXPECT_EQ(anchored.s, st.v(4));
+  EXPECT_EQ(anchored.e, st.v(5));
 }
 
 }  // namespace

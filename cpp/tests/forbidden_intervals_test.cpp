@@ -15,10 +15,8 @@ namespace {
 // that circle: (x - 95)^2 + 100 = 125, x = 90 and 100, t = 0.9 and 1. x = 89 breaks nothing; x = 90 is on the
 // circle (a right angle at it: in the closed disk, not the open one).
 TEST(ForbiddenIntervals, Figure5IntervalOfTheNeighbouringSide) {
-  const auto domain = testing::figure5_quadrilateral();  // State keeps a reference to it
-  State st(domain, 10);
-  auto v = [&](int i) { return testing::vertex(st, i); };
-  const Side ad{v(0), v(1)}, dc{v(1), v(2)};
+  testing::OwningState st(testing::figure5_quadrilateral());
+  const Side ad{st.v(0), st.v(1)}, dc{st.v(1), st.v(2)};
   std::vector<Side> broken = sides_broken_by(st, ad, Point(94.44, 0));
   ASSERT_EQ(broken.size(), 1u);
   EXPECT_TRUE(same_side(broken[0], dc));

@@ -15,16 +15,14 @@ namespace {
 // 514 / 1700 = 0.3024, q2 = (39, 30.7) gives 2463.49 / 3900 = 0.6317; q1 blocks first. [0, 30] is empty (its disk,
 // centre 15, r^2 225, misses q1: 2^2 + 15^2 = 229), [0, 31] is not (centre 15.5, r^2 240.25: 1.5^2 + 225 = 227.25).
 TEST(GreedyEdge, Figure3GreedyEndAndEmptiness) {
-  const auto domain = testing::half_disk({{17, 15}, {39, 30.7}});  // State keeps a reference to it
-  State st(domain, 10);
-  auto v = [&](int i) { return testing::vertex(st, i); };
-  const Side e{v(200), v(0)};
+  testing::OwningState st(testing::half_disk({{17, 15}, {39, 30.7}}));
+  const Side e{st.v(200), st.v(0)};
   DiskWalk w = walk_diametral_disk(st, e);
   Vertex_handle blocker;
   for (Sight sight : {Sight{}, Sight{&w.obstacles}}) {
     EXPECT_NEAR(greedy_parameter(st, e, e.s->point(), e.e->point(), w.encroachers, sight, &blocker), 514.0 / 1700,
                 1e-15);
-    EXPECT_EQ(blocker, v(201));
+    EXPECT_EQ(blocker, st.v(201));
     EXPECT_TRUE(subsegment_is_empty(st, e, Point(0, 0), Point(30, 0), w.encroachers, sight));
     EXPECT_FALSE(subsegment_is_empty(st, e, Point(0, 0), Point(31, 0), w.encroachers, sight));
   }
@@ -34,16 +32,14 @@ TEST(GreedyEdge, Figure3GreedyEndAndEmptiness) {
 // Figure 4: (20,2), (50,2), (80,2) need 3 greedy points (worked out in greedy_refine_test.cpp); from x = 50.2 on,
 // (20, 2) no longer encroaches (keep_encroaching drops it) but (50, 2) and (80, 2) still do.
 TEST(GreedyEdge, Figure4CountsThreePoints) {
-  const auto domain = testing::half_disk({{20, 2}, {50, 2}, {80, 2}});  // State keeps a reference to it
-  State st(domain, 10);
-  auto v = [&](int i) { return testing::vertex(st, i); };
-  const Side e{v(200), v(0)};
+  testing::OwningState st(testing::half_disk({{20, 2}, {50, 2}, {80, 2}}));
+  const Side e{st.v(200), st.v(0)};
   DiskWalk w = walk_diametral_disk(st, e);
   ASSERT_EQ(w.encroachers.size(), 3u);
   EXPECT_EQ(greedy_count(st, e, w), 3);
   std::vector<Vertex_handle> q = w.encroachers;
   keep_encroaching(Point(20.2, 0), Point(100, 0), q);
-  EXPECT_EQ(q, (std::vector<Vertex_handle>{v(202), v(203)}));
+  EXPECT_EQ(q, (std::vector<Vertex_handle>{st.v(202), st.v(203)}));
 }
 
 }  // namespace

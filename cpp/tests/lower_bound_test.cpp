@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "refine2d_fixtures.h"
+#include "refine2d_state_fixtures.h"
 
 namespace nonobtuse::refine2d {
 namespace {
@@ -26,8 +27,7 @@ TEST(LowerBound, HexagonOnePointOnOneEdge) {
 
 // Figure 4 (three points in a row under e): the bound on e is greedy's count, 3, and the arc edges' 0.
 TEST(LowerBound, Figure4BoundIsTheGreedyCount) {
-  const auto domain = testing::half_disk({{20, 2}, {50, 2}, {80, 2}});  // State keeps a reference to it
-  State st(domain, 10);
+  testing::OwningState st(testing::half_disk({{20, 2}, {50, 2}, {80, 2}}));
   lower_bound_per_edge(st, 1);
   long long total = 0;
   for (const auto& e : st.edges()) total += e.lower_bound;

@@ -22,9 +22,7 @@ namespace {
 // of (a, d, c), centre (50, -12.5), leaves b outside, so the diagonal is a-c). Not a polygon with inner points:
 // convex_polygon.
 TEST(Refine2dState, BoundarySidesAndEdgesOfAQuadrilateral) {
-  const auto domain = testing::figure5_quadrilateral();  // State keeps a reference to it
-  State st(domain, 10);
-  auto v = [&](int i) { return testing::vertex(st, i); };
+  testing::OwningState st(testing::figure5_quadrilateral());
   const std::vector<Side> sides = st.boundary_sides();
   ASSERT_EQ(sides.size(), 4u);
   const std::vector<std::pair<int, int>> want = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
@@ -33,15 +31,15 @@ TEST(Refine2dState, BoundarySidesAndEdgesOfAQuadrilateral) {
     EXPECT_EQ(st.edges()[st.edge_of(sides[k])].edge, (Segment{want[k].first, want[k].second}));
     EXPECT_EQ(st.is_violated(sides[k]), k == 0);
   }
-  EXPECT_EQ(st.apex({v(0), v(1)}), v(2));
-  EXPECT_FALSE(st.is_boundary_side({v(1), v(0)}));  // the exterior is on the left of d -> a
-  EXPECT_EQ(st.left_face({v(0), v(2)}), nullptr);   // the diagonal is no constraint
+  EXPECT_EQ(st.apex({st.v(0), st.v(1)}), st.v(2));
+  EXPECT_FALSE(st.is_boundary_side({st.v(1), st.v(0)}));  // the exterior is on the left of d -> a
+  EXPECT_EQ(st.left_face({st.v(0), st.v(2)}), nullptr);   // the diagonal is no constraint
   EXPECT_TRUE(st.convex_polygon());
   EXPECT_EQ(st.placed(), 0);
   EXPECT_TRUE(st.budget_left());
   st.enqueue_all();
   EXPECT_EQ(st.queued(), 4u);
-  EXPECT_EQ(st.next_side().e, v(1));
+  EXPECT_EQ(st.next_side().e, st.v(1));
 }
 
 // A thin wavy layer (a 100 m x 1 m strip in mm, integer coordinates) whose hull leaves slivers of exterior

@@ -77,14 +77,12 @@ TEST(SplitPoint, FarFromTheOriginCandidatesHugTheLine) {
 // more, (a, p) and (p, d) are boundary sides, neither violated (c sees both at a right angle), and the
 // triangulation is valid with domain marks equal to a recomputation.
 TEST(SplitPoint, SplitAtTheFootOfTheApex) {
-  const Domain2 domain = testing::figure5_quadrilateral();  // State keeps a reference: it must outlive st
-  State st(domain, 10);
+  testing::OwningState st(testing::figure5_quadrilateral());
   st.set_check_every_split(true);
-  auto v = [&](int i) { return testing::vertex(st, i); };
-  const Side ad{v(0), v(1)};
+  const Side ad{st.v(0), st.v(1)};
   EXPECT_TRUE(splittable(st, ad, Point(90, 0)));
   const int edge = st.edge_of(ad);
-  Vertex_handle p = split_at_foot(st, ad, v(2)->point());
+  Vertex_handle p = split_at_foot(st, ad, st.v(2)->point());
   ASSERT_NE(p, nullptr);
   EXPECT_EQ(p->point(), Point(90, 0));
   EXPECT_EQ(p->info(), 4);
@@ -92,7 +90,7 @@ TEST(SplitPoint, SplitAtTheFootOfTheApex) {
   EXPECT_EQ(st.steiner_edge(4), edge);
   EXPECT_EQ(st.edges()[edge].steiner_points, 1);
   EXPECT_EQ(st.left_face(ad), nullptr);
-  for (const Side& side : {Side{v(0), p}, Side{p, v(1)}}) {
+  for (const Side& side : {Side{st.v(0), p}, Side{p, st.v(1)}}) {
     EXPECT_TRUE(st.is_boundary_side(side));
     EXPECT_FALSE(st.is_violated(side));
     EXPECT_EQ(st.edge_of(side), edge);
@@ -105,10 +103,8 @@ TEST(SplitPoint, SplitAtTheFootOfTheApex) {
 // (a, d, c) next to (a, d) (left of c -> a: orientation(c, a, p) is a right turn), so the polyline a-p-d would
 // cross the diagonal's triangle and pass c's constraints: not splittable. (50, -1), outside the hull, is.
 TEST(SplitPoint, SplittableOnlyInsideTheTriangleBesideTheEdge) {
-  const auto domain = testing::figure5_quadrilateral();  // State keeps a reference to it
-  State st(domain, 10);
-  auto v = [&](int i) { return testing::vertex(st, i); };
-  const Side ad{v(0), v(1)};
+  testing::OwningState st(testing::figure5_quadrilateral());
+  const Side ad{st.v(0), st.v(1)};
   EXPECT_FALSE(splittable(st, ad, Point(50, 30)));
   EXPECT_TRUE(splittable(st, ad, Point(50, -1)));
   EXPECT_TRUE(splittable(st, ad, Point(50, 0)));

@@ -32,19 +32,17 @@ TEST(Visibility, CoveredFromShadesOnlyInFront) {
 // points q1 (index 201) and q2 (202), by index; the arc vertices lie outside the disk (radius 50 (1 + 1e-6)).
 // Both are seen from e (nothing between), so sees holds for either sight.
 TEST(Visibility, DiskWalkFindsTheEncroachersOfFigure3) {
-  const auto domain = testing::half_disk({{17, 15}, {39, 30.7}});  // State keeps a reference to it
-  State st(domain, 10);
-  auto v = [&](int i) { return testing::vertex(st, i); };
-  const Side e{v(200), v(0)};
+  testing::OwningState st(testing::half_disk({{17, 15}, {39, 30.7}}));
+  const Side e{st.v(200), st.v(0)};
   DiskWalk w = walk_diametral_disk(st, e);
   ASSERT_EQ(w.encroachers.size(), 2u);
-  EXPECT_EQ(w.encroachers[0], v(201));
-  EXPECT_EQ(w.encroachers[1], v(202));
+  EXPECT_EQ(w.encroachers[0], st.v(201));
+  EXPECT_EQ(w.encroachers[1], st.v(202));
   for (Vertex_handle q : w.encroachers) {
     EXPECT_TRUE(sees(st, e, e.s->point(), e.e->point(), q, Sight{}));
     EXPECT_TRUE(sees(st, e, e.s->point(), e.e->point(), q, Sight{&w.obstacles}));
   }
-  EXPECT_TRUE(walk_diametral_disk(st, {v(0), v(1)}).encroachers.empty());  // an arc edge: a tiny empty disk
+  EXPECT_TRUE(walk_diametral_disk(st, {st.v(0), st.v(1)}).encroachers.empty());  // an arc edge: a tiny empty disk
 }
 
 // A dangling segment hides a vertex: the square [0, 10]^2 with the dangling segment (2, 3)-(8, 3) and the point
@@ -56,11 +54,10 @@ TEST(Visibility, ADanglingSegmentHidesAVertex) {
   Domain2 d;
   d.points = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {2, 3}, {8, 3}, {5, 4}};
   d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}};
-  State st(d, 10);
-  auto v = [&](int i) { return testing::vertex(st, i); };
-  const Side bottom{v(0), v(1)};
+  testing::OwningState st(std::move(d));
+  const Side bottom{st.v(0), st.v(1)};
   DiskWalk w = walk_diametral_disk(st, bottom);
-  EXPECT_FALSE(sees(st, bottom, Point(0, 0), Point(10, 0), v(6), Sight{&w.obstacles}));
+  EXPECT_FALSE(sees(st, bottom, Point(0, 0), Point(10, 0), st.v(6), Sight{&w.obstacles}));
   EXPECT_FALSE(covered_from(Point(5, 4), Point(0, 0), Point(10, 0), {}));
   EXPECT_TRUE(covered_from(Point(5, 4), Point(0, 0), Point(10, 0), {{Point(2, 3), Point(8, 3)}}));
 }
