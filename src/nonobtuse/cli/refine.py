@@ -41,8 +41,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--json", action="store_true", help="print the summary statistics as JSON on stdout")
     p.add_argument("--verbose", action="store_true", help="with --json: also the per-edge statistics and "
                    "the diagnosis (one entry per input edge: large on big inputs)")
-    p.add_argument("-q", "--quiet", action="store_true", help="print nothing on success (no summary, no "
-                   "progress); errors still go to stderr")
+    guards.add_quiet_option(p)
     guards.add_timings_option(p)
     guards.add_plot_options(p, "the constrained Delaunay triangulation before and the mesh after refinement")
     add_domain_options(p)
