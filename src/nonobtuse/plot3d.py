@@ -120,7 +120,7 @@ def _draw_sphere(ax: Any, centre: np.ndarray, radius: float, normal: np.ndarray 
 
 def _status(report: GabrielReport) -> str:
     if report.ok:
-        return "Gabriel: every boundary face and subsegment has an empty diametral sphere"
+        return "Gabriel: every boundary face and subsegment (exact)"
     return (f"encroached: {len(report.faces):,} of {report.n_faces:,} faces, {len(report.segments):,} "
             "subsegments")
 
@@ -144,16 +144,16 @@ def plot_gabriel_stages(stages: list[Stage], path: str | Path, *, title: str = "
     for i, (label, mesh, report) in enumerate(stages):
         ax = fig.add_subplot(rows, len(stages), i + 1, projection="3d")
         step = _draw(ax, mesh, report, None)
-        shown = "" if step == 1 else f"\n(every {step}th face drawn; all offenders)"
-        ax.set_title(f"{label}: {_status(report)}{shown}", fontsize=8)
+        shown = "" if step == 1 else f", every {step}th face drawn (all offenders)"
+        ax.set_title(f"{label}\n{_status(report)}{shown}", fontsize=8)
         if worst is None:
             continue
         centre, radius, normal, vertex = worst
         ax = fig.add_subplot(rows, len(stages), len(stages) + i + 1, projection="3d")
         _draw(ax, mesh, report, (centre, 1.3 * radius))
         _draw_sphere(ax, centre, radius, normal)
-        ax.set_title(f"{label}: close-up of the worst offender (true scale; radius {radius:.3g}, encroached "
-                     f"by vertex {vertex})", fontsize=8)
+        ax.set_title(f"{label}: the deepest offender, true scale\n(diametral sphere radius {radius:.3g}, "
+                     f"encroached by vertex {vertex})", fontsize=8)
     handles, labels = _legend_entries(stages, worst is not None)
     fig.legend(handles, labels, loc="outside lower center", ncols=len(handles), fontsize=7, frameon=False)
     if title:

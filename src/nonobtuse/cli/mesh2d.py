@@ -75,13 +75,15 @@ def register(sub: argparse._SubParsersAction) -> None:
     guards.add_plot_options(p, "the mesh")
     p.set_defaults(func=_check)
 
-    p = sub.add_parser("demo", help="run on a built-in thin-layer geological cross-section")
+    p = sub.add_parser("demo", help="run on a built-in thin-layer geological cross-section (2D) and a small "
+                       "CAD part (3D)")
     p.add_argument("--plot", metavar="PNG", help="also draw the cross-section before and after refinement "
-                   f"(vertical exaggeration x{demo.EXAGGERATION:g}, labelled; close-ups at true scale)")
+                   f"(vertical exaggeration x{demo.EXAGGERATION:g}, labelled; close-ups at true scale), and "
+                   "the 3D part before and after repair beside it (PNG's name with _3d)")
     p.set_defaults(func=_demo)
 
 
 def _demo(args: argparse.Namespace) -> int:
     if args.plot:
-        guards.refuse_overwriting([], [Path(args.plot)])
+        guards.refuse_overwriting([demo.PART], [Path(args.plot), demo.part_picture_path(args.plot)])
     return demo.run(plot=args.plot)

@@ -10,7 +10,7 @@ import sys
 import time
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 from nonobtuse.cli import guards
 from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS
@@ -70,12 +70,12 @@ def _finite_or_none(x: Any) -> Any:
     return x
 
 
-def _print(summary: dict[str, Any], args: argparse.Namespace, text: str) -> None:
-    """``summary`` as JSON with --json, else ``text``; nothing with --quiet."""
+def _print(summary: dict[str, Any], args: argparse.Namespace, text: Callable[[], str]) -> None:
+    """``summary`` as JSON with --json, else ``text()``; nothing with --quiet."""
     if args.json:
         print(json.dumps(_finite_or_none(jsonable(summary)), allow_nan=False))
     elif not args.quiet:
-        print(text)
+        print(text())
 
 
 def _picture_outputs(args: argparse.Namespace) -> list[Path]:
@@ -94,7 +94,7 @@ def run_check3d(args: argparse.Namespace) -> int:
     mesh = tetrahedralize(plc, args.backend)
     progress.done(f"{len(mesh.tets):,} tets; checking {len(mesh.boundary_faces):,} boundary faces exactly")
     summary = {"input": args.input, "backend": args.backend, **boundary_certificate(mesh)}
-    _print(summary, args, check3d_text(summary))
+    _print(summary, args, lambda: check3d_text(summary))
     if args.plot or args.offenders:
         from nonobtuse.mesh3d import check_gabriel
 
@@ -153,7 +153,7 @@ def run_refine3d(args: argparse.Namespace) -> int:
     write_output(replace(result.mesh, stats=written), args.output)
     shown = _unchecked_as_unknown(stats)
     _print({"input": args.input, "output": args.output, **shown}, args,
-           refine3d_text(shown, args.input, args.output))
+           lambda: refine3d_text(shown, args.input, args.output))
     if args.plot or args.offenders:
         _pictures(args, _refine3d_stages(plc, result))
     return EXIT_OK if result.status == "converged" else EXIT_NOT_CONVERGED

@@ -18,9 +18,11 @@ def aligned(pairs: list[tuple[str, str]], indent: str = "  ") -> list[str]:
 
 
 def _number(x: Any) -> str:
-    """A count with thousands separators, a float in 4 significant digits, None as "n/a"."""
+    """A count with thousands separators, a float in 4 significant digits, None as "n/a", text as it is."""
     if x is None:
         return "n/a"
+    if isinstance(x, str):
+        return x
     if isinstance(x, int):
         return f"{x:,}"
     return f"{x:.4g}"
