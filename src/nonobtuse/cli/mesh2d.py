@@ -47,14 +47,23 @@ def _check(args: argparse.Namespace) -> int:
         domain = load(args)
         mesh = triangulate(domain)
         require_points_in_domain(domain, mesh.triangles)
+    progress = guards.Progress(quiet=args.quiet, size=len(mesh.points))
+    progress.start(f"checking {len(mesh.points):,} points, {len(mesh.triangles):,} triangles exactly")
     report = check(mesh)
+    progress.done(f"{len(report.offenders):,} obtuse boundary/interface angles")
     report.source = str(path)
-    print(json.dumps(report.to_dict(), indent=1) if args.json else report.summary())
+    if args.json:
+        print(json.dumps(report.to_dict(), indent=1))
+    elif not args.quiet:
+        print(report.summary())
     if args.plot:
         from nonobtuse.plot import plot_check  # matplotlib only when asked
 
+        progress.start(f"drawing {args.plot}")
         plot_check(mesh, report, args.plot, vertical_exaggeration=args.exaggeration)
-        print(f"picture -> {args.plot}", file=sys.stderr)
+        progress.done("drawn")
+        if not args.quiet:
+            print(f"picture -> {args.plot}", file=sys.stderr)
     return EXIT_OK if report.ok else EXIT_VIOLATIONS
 
 
@@ -73,6 +82,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--json", action="store_true", help="print the full report as JSON")
     add_domain_options(p)
     guards.add_plot_options(p, "the mesh")
+    guards.add_quiet_option(p)
     p.set_defaults(func=_check)
 
     p = sub.add_parser("demo", help="run on a built-in thin-layer geological cross-section (2D) and a small "
