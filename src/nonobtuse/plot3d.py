@@ -24,6 +24,11 @@ from nonobtuse.mesh3d.plc import TetMesh
 MAX_DRAWN_FACES = 20_000  # mplot3d sorts and draws polygons in Python: about a second per 20,000
 PANEL_IN = 5.5
 GREY, RED, BLUE = "0.8", "tab:red", "tab:blue"
+# gids of the artists, for inspection: the faces (one collection per panel), the encroaching vertices, the
+# Steiner points, the encroached subsegments, the great circle of the diametral sphere
+FACES_GID, ENCROACHERS_GID, STEINER_GID, SEGMENTS_GID, CIRCLE_GID = (
+    "boundary-faces", "encroaching-vertices", "steiner-points", "encroached-subsegments", "diametral-circle")
+RED_RGBA = (0.84, 0.15, 0.16, 0.95)
 
 Stage = tuple[str, TetMesh, GabrielReport]
 
@@ -78,12 +83,12 @@ def _draw(ax: Any, mesh: TetMesh, report: GabrielReport, window: tuple[np.ndarra
     points = np.asarray(mesh.points, dtype=np.float64)
     rows, bad, step = _drawn_faces(mesh, report, window)
     polys = points[np.asarray(mesh.boundary_faces, dtype=np.int64).reshape(-1, 3)[rows]]
-    colours = np.where(bad[:, None], np.array([0.84, 0.15, 0.16, 0.95]), np.array([0.8, 0.8, 0.8, 0.45]))
+    colours = np.where(bad[:, None], np.array(RED_RGBA), np.array([0.8, 0.8, 0.8, 0.45]))
     ax.add_collection3d(Poly3DCollection(polys, facecolors=colours, edgecolors=(0.35, 0.35, 0.35, 0.5),
-                                         linewidths=0.15 if window is None else 0.5))
+                                         linewidths=0.15 if window is None else 0.5, gid=FACES_GID))
     segments = points[np.asarray(mesh.segments, dtype=np.int64).reshape(-1, 2)[report.segments]]
     if len(segments):
-        ax.add_collection3d(Line3DCollection(segments, colors=RED, linewidths=1.6))
+        ax.add_collection3d(Line3DCollection(segments, colors=RED, linewidths=1.6, gid=SEGMENTS_GID))
     steiner = _steiner_points(mesh)
     encroachers = points[np.unique(np.concatenate([report.face_vertices, report.segment_vertices]))]
     if window is not None:
@@ -91,9 +96,10 @@ def _draw(ax: Any, mesh: TetMesh, report: GabrielReport, window: tuple[np.ndarra
         steiner = steiner[np.abs(steiner - centre).max(axis=1) <= half]
         encroachers = encroachers[np.abs(encroachers - centre).max(axis=1) <= half]
     if len(steiner):
-        ax.scatter(*steiner.T, s=2 if window is None else 4, color=BLUE, depthshade=False)
+        ax.scatter(*steiner.T, s=2 if window is None else 4, color=BLUE, depthshade=False, gid=STEINER_GID)
     if len(encroachers):
-        ax.scatter(*encroachers.T, s=14 if window is None else 40, marker="^", color=RED, depthshade=False)
+        ax.scatter(*encroachers.T, s=14 if window is None else 40, marker="^", color=RED, depthshade=False,
+                   gid=ENCROACHERS_GID)
     lo, hi = (points.min(axis=0), points.max(axis=0)) if window is None else (window[0] - window[1],
                                                                               window[0] + window[1])
     for set_lim, a, b in zip((ax.set_xlim, ax.set_ylim, ax.set_zlim), lo, hi):
@@ -115,7 +121,7 @@ def _draw_sphere(ax: Any, centre: np.ndarray, radius: float, normal: np.ndarray 
         e2 = np.cross(normal, e1)
         t = np.linspace(0, 2 * np.pi, 121)
         circle = centre + radius * (np.cos(t)[:, None] * e1 + np.sin(t)[:, None] * e2)
-        ax.plot(*circle.T, color=RED, linestyle="--", linewidth=1.0)
+        ax.plot(*circle.T, color=RED, linestyle="--", linewidth=1.0, gid=CIRCLE_GID)
 
 
 def _status(report: GabrielReport) -> str:
