@@ -10,8 +10,10 @@ same figures again, beside the lower bound and Triangle -pD's count for the same
 
 The 3D part (:func:`run_part`) is CGAL's ``joint`` CAD part (446 triangles, genus 2; bundled as package data,
 CC0, see ``data/SOURCES.md``): tetrahedralized by TetGen (``-pq1.414Y``: the boundary as given) when the
-``tetgen`` package is installed, else by the cgal backend (Delaunay), checked exactly for Gabriel boundary
-faces and subsegments, repaired by :func:`nonobtuse.mesh3d.refine_gabriel` and certified.
+``tetgen`` package is installed, else by the cgal backend (Delaunay, with the winding-number fallback: libigl,
+in the demo extra), checked exactly for Gabriel boundary faces and subsegments, repaired by
+:func:`nonobtuse.mesh3d.refine_gabriel` and certified. Without libigl either (a plain ``pip install .``) the
+input surface is checked against its own vertices instead.
 """
 
 from __future__ import annotations
@@ -124,13 +126,20 @@ def part_picture_path(plot: str | Path) -> Path:
 
 
 def tetrahedralize_part(plc: PLC) -> tuple[TetMesh, str]:
-    """The demo's tetrahedralization of ``plc`` and what made it: TetGen with its default switches when the
-    ``tetgen`` package is installed (the 3d extra), else the cgal backend (Delaunay)."""
+    """The demo's "before" mesh of ``plc`` and what made it: TetGen with its default switches when the
+    ``tetgen`` package is installed (the 3d extra), else the cgal backend (its fallback needs libigl: the demo
+    extra), else the input surface with no tets (``refine_gabriel`` with no Steiner point: its subfacets are
+    the input triangles, checked against the input vertices)."""
     try:
         return tetrahedralize(plc, "tetgen"), f"TetGen -{TETGEN_DEFAULT_SWITCHES}"
     except ImportError:
+        pass
+    try:
         return tetrahedralize(plc, "cgal"), ("the cgal backend (TetGen not installed: pip install "
                                              "'nonobtuse[3d]')")
+    except ImportError:
+        return refine_gabriel(plc, max_steiner=0).mesh, ("the input surface, no tets (libigl not installed: "
+                                                         "pip install 'nonobtuse[demo]')")
 
 
 def part_report(title: str, mesh: TetMesh, report: GabrielReport) -> str:
