@@ -16,22 +16,14 @@ from nonobtuse.cli import EXIT_OK, EXIT_VIOLATIONS, main
 from nonobtuse.mesh3d import check_gabriel, load_plc, tetrahedralize
 from nonobtuse.mesh3d.offenders import encroaching_vertices
 from test_cli_first_use import _Terminal
+from test_mesh3d_cli import LOW_TET
 
 RAMP = Path(__file__).parent / "data" / "3d" / "cad_ramp_5deg.off"
-LOW_TET = np.array([[0, 0, 0], [4, 0, 0], [0, 4, 0], [1, 1, 2]])  # the apex encroaches the base
 
 
-@pytest.fixture
-def cube(tmp_path):
-    return write_off(tmp_path / "cube.off", CUBE_POINTS, CUBE_TRIANGLES.tolist())
-
-
-@pytest.fixture
-def low_tet(tmp_path):
-    return write_off(tmp_path / "low.off", LOW_TET, TET_TRIANGLES.tolist())
-
-
-def test_check3d_text_is_aligned_lines_and_a_verdict(low_tet, cube, capsys):
+def test_check3d_text_is_aligned_lines_and_a_verdict(tmp_path, capsys):
+    low_tet = write_off(tmp_path / "low.off", LOW_TET, TET_TRIANGLES.tolist())  # the apex encroaches the base
+    cube = write_off(tmp_path / "cube.off", CUBE_POINTS, CUBE_TRIANGLES.tolist())
     assert main(["check3d", str(low_tet)]) == EXIT_VIOLATIONS
     lines = capsys.readouterr().out.splitlines()
     assert lines[0] == "low.off: 4 points, 1 tets, 4 boundary faces"  # the file name, not the folder
@@ -82,7 +74,8 @@ def test_check3d_offenders_vtu_has_the_checks_offenders(tmp_path, capsys):
     assert np.array_equal(m.points, mesh.points[m.point_data["vertex"]])
 
 
-def test_no_offenders_no_file(cube, tmp_path, capsys):
+def test_no_offenders_no_file(tmp_path, capsys):
+    cube = write_off(tmp_path / "cube.off", CUBE_POINTS, CUBE_TRIANGLES.tolist())
     vtu = tmp_path / "none.vtu"
     assert main(["check3d", str(cube), "--offenders", str(vtu)]) == EXIT_OK
     assert not vtu.exists() and "no offenders (Gabriel)" in capsys.readouterr().err

@@ -17,9 +17,9 @@ from typing import Any
 
 import numpy as np
 
-from nonobtuse.io import atomic_path
 from nonobtuse.mesh3d.gabriel import GabrielReport
 from nonobtuse.mesh3d.plc import TetMesh
+from nonobtuse.plot import save_figure
 
 MAX_DRAWN_FACES = 20_000  # mplot3d sorts and draws polygons in Python: about a second per 20,000
 PANEL_IN = 5.5
@@ -160,14 +160,7 @@ def plot_gabriel_stages(stages: list[Stage], path: str | Path, *, title: str = "
         _draw_sphere(ax, centre, radius, normal)
         ax.set_title(f"{label}: the deepest offender, true scale\n(diametral sphere radius {radius:.3g}, "
                      f"encroached by vertex {vertex})", fontsize=8)
-    handles, labels = _legend_entries(stages, worst is not None)
-    fig.legend(handles, labels, loc="outside lower center", ncols=len(handles), fontsize=7, frameon=False)
-    if title:
-        fig.suptitle(title, fontsize=10)
-    with atomic_path(Path(path)) as tmp:
-        fig.savefig(tmp, dpi=150)
-    plt.close(fig)
-    return fig
+    return save_figure(fig, path, _legend_entries(stages, worst is not None), title, fontsize=7)
 
 
 def _legend_entries(stages: list[Stage], sphere: bool) -> tuple[list[Any], list[str]]:
