@@ -135,15 +135,15 @@ def plot_stages(stages: list[tuple[str, Mesh, CheckReport]], path: str | Path, *
 
 
 def save_figure(fig: Any, path: str | Path, legend: tuple[list[Any], list[str]], title: str,
-                fontsize: float = 8) -> Any:
-    """Adds the legend (handles, labels) in one row below the panels and the title (a file name, never a
-    folder) to ``fig``, writes it to ``path`` atomically (PNG at 150 dpi; the format follows the suffix),
-    closes it and returns it (its artists are for inspection)."""
+                fontsize: float = 8, ncols: int | None = None) -> Any:
+    """Adds the legend (handles, labels) below the panels, ``ncols`` entries a row (None: all in one row),
+    and the title (a file name, never a folder) to ``fig``, writes it to ``path`` atomically (PNG at 150 dpi;
+    the format follows the suffix), closes it and returns it (its artists are for inspection)."""
     import matplotlib.pyplot as plt
 
     handles, labels = legend
-    fig.legend(handles, labels, loc="outside lower center", ncols=len(handles), fontsize=fontsize,
-               frameon=False)
+    fig.legend(handles, labels, loc="outside lower center", ncols=min(ncols or len(handles), len(handles)),
+               fontsize=fontsize, frameon=False)
     if title:
         fig.suptitle(title, fontsize=10)
     with atomic_path(Path(path)) as tmp:

@@ -23,6 +23,7 @@ from nonobtuse.plot import save_figure
 
 MAX_DRAWN_FACES = 20_000  # mplot3d sorts and draws polygons in Python: about a second per 20,000
 PANEL_IN = 5.5
+LEGEND_COLUMNS_PER_PANEL = 2  # legend entries side by side per panel width
 GREY, RED, BLUE = "0.8", "tab:red", "tab:blue"
 # gids of the artists, for inspection: the faces (one collection per panel), the encroaching vertices, the
 # Steiner points, the encroached subsegments, the great circle of the diametral sphere
@@ -87,6 +88,8 @@ def _draw(ax: Any, mesh: TetMesh, report: GabrielReport, window: tuple[np.ndarra
     ax.add_collection3d(Poly3DCollection(polys, facecolors=colours, edgecolors=(0.35, 0.35, 0.35, 0.5),
                                          linewidths=0.15 if window is None else 0.5, gid=FACES_GID))
     segments = points[np.asarray(mesh.segments, dtype=np.int64).reshape(-1, 2)[report.segments]]
+    if window is not None:  # the subsegments with both ends in the window
+        segments = segments[np.all(np.abs(segments - window[0]).max(axis=2) <= window[1], axis=1)]
     if len(segments):
         ax.add_collection3d(Line3DCollection(segments, colors=RED, linewidths=1.6, gid=SEGMENTS_GID))
     steiner = _steiner_points(mesh)
@@ -158,9 +161,12 @@ def plot_gabriel_stages(stages: list[Stage], path: str | Path, *, title: str = "
         ax = fig.add_subplot(rows, len(stages), len(stages) + i + 1, projection="3d")
         _draw(ax, mesh, report, (centre, 1.3 * radius))
         _draw_sphere(ax, centre, radius, normal)
+        ax.scatter(*np.asarray(mesh.points, dtype=np.float64)[vertex], s=120, marker="*", color=RED,
+                   edgecolors="black", depthshade=False)
         ax.set_title(f"{label}: the deepest offender, true scale\n(diametral sphere radius {radius:.3g}, "
                      f"encroached by vertex {vertex})", fontsize=8)
-    return save_figure(fig, path, _legend_entries(stages, worst is not None), title, fontsize=7)
+    return save_figure(fig, path, _legend_entries(stages, worst is not None), title, fontsize=7,
+                       ncols=LEGEND_COLUMNS_PER_PANEL * len(stages))
 
 
 def _legend_entries(stages: list[Stage], sphere: bool) -> tuple[list[Any], list[str]]:
@@ -176,8 +182,10 @@ def _legend_entries(stages: list[Stage], sphere: bool) -> tuple[list[Any], list[
     if any(len(_steiner_points(m)) for _, m, _ in stages):
         entries.append((Line2D([], [], marker="o", color=BLUE, linestyle="", markersize=3), "Steiner points"))
     if sphere:
-        entries.append((Line2D([], [], color=RED, linestyle="--"), "diametral sphere (wire) and its circle "
-                        "in the face's plane"))
+        star = Line2D([], [], marker="*", color=RED, markeredgecolor="black", linestyle="", markersize=9)
+        circle = Line2D([], [], color=RED, linestyle="--")
+        entries += [(circle, "diametral sphere, circle in the face's plane"),
+                    (star, "its deepest encroaching vertex")]
     return [h for h, _ in entries], [t for _, t in entries]
 
 
