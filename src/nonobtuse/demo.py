@@ -165,16 +165,17 @@ def run_part(out: Callable[[str], None] = print, plot: str | Path | None = None)
     out(part_report(f"before: {how}", before, before_report))
     result = refine_gabriel(plc)
     s = result.stats
+    report = result.report or check_gabriel(result.mesh)  # refine_gabriel's certificate of its mesh
     out(part_report(f"after: refine_gabriel ({s['strategy']}, {s['status']} in {s['seconds']:.2f} s)",
-                    result.mesh, result.report))
+                    result.mesh, report))
     out(f"  Steiner points: {s['steiner_points']} ({s['steiner_on_segments']} on segments, "
         f"{s['steiner_on_facets']} in facets); certificate: "
-        f"{'every boundary face and subsegment Gabriel (exact)' if result.report.ok else 'NOT Gabriel'}")
+        f"{'every boundary face and subsegment Gabriel (exact)' if report.ok else 'NOT Gabriel'}")
     if plot is not None:
         from nonobtuse.plot3d import plot_gabriel_stages  # matplotlib only when asked
 
         plot_gabriel_stages([(f"before ({how.split(' (')[0]})", before, before_report),
-                             ("after refine_gabriel", result.mesh, result.report)], plot, title=PART.name)
+                             ("after refine_gabriel", result.mesh, report)], plot, title=PART.name)
         out(f"picture -> {plot}")
 
 

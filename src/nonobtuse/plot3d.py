@@ -174,7 +174,7 @@ def _legend_entries(stages: list[Stage], sphere: bool) -> tuple[list[Any], list[
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
-    entries = [(Patch(facecolor=GREY, edgecolor="0.35"), "boundary faces")]
+    entries: list[tuple[Any, str]] = [(Patch(facecolor=GREY, edgecolor="0.35"), "boundary faces")]
     if any(not r.ok for _, _, r in stages):
         entries += [(Patch(facecolor=RED), "non-Gabriel face"),
                     (Line2D([], [], color=RED, linewidth=1.6), "encroached subsegment"),

@@ -10,11 +10,15 @@ import sys
 import time
 from dataclasses import replace
 from pathlib import Path
-from typing import Any, Callable
+from typing import TYPE_CHECKING, Any, Callable
 
 from nonobtuse.cli import guards
 from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS
 from nonobtuse.io import jsonable
+
+if TYPE_CHECKING:  # the 3D modules are imported when a command runs
+    from nonobtuse.mesh3d import PLC, Gabriel3DResult
+    from nonobtuse.plot3d import Stage
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -106,7 +110,7 @@ def run_check3d(args: argparse.Namespace) -> int:
 CHECK3D_PROGRESS_FACES = 10_000  # below this check3d takes about a second: no progress lines
 
 
-def _pictures(args: argparse.Namespace, stages: list[Any]) -> None:
+def _pictures(args: argparse.Namespace, stages: list[Stage]) -> None:
     """--plot (every stage) and --offenders (the last stage's offenders), with a line on stderr for each."""
     if args.plot:
         from nonobtuse.plot3d import plot_gabriel_stages  # matplotlib only when asked
@@ -159,12 +163,13 @@ def run_refine3d(args: argparse.Namespace) -> int:
     return EXIT_OK if result.status == "converged" else EXIT_NOT_CONVERGED
 
 
-def _refine3d_stages(plc: Any, result: Any) -> list[Any]:
+def _refine3d_stages(plc: PLC, result: Gabriel3DResult) -> list[Stage]:
     """(label, mesh, report) before (the input's Delaunay tetrahedralization, cgal backend) and after."""
     from nonobtuse.mesh3d import check_gabriel, tetrahedralize
 
     before = tetrahedralize(plc, "cgal")
-    return [("before", before, check_gabriel(before)), ("after refine3d", result.mesh, result.report)]
+    after = result.report or check_gabriel(result.mesh)  # refine_gabriel's certificate of its mesh
+    return [("before", before, check_gabriel(before)), ("after refine3d", result.mesh, after)]
 
 
 def _files_read(path: str) -> list[Path]:
