@@ -150,7 +150,8 @@ def part_report(title: str, mesh: TetMesh, report: GabrielReport) -> str:
         "faces",
         f"  non-Gabriel (exact): {len(report.faces)} of {report.n_faces} boundary faces, "
         f"{len(report.segments)} of {report.n_segments} subsegments",
-        f"  negative control-volume couplings: {cv['negative_couplings']} of {cv['edges']} edges",
+        f"  negative control-volume couplings: {cv['negative_couplings']} of {cv['edges']} edges"
+        if len(mesh.tets) else "  control volumes: none (no tets)",
     ])
 
 
