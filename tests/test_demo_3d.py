@@ -7,6 +7,7 @@ import sys
 from nonobtuse import demo
 from nonobtuse.cli import EXIT_OK, main
 from nonobtuse.mesh3d import check_gabriel, load_plc, refine_gabriel
+from nonobtuse.plot3d import unrepaired_mesh
 from test_cli_first_use import run_without_optional_packages
 
 
@@ -20,7 +21,7 @@ def test_run_part_reports_the_exact_checks_before_and_after():
     lines: list[str] = []
     demo.run_part(lines.append)
     plc = load_plc(demo.PART)
-    before, how = demo.tetrahedralize_part(plc)
+    before, how = unrepaired_mesh(plc)
     report = check_gabriel(before)
     assert not report.ok  # the demo starts with a real problem
     after = refine_gabriel(plc)
@@ -46,7 +47,7 @@ def test_demo_plot_writes_both_pictures(tmp_path, capsys):
 
 def test_without_tetgen_the_cgal_backend_tetrahedralizes_the_part(monkeypatch):
     monkeypatch.setitem(sys.modules, "tetgen", None)  # as in the light install (the demo extra)
-    mesh, how = demo.tetrahedralize_part(load_plc(demo.PART))
+    mesh, how = unrepaired_mesh(load_plc(demo.PART))
     assert how.startswith("the cgal backend (TetGen not installed") and len(mesh.tets) > 0
     assert mesh.stats["backend"] == "cgal"
 
@@ -54,6 +55,6 @@ def test_without_tetgen_the_cgal_backend_tetrahedralizes_the_part(monkeypatch):
 def test_without_any_optional_package_the_demo_checks_the_surface_and_still_certifies():
     done = run_without_optional_packages("demo")
     assert done.returncode == 0, done.stderr
-    assert "before: the input surface, no tets (libigl not installed: pip install 'nonobtuse[demo]')" \
-        in done.stdout
+    assert ("before: the input surface, no tets (TetGen not installed: pip install 'nonobtuse[3d]'; libigl "
+            "not installed: pip install 'nonobtuse[demo]')") in done.stdout
     assert "certificate: every boundary face and subsegment Gabriel (exact)" in done.stdout

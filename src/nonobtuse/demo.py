@@ -27,10 +27,8 @@ from nonobtuse.certificate import KINDS, check_mesh
 from nonobtuse.control_volumes import control_volumes
 from nonobtuse.domain import Domain
 from nonobtuse.mesh import Mesh
-from nonobtuse.mesh3d import GabrielReport, TetMesh, check_gabriel, load_plc, refine_gabriel, tetrahedralize
+from nonobtuse.mesh3d import GabrielReport, TetMesh, check_gabriel, load_plc, refine_gabriel
 from nonobtuse.mesh3d.gabriel import control_volume_summary
-from nonobtuse.mesh3d.plc import PLC
-from nonobtuse.mesh3d.tetrahedralize import TETGEN_DEFAULT_SWITCHES
 from nonobtuse.refinement import refine
 from nonobtuse.triangulation import triangulate
 
@@ -125,23 +123,6 @@ def part_picture_path(plot: str | Path) -> Path:
     return plot.with_name(f"{plot.stem}_3d{plot.suffix}")
 
 
-def tetrahedralize_part(plc: PLC) -> tuple[TetMesh, str]:
-    """The demo's "before" mesh of ``plc`` and what made it: TetGen with its default switches when the
-    ``tetgen`` package is installed (the 3d extra), else the cgal backend (its fallback needs libigl: the demo
-    extra), else the input surface with no tets (``refine_gabriel`` with no Steiner point: its subfacets are
-    the input triangles, checked against the input vertices)."""
-    try:
-        return tetrahedralize(plc, "tetgen"), f"TetGen -{TETGEN_DEFAULT_SWITCHES}"
-    except ImportError:
-        pass
-    try:
-        return tetrahedralize(plc, "cgal"), ("the cgal backend (TetGen not installed: pip install "
-                                             "'nonobtuse[3d]')")
-    except ImportError:
-        return refine_gabriel(plc, max_steiner=0).mesh, ("the input surface, no tets (libigl not installed: "
-                                                         "pip install 'nonobtuse[demo]')")
-
-
 def part_report(title: str, mesh: TetMesh, report: GabrielReport) -> str:
     """A compact report of one 3D mesh: size, exact Gabriel check, control-volume coupling signs."""
     cv = control_volume_summary(mesh)
@@ -156,12 +137,14 @@ def part_report(title: str, mesh: TetMesh, report: GabrielReport) -> str:
 
 
 def run_part(out: Callable[[str], None] = print, plot: str | Path | None = None) -> None:
-    """The 3D part of the demo: load ``PART``, tetrahedralize it (:func:`tetrahedralize_part`), check it,
-    repair it with :func:`refine_gabriel` (defaults), report; with ``plot``, draw both stages there
+    """The 3D part of the demo: load ``PART``, tetrahedralize it (:func:`nonobtuse.plot3d.unrepaired_mesh`),
+    check it, repair it with :func:`refine_gabriel` (defaults), report; with ``plot``, draw both stages there
     (:func:`nonobtuse.plot3d.plot_gabriel_stages`). Cost: about a second (the picture a few more)."""
     plc = load_plc(PART)
     out(f"3D: {PART.name} (CAD part, CC0): {len(plc.points)} points, {len(plc.triangles)} triangles")
-    before, how = tetrahedralize_part(plc)
+    from nonobtuse.plot3d import unrepaired_mesh
+
+    before, how = unrepaired_mesh(plc)
     before_report = check_gabriel(before)
     out(part_report(f"before: {how}", before, before_report))
     result = refine_gabriel(plc)
@@ -173,7 +156,7 @@ def run_part(out: Callable[[str], None] = print, plot: str | Path | None = None)
         f"{s['steiner_on_facets']} in facets); certificate: "
         f"{'every boundary face and subsegment Gabriel (exact)' if report.ok else 'NOT Gabriel'}")
     if plot is not None:
-        from nonobtuse.plot3d import plot_gabriel_stages  # matplotlib only when asked
+        from nonobtuse.plot3d import plot_gabriel_stages
 
         plot_gabriel_stages([(f"before ({how.split(' (')[0]})", before, before_report),
                              ("after refine_gabriel", result.mesh, report)], plot, title=PART.name)

@@ -17,8 +17,11 @@ from typing import Any
 
 import numpy as np
 
+from nonobtuse.errors import InvalidInputError
+from nonobtuse.mesh3d import refine_gabriel, tetrahedralize
 from nonobtuse.mesh3d.gabriel import GabrielReport
-from nonobtuse.mesh3d.plc import TetMesh
+from nonobtuse.mesh3d.plc import PLC, TetMesh
+from nonobtuse.mesh3d.tetrahedralize import TETGEN_DEFAULT_SWITCHES
 from nonobtuse.plot import save_figure
 
 MAX_DRAWN_FACES = 20_000  # mplot3d sorts and draws polygons in Python: about a second per 20,000
@@ -32,6 +35,25 @@ FACES_GID, ENCROACHERS_GID, STEINER_GID, SEGMENTS_GID, CIRCLE_GID = (
 RED_RGBA = (0.84, 0.15, 0.16, 0.95)
 
 Stage = tuple[str, TetMesh, GabrielReport]
+
+
+def unrepaired_mesh(plc: PLC) -> tuple[TetMesh, str]:
+    """The mesh a "before" panel shows for ``plc`` (the demo's, refine3d's) and what made it: TetGen with its
+    default switches when the ``tetgen`` package is installed (the 3d extra) and succeeds, else the cgal
+    backend (its fallback needs libigl: the demo extra), else the input surface with no tets
+    (``refine_gabriel`` with no Steiner point: its subfacets, the facets triangulated, against the input
+    vertices). Raises what the cgal backend raises on an input it refuses."""
+    try:
+        return tetrahedralize(plc, "tetgen"), f"TetGen -{TETGEN_DEFAULT_SWITCHES}"
+    except ImportError:
+        why = "TetGen not installed: pip install 'nonobtuse[3d]'"
+    except InvalidInputError:
+        why = "TetGen failed on this input"
+    try:
+        return tetrahedralize(plc, "cgal"), f"the cgal backend ({why})"
+    except ImportError:
+        return refine_gabriel(plc, max_steiner=0).mesh, (f"the input surface, no tets ({why}; libigl not "
+                                                         "installed: pip install 'nonobtuse[demo]')")
 
 
 def _steiner_points(mesh: TetMesh) -> np.ndarray:

@@ -164,12 +164,14 @@ def run_refine3d(args: argparse.Namespace) -> int:
 
 
 def _refine3d_stages(plc: PLC, result: Gabriel3DResult) -> list[Stage]:
-    """(label, mesh, report) before (the input's Delaunay tetrahedralization, cgal backend) and after."""
-    from nonobtuse.mesh3d import check_gabriel, tetrahedralize
+    """(label, mesh, report) before (:func:`nonobtuse.plot3d.unrepaired_mesh`) and after."""
+    from nonobtuse.mesh3d import check_gabriel
+    from nonobtuse.plot3d import unrepaired_mesh
 
-    before = tetrahedralize(plc, "cgal")
+    before, how = unrepaired_mesh(plc)
     after = result.report or check_gabriel(result.mesh)  # refine_gabriel's certificate of its mesh
-    return [("before", before, check_gabriel(before)), ("after refine3d", result.mesh, after)]
+    return [(f"before ({how.split(' (')[0]})", before, check_gabriel(before)),
+            ("after refine3d", result.mesh, after)]
 
 
 def _files_read(path: str) -> list[Path]:
