@@ -48,8 +48,8 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="how encroached subsegments are split (see refine_gabriel)")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     guards.add_timings_option(p)
-    _add_picture_options(p, "the boundary of the input's Delaunay tetrahedralization before and of the mesh "
-                            "after refinement")
+    _add_picture_options(p, "the boundary before (the input tetrahedralized by TetGen when installed, else "
+                            "the cgal backend) and after refinement")
     guards.add_quiet_option(p)
     p.set_defaults(func=run_refine3d)
 
