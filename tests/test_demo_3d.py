@@ -1,14 +1,13 @@
-"""The demo's 3D part: the bundled CAD part is checked, repaired and certified, and drawn with --plot."""
+"""The demo's 3D part: the bundled CAD part is checked, repaired and certified (demo --plot's pictures are
+checked in test_plot.py, the light install in test_cli_first_use.py)."""
 
 from __future__ import annotations
 
 import sys
 
 from nonobtuse import demo
-from nonobtuse.cli import EXIT_OK, main
 from nonobtuse.mesh3d import check_gabriel, load_plc, refine_gabriel
 from nonobtuse.plot3d import unrepaired_mesh
-from test_cli_first_use import run_without_optional_packages
 
 
 def test_the_part_is_bundled_with_its_provenance():
@@ -36,25 +35,8 @@ def test_run_part_reports_the_exact_checks_before_and_after():
     assert "negative control-volume couplings: 0 of" in text
 
 
-def test_demo_plot_writes_both_pictures(tmp_path, capsys):
-    png = tmp_path / "demo.png"
-    assert main(["demo", "--plot", str(png)]) == EXIT_OK
-    out = capsys.readouterr().out
-    for path in (png, tmp_path / "demo_3d.png"):
-        assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-        assert f"picture -> {path}" in out
-
-
 def test_without_tetgen_the_cgal_backend_tetrahedralizes_the_part(monkeypatch):
     monkeypatch.setitem(sys.modules, "tetgen", None)  # as in the light install (the demo extra)
     mesh, how = unrepaired_mesh(load_plc(demo.PART))
     assert how.startswith("the cgal backend (TetGen not installed") and len(mesh.tets) > 0
     assert mesh.stats["backend"] == "cgal"
-
-
-def test_without_any_optional_package_the_demo_checks_the_surface_and_still_certifies():
-    done = run_without_optional_packages("demo")
-    assert done.returncode == 0, done.stderr
-    assert ("before: the input surface, no tets (TetGen not installed: pip install 'nonobtuse[3d]'; libigl "
-            "not installed: pip install 'nonobtuse[demo]')") in done.stdout
-    assert "certificate: every boundary face and subsegment Gabriel (exact)" in done.stdout
