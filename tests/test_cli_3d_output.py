@@ -121,11 +121,13 @@ def test_refine3d_progress_only_on_a_terminal(monkeypatch, tmp_path, options, tt
         assert out == ""
 
 
-def test_check_and_export_quiet_print_nothing(tmp_path, capsys):
+def test_quiet_prints_nothing_on_success(tmp_path, capsys):
     la = Path(__file__).parent / "data" / "box.poly"
     mesh = tmp_path / "box.json"
     main(["refine", str(la), "-o", str(mesh), "--convex-hull", "-q"])
     assert main(["check", str(mesh), "-q"]) == EXIT_OK
     assert main(["export", str(mesh), "-o", str(tmp_path / "box.uge"), "-q"]) == EXIT_OK
-    assert capsys.readouterr() == ("", "")
-    assert (tmp_path / "box.uge").stat().st_size > 0
+    assert main(["refine", str(la), "-o", str(tmp_path / "r.uge"), "--convex-hull", "-q"]) == EXIT_OK
+    assert main(["refine3d", str(RAMP), "-o", str(tmp_path / "r3.uge"), "-q"]) == EXIT_OK
+    assert capsys.readouterr() == ("", "")  # not even the export diagnostics
+    assert all((tmp_path / name).stat().st_size > 0 for name in ("box.uge", "r.uge", "r3.uge"))

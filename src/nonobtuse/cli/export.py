@@ -35,13 +35,15 @@ def read_any_mesh(path: Path) -> AnyMesh:
     return read_mesh(path)
 
 
-def write_output(mesh: AnyMesh, path: str | Path, *, thickness: float = 1.0) -> ControlVolumeGrid | None:
+def write_output(mesh: AnyMesh, path: str | Path, *, thickness: float = 1.0,
+                 quiet: bool = False) -> ControlVolumeGrid | None:
     """Write ``mesh`` to ``path``: a simulator export when the name is one (the LaGriT-style diagnostics go to
-    stderr; returns the grid), else the 2D or 3D mesh writer (returns None)."""
+    stderr unless ``quiet``; returns the grid), else the 2D or 3D mesh writer (returns None)."""
     if is_export_path(path):
         grid, paths = export_mesh(mesh, path, thickness=thickness)
-        print(grid.diagnostics(), file=sys.stderr)
-        print(f"wrote {', '.join(str(p) for p in paths)}", file=sys.stderr)
+        if not quiet:
+            print(grid.diagnostics(), file=sys.stderr)
+            print(f"wrote {', '.join(str(p) for p in paths)}", file=sys.stderr)
         return grid
     if isinstance(mesh, TetMesh):
         from nonobtuse.io.tetmesh import write_tetmesh

@@ -154,7 +154,7 @@ def run_refine3d(args: argparse.Namespace) -> int:
     written = dict(stats)
     if not args.timings:  # the file is then the same for the same input and options
         written["seconds"] = None
-    write_output(replace(result.mesh, stats=written), args.output)
+    write_output(replace(result.mesh, stats=written), args.output, quiet=args.quiet)
     shown = _unchecked_as_unknown(stats)
     _print({"input": args.input, "output": args.output, **shown}, args,
            lambda: refine3d_text(shown, args.input, args.output))

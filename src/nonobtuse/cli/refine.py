@@ -61,7 +61,8 @@ def run(args: argparse.Namespace) -> int:
     result = refine(domain, strategy=args.strategy, max_steiner=args.max_steiner, threads=args.threads)
     progress.done(f"{result.status}, {result.stats['steiner_points']} Steiner points; writing {args.output}")
     require_points_in_domain(domain, result.mesh.triangles)
-    write_output(guards.without_timings(result.mesh, args.timings), args.output, thickness=args.thickness)
+    write_output(guards.without_timings(result.mesh, args.timings), args.output, thickness=args.thickness,
+                 quiet=args.quiet)
     s = result.stats
     if args.json:
         json.dump(s if args.verbose else {k: v for k, v in s.items() if k not in PER_EDGE_KEYS}, sys.stdout)
