@@ -169,7 +169,8 @@ def plot_gabriel_stages(stages: list[Stage], path: str | Path, *, title: str = "
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    worst = next((s for s in (_sphere(m, r) for _, m, r in stages) if s is not None), None)
+    found = [(i, s) for i, s in enumerate(_sphere(m, r) for _, m, r in stages) if s is not None]
+    origin, worst = found[0] if found else (-1, None)  # the first stage with an offender, and its worst
     rows = 2 if worst is not None else 1
     fig = plt.figure(figsize=(PANEL_IN * len(stages), PANEL_IN * rows + 0.6), constrained_layout=True)
     for i, (label, mesh, report) in enumerate(stages):
@@ -183,10 +184,12 @@ def plot_gabriel_stages(stages: list[Stage], path: str | Path, *, title: str = "
         ax = fig.add_subplot(rows, len(stages), len(stages) + i + 1, projection="3d")
         _draw(ax, mesh, report, (centre, 1.3 * radius))
         _draw_sphere(ax, centre, radius, normal)
-        ax.scatter(*np.asarray(mesh.points, dtype=np.float64)[vertex], s=120, marker="*", color=RED,
-                   edgecolors="black", depthshade=False)
+        if i == origin:
+            ax.scatter(*np.asarray(mesh.points, dtype=np.float64)[vertex], s=120, marker="*", color=RED,
+                       edgecolors="black", depthshade=False)
         ax.set_title(f"{label}: the deepest offender, true scale\n(diametral sphere radius {radius:.3g}, "
-                     f"encroached by vertex {vertex})", fontsize=8)
+                     f"encroached by vertex {vertex})" if i == origin else f"{label}: the same place, true "
+                     f"scale\n(where {stages[origin][0]} had its deepest offender)", fontsize=8)
     return save_figure(fig, path, _legend_entries(stages, worst is not None), title, fontsize=7,
                        ncols=LEGEND_COLUMNS_PER_PANEL * len(stages))
 
