@@ -3,7 +3,7 @@ a .poly, (validate,) refine, write .vtu, write .json, with the wall time of each
 
 Inputs: a disk of ``h = min(4000, n / 2)`` boundary vertices (a closed loop, 1-based ids, vertex and segment
 marker columns) with ``n - h`` random interior points, coordinates random float64 in shortest round-trip form,
-at n = 1e4, 1e5, 1e6 (seed 0), written once to ``experiments/results/cache/``.
+at n = 1e4, 1e5, 1e6 (seed 0), written once to ``OUT/cache/``.
 
 - ours: :func:`nonobtuse.io.triangle.read_poly`, the validation of :func:`nonobtuse.io.load_domain`,
   :func:`nonobtuse.refine.refine` (greedy), :func:`nonobtuse.io.write_mesh` to .vtu and to .json.
@@ -16,10 +16,11 @@ write .vtu) and after the .json. Runs of the two tools alternate, best of ``--re
 machine).
 
     PYTHONPATH=src .venv/bin/python -m experiments.bench_pipeline [--quick] [--sizes 10000 1000000]
-        [--repeat 1]
+        [--repeat 1] [--out OUT]
 
-Writes experiments/results/bench_pipeline.csv (``--quick``: n = 1e4 and 1e5, bench_pipeline_quick.csv) and
-prints the table with the ratios ours / Triangle of the pipeline time and of the peak memory.
+Writes OUT/bench_pipeline.csv (OUT: default experiments/results; ``--quick``: n = 1e4 and 1e5,
+bench_pipeline_quick.csv) and prints the table with the ratios ours / Triangle of the pipeline time and of
+the peak memory.
 """
 
 from __future__ import annotations
@@ -35,8 +36,9 @@ from pathlib import Path
 
 import numpy as np
 
+from experiments.outputs import add_out_option, out_dir
+
 ROOT = Path(__file__).resolve().parents[1]
-RESULTS = ROOT / "experiments" / "results"
 PHASES = {
     "ours": ("read", "validate", "refine", "write_vtu", "write_json"),
     "triangle": ("read", "refine", "write_vtu", "write_json"),
@@ -128,6 +130,7 @@ def main() -> None:
     p.add_argument("--sizes", type=int, nargs="+", help="vertex counts (default 1e4 1e5 1e6)")
     p.add_argument("--repeat", type=int, default=1, help="runs per tool and size, best kept (default 1)")
     p.add_argument("--child", nargs=2, metavar=("TOOL", "PATH"), help=argparse.SUPPRESS)
+    add_out_option(p, "the CSV")
     args = p.parse_args()
     if args.child:
         tool, path = args.child[0], Path(args.child[1])
@@ -135,10 +138,10 @@ def main() -> None:
         print(json.dumps(run(path, path.with_name(f"{path.stem}.{tool}.out"))))
         return
     sizes = args.sizes or ([10_000, 100_000] if args.quick else [10_000, 100_000, 1_000_000])
-    (RESULTS / "cache").mkdir(parents=True, exist_ok=True)
+    cache = out_dir(args, cache=True)
     rows = []
     for n in sizes:
-        path = RESULTS / "cache" / f"bench_pipeline_{n}.poly"
+        path = cache / f"bench_pipeline_{n}.poly"
         if not path.is_file():
             write_disk_poly(path, n)
         best: dict[str, dict[str, float]] = {}
@@ -158,7 +161,7 @@ def main() -> None:
             f"{ours['peak_mb_vtu'] / tri['peak_mb_vtu']:.2f}",
             flush=True,
         )
-    out = RESULTS / ("bench_pipeline_quick.csv" if args.quick else "bench_pipeline.csv")
+    out = out_dir(args) / ("bench_pipeline_quick.csv" if args.quick else "bench_pipeline.csv")
     fields = ["n", "tool", "total", *PHASES["ours"], "peak_mb_vtu", "peak_mb_json"]
     with open(out, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)

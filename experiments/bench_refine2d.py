@@ -8,11 +8,11 @@ domains of 1e3 .. 1e6 vertices: convex polygons with interior points, star-shape
 with interior points, and thin layers (a 1000 m x 1 m strip whose top and bottom are polylines, with
 interior points).
 
-    PYTHONPATH=src .venv/bin/python -m experiments.bench_refine2d [--quick] [--pslg] [--ratio]
+    PYTHONPATH=src .venv/bin/python -m experiments.bench_refine2d [--quick] [--pslg] [--ratio] [--out OUT]
 
-Writes experiments/results/bench_refine2d.csv and .png and prints a table. --quick: generated sizes up to 1e4.
---pslg: only the PSLG inputs, with the CG:SHOP best known counts beside; writes
-experiments/results/bench_refine2d_pslg.csv. --ratio: only wall time against Triangle -pD on the convex
+Writes OUT/bench_refine2d.csv and .png (OUT: default experiments/results) and prints a table. --quick:
+generated sizes up to 1e4. --pslg: only the PSLG inputs, with the CG:SHOP best known counts beside; writes
+OUT/bench_refine2d_pslg.csv. --ratio: only wall time against Triangle -pD on the convex
 polygon, the star-shaped polygon and the thin layer at 1e6 vertices (seed 0), runs interleaved, best of 3 each
 (for a shared machine).
 """
@@ -32,6 +32,7 @@ sys.path[:0] = [str(ROOT / "tests"), str(ROOT / "experiments")]  # nonobtuse: in
 
 import nonobtuse  # noqa: E402
 from cgshop_best_known import best_known  # noqa: E402
+from experiments.outputs import add_out_option, out_dir  # noqa: E402
 from nonobtuse import Domain  # noqa: E402
 from nonobtuse.io import load_domain  # noqa: E402
 from nonobtuse.peers import triangle_pd  # noqa: E402
@@ -137,6 +138,7 @@ def main() -> None:
     ap.add_argument("--quick", action="store_true", help="generated inputs up to 1e4 vertices")
     ap.add_argument("--pslg", action="store_true", help="only the PSLG inputs (CG:SHOP *-exterior*, la.poly)")
     ap.add_argument("--ratio", action="store_true", help="wall time against Triangle -pD at 1e6, best of 3")
+    add_out_option(ap)
     args = ap.parse_args()
     if args.ratio:
         ratio()
@@ -160,8 +162,7 @@ def main() -> None:
                 run(f"{gen.__name__}_{n}", gen.__name__, gen(n, np.random.default_rng(n)), rows)
             except nonobtuse.InvalidInputError as e:  # a generated input that is not a valid domain
                 print(f"{gen.__name__}_{n}: skipped, {e}")
-    out = ROOT / "experiments" / "results"
-    out.mkdir(parents=True, exist_ok=True)
+    out = out_dir(args)
     stem = "bench_refine2d_pslg" if args.pslg else "bench_refine2d"
     with open(out / f"{stem}.csv", "w", newline="") as fh:
         w = csv.DictWriter(fh, fieldnames=list(dict.fromkeys(k for r in rows for k in r)))

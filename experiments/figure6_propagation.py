@@ -70,10 +70,11 @@ We refine each instance with nonobtuse.refine (greedy and project-flip; budget n
 n = 300), Triangle -pD and CGAL make_conforming_Gabriel_2: layers for n = 10..10,000, the fan for
 n = 10..1,000.
 
-    PYTHONPATH=src .venv/bin/python -m experiments.figure6_propagation [--quick]
+    PYTHONPATH=src .venv/bin/python -m experiments.figure6_propagation [--quick] [--out OUT]
 
-Writes experiments/results/figure6_propagation.csv (one row per family and n) and .png (--quick: n up to
-1,000 and 100, *_quick.* files) and prints the table and the fitted exponent of each count against n.
+Writes OUT/figure6_propagation.csv (one row per family and n; OUT: default experiments/results) and .png
+(--quick: n up to 1,000 and 100, *_quick.* files) and prints the table and the fitted exponent of each
+count against n.
 """
 
 from __future__ import annotations
@@ -92,6 +93,7 @@ sys.path[:0] = [str(ROOT / "experiments")]  # nonobtuse: installed or PYTHONPATH
 
 import nonobtuse  # noqa: E402
 from bench_refine2d import cgal_gabriel  # noqa: E402
+from experiments.outputs import add_out_option, out_dir  # noqa: E402
 from nonobtuse import Domain  # noqa: E402
 from nonobtuse.certificate import check_mesh  # noqa: E402
 from nonobtuse.peers import triangle_pd  # noqa: E402
@@ -226,6 +228,7 @@ def exponent(rows: list, key: str) -> float:
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="n up to 1,000 (fan: 100); writes *_quick.* files")
+    add_out_option(ap)
     args = ap.parse_args()
     plan = [("layers", n, True) for n in LAYERS_NS if not args.quick or n <= 1000]
     plan += [("fan", n, n <= FAN_OURS_MAX_N) for n in FAN_NS if not args.quick or n <= 100]
@@ -233,8 +236,7 @@ def main() -> None:
     for family, n, ours in plan:
         rows.append(measure(family, n, ours))
         print(" ".join(f"{k}={v}" for k, v in rows[-1].items()), flush=True)
-    out = ROOT / "experiments" / "results"
-    out.mkdir(parents=True, exist_ok=True)
+    out = out_dir(args)
     stem = "figure6_propagation" + ("_quick" if args.quick else "")
     with open(out / f"{stem}.csv", "w", newline="") as fh:
         w = csv.DictWriter(fh, fieldnames=list(dict.fromkeys(k for r in rows for k in r)))

@@ -21,9 +21,10 @@ Cases: the 2D geological section of ``nonobtuse.demo`` (refined by ``nonobtuse.r
 constrained Delaunay triangulation) and a 3D part from ``../shared/data/3d`` (joint.off: ``refine_gabriel``
 against TetGen ``-pq1.414``). ``--quick`` runs the 2D section only.
 
-    PYTHONPATH=src python -m experiments.fv_maximum_principle [--quick] [--part PATH]
+    PYTHONPATH=src python -m experiments.fv_maximum_principle [--quick] [--part PATH] [--out OUT]
 
-Outputs ``experiments/results/fv_maximum_principle.csv`` (counts) and ``fv_maximum_principle.png`` (per mesh,
+Outputs ``OUT/fv_maximum_principle.csv`` (counts; OUT: default experiments/results) and
+``fv_maximum_principle.png`` (per mesh,
 the cells where either problem breaks the principle, coloured by the overshoot or the negative response),
 ``*_quick.*`` with ``--quick``.
 """
@@ -42,6 +43,7 @@ import numpy as np
 import scipy.sparse
 import scipy.sparse.linalg
 
+from experiments.outputs import add_out_option, out_dir
 from nonobtuse.demo import cross_section
 from nonobtuse.io.export import export_mesh
 from nonobtuse.refinement import refine
@@ -176,7 +178,7 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--quick", action="store_true", help="the 2D section only")
     parser.add_argument("--part", type=Path, default=DEFAULT_PART, help="3D part (default joint.off)")
-    parser.add_argument("--out", type=Path, default=ROOT / "experiments" / "results")
+    add_out_option(parser)
     args = parser.parse_args(argv)
     cases = [("2d section", meshes_2d)]
     if not args.quick:
@@ -191,12 +193,12 @@ def main(argv: list[str] | None = None) -> int:
                 rows.append(row)
                 pictures.append((case, label, picture))
     suffix = "_quick" if args.quick else ""
-    args.out.mkdir(parents=True, exist_ok=True)
-    with open(args.out / f"fv_maximum_principle{suffix}.csv", "w", newline="") as f:
+    out = out_dir(args)
+    with open(out / f"fv_maximum_principle{suffix}.csv", "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=COLUMNS)
         writer.writeheader()
         writer.writerows(rows)
-    plot(pictures, args.out / f"fv_maximum_principle{suffix}.png")
+    plot(pictures, out / f"fv_maximum_principle{suffix}.png")
     return 0
 
 

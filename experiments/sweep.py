@@ -48,10 +48,10 @@ from concurrent.futures import ThreadPoolExecutor, as_completed
 from pathlib import Path
 from typing import Any
 
+from experiments.outputs import add_out_option
+
 TaskRef = str
 Record = dict[str, Any]
-
-RESULTS_DIR = Path(__file__).resolve().parent / "results"
 
 # The child reads its payload from stdin; the parent's import path comes first so that the task module
 # resolves the same way in the case process as in the process that named it.
@@ -367,9 +367,7 @@ def add_sweep_arguments(parser: argparse.ArgumentParser) -> None:
     where = parser.add_mutually_exclusive_group()
     where.add_argument("--scheduler", metavar="tcp://HOST:PORT", help="run on this Dask scheduler")
     where.add_argument("--dask-local", action="store_true", help="run on a Dask LocalCluster on 127.0.0.1")
-    parser.add_argument("--out", type=Path, default=RESULTS_DIR,
-                        help="directory of the CSV and PNG outputs; case records go to OUT/cache/ "
-                             "(default %(default)s)")
+    add_out_option(parser)
     parser.add_argument("--fresh", action="store_true", help="forget the recorded cases and run all again")
     parser.add_argument("--time-limit", type=float, default=None,
                         help="seconds per case before it is killed and recorded as timeout")

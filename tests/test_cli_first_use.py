@@ -120,3 +120,7 @@ def test_demo_without_the_demo_extra_says_what_is_not_measured():
     done = run_without_optional_packages("demo")
     assert done.returncode == 0, done.stderr
     assert "not measured (the 'triangle' package is not installed" in done.stdout
+    # the 3D part: no TetGen and no libigl, so the input surface is checked; the repair is still certified
+    assert ("before: the input surface, no tets (TetGen not installed: pip install 'nonobtuse[3d]'; libigl "
+            "not installed: pip install 'nonobtuse[demo]')") in done.stdout
+    assert "certificate: every boundary face and subsegment Gabriel (exact)" in done.stdout

@@ -42,7 +42,7 @@ def test_check3d_gabriel_cube_exits_0(cube, capsys):
 
 def test_check3d_encroached_exits_1(low_tet, capsys):
     assert main(["check3d", str(low_tet), "--backend", "tetgen"]) == EXIT_VIOLATIONS
-    assert "encroached_facets: 1" in capsys.readouterr().out  # the base
+    assert "boundary faces        1 of 4 encroached" in capsys.readouterr().out  # the base
     assert main(["check3d", str(low_tet), "--json"]) == EXIT_VIOLATIONS
     deepest = json.loads(capsys.readouterr().out)["gabriel"]["deepest_faces"][0]
     assert deepest["vertex"] == 3  # the apex encroaches the base

@@ -142,7 +142,8 @@ def test_cli_refine_and_check_and_demo_write_pictures(tmp_path, capsys):
                  str(tmp_path / "refine.png"), "--exaggeration", "3"]) == EXIT_OK
     assert main(["check", str(domain), "--plot", str(tmp_path / "check.png")]) == EXIT_VIOLATIONS
     assert main(["demo", "--plot", str(tmp_path / "demo.png")]) == EXIT_OK
-    for name in ("refine", "check", "demo"):
+    assert f"picture -> {tmp_path / 'demo_3d.png'}" in capsys.readouterr().out  # the demo's 3D part beside
+    for name in ("refine", "check", "demo", "demo_3d"):
         width, height = png_size(tmp_path / f"{name}.png")
         assert width > 0 and height > 0
     with pytest.raises(SystemExit) as usage:

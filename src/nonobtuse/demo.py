@@ -1,4 +1,5 @@
-"""The built-in demo: a thin-layer geological cross-section, kilometres long and metres thick.
+"""The built-in demo: a thin-layer geological cross-section, kilometres long and metres thick, in 2D; and a
+small CAD part in 3D.
 
 Four layers separated by three wavy interfaces (interior constraints), a wavy topography on top, each layer
 with its own region attribute and conductivity. Every curve is sampled at its own spacing, as digitised
@@ -6,6 +7,13 @@ horizons are, so the constrained Delaunay triangulation is full of flat triangle
 boundary and on the interfaces, hence wrong-sign control-volume coefficients. The refinement step extends
 :func:`run` then refines the boundary and the interfaces with the fewest Steiner points it can and reports the
 same figures again, beside the lower bound and Triangle -pD's count for the same domain.
+
+The 3D part (:func:`run_part`) is CGAL's ``joint`` CAD part (446 triangles, genus 2; bundled as package data,
+CC0, see ``data/SOURCES.md``): tetrahedralized by TetGen (``-pq1.414Y``: the boundary as given) when the
+``tetgen`` package is installed, else by the cgal backend (Delaunay, with the winding-number fallback: libigl,
+in the demo extra), checked exactly for Gabriel boundary faces and subsegments, repaired by
+:func:`nonobtuse.mesh3d.refine_gabriel` and certified. Without libigl either (a plain ``pip install .``) the
+input surface is checked against its own vertices instead.
 """
 
 from __future__ import annotations
@@ -19,6 +27,8 @@ from nonobtuse.certificate import KINDS, check_mesh
 from nonobtuse.control_volumes import control_volumes
 from nonobtuse.domain import Domain
 from nonobtuse.mesh import Mesh
+from nonobtuse.mesh3d import GabrielReport, TetMesh, check_gabriel, load_plc, refine_gabriel
+from nonobtuse.mesh3d.gabriel import control_volume_summary
 from nonobtuse.refinement import refine
 from nonobtuse.triangulation import triangulate
 
@@ -34,6 +44,7 @@ CURVES = (
 EXAGGERATION = 20.0  # vertical exaggeration of the demo's picture: 4 km by 42 m is a line at true scale
 # Region attribute (layer number, bottom = 1) -> conductivity (e.g. m/day): shale, sand, silt, gravel.
 CONDUCTIVITY = {1.0: 1e-3, 2.0: 5.0, 3.0: 0.1, 4.0: 20.0}
+PART = Path(__file__).parent / "data" / "joint.off"  # the 3D part: CGAL's joint.off (CC0; data/SOURCES.md)
 
 
 def _curve(mean: float, amplitude: float, wavelength: float, phase: float, samples: int) -> np.ndarray:
@@ -83,6 +94,7 @@ def stage_report(title: str, mesh: Mesh, conductivity: dict[float, float] = COND
 def run(out: Callable[[str], None] = print, plot: str | Path | None = None) -> int:
     """Build the cross-section, triangulate it, refine it, report; with ``plot``, also write the
     before/after picture there (vertical exaggeration ``EXAGGERATION``, labelled; close-ups at true scale).
+    Then the 3D part (:func:`run_part`; its picture at :func:`part_picture_path` of ``plot``).
     Returns the exit code (0)."""
     domain = cross_section()
     out(f"{domain.source}: {LENGTH_M / 1000:g} km long, {CURVES[-1][0]:g} m thick, {len(CURVES) - 2} "
@@ -101,7 +113,54 @@ def run(out: Callable[[str], None] = print, plot: str | Path | None = None) -> i
                                                                check_mesh(result.mesh))],
                     plot, vertical_exaggeration=EXAGGERATION, title=domain.source, unit="m")
         out(f"picture -> {plot}")
+    run_part(out, None if plot is None else part_picture_path(plot))
     return 0
+
+
+def part_picture_path(plot: str | Path) -> Path:
+    """Where ``demo --plot PLOT`` draws the 3D part: beside PLOT, ``_3d`` added to its stem."""
+    plot = Path(plot)
+    return plot.with_name(f"{plot.stem}_3d{plot.suffix}")
+
+
+def part_report(title: str, mesh: TetMesh, report: GabrielReport) -> str:
+    """A compact report of one 3D mesh: size, exact Gabriel check, control-volume coupling signs."""
+    cv = control_volume_summary(mesh)
+    return "\n".join([
+        f"{title}: {len(mesh.points)} points, {len(mesh.tets)} tets, {len(mesh.boundary_faces)} boundary "
+        "faces",
+        f"  non-Gabriel (exact): {len(report.faces)} of {report.n_faces} boundary faces, "
+        f"{len(report.segments)} of {report.n_segments} subsegments",
+        f"  negative control-volume couplings: {cv['negative_couplings']} of {cv['edges']} edges"
+        if len(mesh.tets) else "  control volumes: none (no tets)",
+    ])
+
+
+def run_part(out: Callable[[str], None] = print, plot: str | Path | None = None) -> None:
+    """The 3D part of the demo: load ``PART``, tetrahedralize it (:func:`nonobtuse.plot3d.unrepaired_mesh`),
+    check it, repair it with :func:`refine_gabriel` (defaults), report; with ``plot``, draw both stages there
+    (:func:`nonobtuse.plot3d.plot_gabriel_stages`). Cost: about a second (the picture a few more)."""
+    plc = load_plc(PART)
+    out(f"3D: {PART.name} (CAD part, CC0): {len(plc.points)} points, {len(plc.triangles)} triangles")
+    from nonobtuse.plot3d import unrepaired_mesh
+
+    before, how = unrepaired_mesh(plc)
+    before_report = check_gabriel(before)
+    out(part_report(f"before: {how}", before, before_report))
+    result = refine_gabriel(plc)
+    s = result.stats
+    report = result.report or check_gabriel(result.mesh)  # refine_gabriel's certificate of its mesh
+    out(part_report(f"after: refine_gabriel ({s['strategy']}, {s['status']} in {s['seconds']:.2f} s)",
+                    result.mesh, report))
+    out(f"  Steiner points: {s['steiner_points']} ({s['steiner_on_segments']} on segments, "
+        f"{s['steiner_on_facets']} in facets); certificate: "
+        f"{'every boundary face and subsegment Gabriel (exact)' if report.ok else 'NOT Gabriel'}")
+    if plot is not None:
+        from nonobtuse.plot3d import plot_gabriel_stages
+
+        plot_gabriel_stages([(f"before ({how.split(' (')[0]})", before, before_report),
+                             ("after refine_gabriel", result.mesh, report)], plot, title=PART.name)
+        out(f"picture -> {plot}")
 
 
 def _triangle_pd_summary(domain: Domain) -> str:

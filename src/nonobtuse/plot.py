@@ -131,8 +131,19 @@ def plot_stages(stages: list[tuple[str, Mesh, CheckReport]], path: str | Path, *
             ax = fig.add_subplot(grid[len(stages) + i, j])
             _draw(ax, mesh, report, 1.0, unit, window)
             ax.set_title(f"{label}: close-up {j + 1} (true scale){_angle_in(window, report)}", fontsize=8)
-    handles, labels = _legend_entries(stages)
-    fig.legend(handles, labels, loc="outside lower center", ncols=len(handles), fontsize=8, frameon=False)
+    return save_figure(fig, path, _legend_entries(stages), title)
+
+
+def save_figure(fig: Any, path: str | Path, legend: tuple[list[Any], list[str]], title: str,
+                fontsize: float = 8, ncols: int | None = None) -> Any:
+    """Adds the legend (handles, labels) below the panels, ``ncols`` entries a row (None: all in one row),
+    and the title (a file name, never a folder) to ``fig``, writes it to ``path`` atomically (PNG at 150 dpi;
+    the format follows the suffix), closes it and returns it (its artists are for inspection)."""
+    import matplotlib.pyplot as plt
+
+    handles, labels = legend
+    fig.legend(handles, labels, loc="outside lower center", ncols=min(ncols or len(handles), len(handles)),
+               fontsize=fontsize, frameon=False)
     if title:
         fig.suptitle(title, fontsize=10)
     with atomic_path(Path(path)) as tmp:

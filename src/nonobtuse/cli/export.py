@@ -8,6 +8,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from nonobtuse.cli import guards
 from nonobtuse.cli.exit_codes import EXIT_OK, EXIT_VIOLATIONS
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io.cv_grid import AnyMesh, ControlVolumeGrid
@@ -34,13 +35,15 @@ def read_any_mesh(path: Path) -> AnyMesh:
     return read_mesh(path)
 
 
-def write_output(mesh: AnyMesh, path: str | Path, *, thickness: float = 1.0) -> ControlVolumeGrid | None:
+def write_output(mesh: AnyMesh, path: str | Path, *, thickness: float = 1.0,
+                 quiet: bool = False) -> ControlVolumeGrid | None:
     """Write ``mesh`` to ``path``: a simulator export when the name is one (the LaGriT-style diagnostics go to
-    stderr; returns the grid), else the 2D or 3D mesh writer (returns None)."""
+    stderr unless ``quiet``; returns the grid), else the 2D or 3D mesh writer (returns None)."""
     if is_export_path(path):
         grid, paths = export_mesh(mesh, path, thickness=thickness)
-        print(grid.diagnostics(), file=sys.stderr)
-        print(f"wrote {', '.join(str(p) for p in paths)}", file=sys.stderr)
+        if not quiet:
+            print(grid.diagnostics(), file=sys.stderr)
+            print(f"wrote {', '.join(str(p) for p in paths)}", file=sys.stderr)
         return grid
     if isinstance(mesh, TetMesh):
         from nonobtuse.io.tetmesh import write_tetmesh
@@ -54,12 +57,16 @@ def write_output(mesh: AnyMesh, path: str | Path, *, thickness: float = 1.0) -> 
 
 
 def run(args: argparse.Namespace) -> int:
-    mesh = read_any_mesh(Path(args.input))
     if not is_export_path(args.output):
         raise InvalidInputError(f"{args.output}: not an export format (expected {FORMATS_HELP})")
+    mesh = read_any_mesh(Path(args.input))
+    progress = guards.Progress(quiet=args.quiet, size=len(mesh.points))
+    progress.start(f"control volumes of {len(mesh.points):,} points; writing {args.output}")
     grid, paths = export_mesh(mesh, args.output, thickness=args.thickness)
-    print(f"{args.input} -> {', '.join(str(p) for p in paths)}")
-    print(grid.diagnostics())
+    progress.done(f"{grid.negative_coefficients:,} negative coefficients")
+    if not args.quiet:
+        print(f"{args.input} -> {', '.join(str(p) for p in paths)}")
+        print(grid.diagnostics())
     return EXIT_OK if grid.negative_coefficients == 0 else EXIT_VIOLATIONS
 
 
@@ -71,4 +78,5 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("input", help="2D mesh (.json, .vtu, .msh) or 3D mesh .json (from refine3d)")
     p.add_argument("-o", "--output", required=True, help="output file; the format follows the name")
     p.add_argument("--thickness", type=float, default=1.0, help="2D: extrusion thickness (default 1)")
+    guards.add_quiet_option(p)
     p.set_defaults(func=run)

@@ -94,15 +94,22 @@ def without_timings(mesh: Mesh, keep: bool) -> Mesh:
     return dataclasses.replace(mesh, stats={k: v for k, v in mesh.stats.items() if k != "seconds"})
 
 
-PROGRESS_MIN_POINTS = 100_000  # below this a 2D refine takes about a second: no progress lines
+PROGRESS_MIN_POINTS = 100_000  # a 2D refine, check or export below this: about a second, no progress
+
+
+def add_quiet_option(p: argparse.ArgumentParser) -> None:
+    p.add_argument("-q", "--quiet", action="store_true", help="print nothing on success (no summary, no "
+                   "progress); errors still go to stderr")
 
 
 class Progress:
     """Progress lines on stderr for long work: only when stderr is a terminal, the input has at least
-    ``PROGRESS_MIN_POINTS`` points and ``quiet`` is false (pipes, logs and tests see nothing)."""
+    ``min_size`` points (default ``PROGRESS_MIN_POINTS``; a 3D refinement is long from a few hundred, so it
+    passes 0) and ``quiet`` is false (pipes, logs, tests and ``--json`` readers see nothing). ``start`` and
+    ``done`` frame one step; ``done`` adds the seconds since ``start``."""
 
-    def __init__(self, *, quiet: bool, size: int) -> None:
-        self.active = not quiet and size >= PROGRESS_MIN_POINTS and sys.stderr.isatty()
+    def __init__(self, *, quiet: bool, size: int, min_size: int = PROGRESS_MIN_POINTS) -> None:
+        self.active = not quiet and size >= min_size and sys.stderr.isatty()
         self._t0 = time.perf_counter()
 
     def start(self, what: str) -> None:

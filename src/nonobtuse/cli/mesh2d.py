@@ -47,14 +47,23 @@ def _check(args: argparse.Namespace) -> int:
         domain = load(args)
         mesh = triangulate(domain)
         require_points_in_domain(domain, mesh.triangles)
+    progress = guards.Progress(quiet=args.quiet, size=len(mesh.points))
+    progress.start(f"checking {len(mesh.points):,} points, {len(mesh.triangles):,} triangles exactly")
     report = check(mesh)
+    progress.done(f"{len(report.offenders):,} obtuse boundary/interface angles")
     report.source = str(path)
-    print(json.dumps(report.to_dict(), indent=1) if args.json else report.summary())
+    if args.json:
+        print(json.dumps(report.to_dict(), indent=1))
+    elif not args.quiet:
+        print(report.summary())
     if args.plot:
         from nonobtuse.plot import plot_check  # matplotlib only when asked
 
+        progress.start(f"drawing {args.plot}")
         plot_check(mesh, report, args.plot, vertical_exaggeration=args.exaggeration)
-        print(f"picture -> {args.plot}", file=sys.stderr)
+        progress.done("drawn")
+        if not args.quiet:
+            print(f"picture -> {args.plot}", file=sys.stderr)
     return EXIT_OK if report.ok else EXIT_VIOLATIONS
 
 
@@ -73,15 +82,18 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--json", action="store_true", help="print the full report as JSON")
     add_domain_options(p)
     guards.add_plot_options(p, "the mesh")
+    guards.add_quiet_option(p)
     p.set_defaults(func=_check)
 
-    p = sub.add_parser("demo", help="run on a built-in thin-layer geological cross-section")
+    p = sub.add_parser("demo", help="run on a built-in thin-layer geological cross-section (2D) and a small "
+                       "CAD part (3D)")
     p.add_argument("--plot", metavar="PNG", help="also draw the cross-section before and after refinement "
-                   f"(vertical exaggeration x{demo.EXAGGERATION:g}, labelled; close-ups at true scale)")
+                   f"(vertical exaggeration x{demo.EXAGGERATION:g}, labelled; close-ups at true scale), and "
+                   "the 3D part before and after repair beside it (PNG's name with _3d)")
     p.set_defaults(func=_demo)
 
 
 def _demo(args: argparse.Namespace) -> int:
     if args.plot:
-        guards.refuse_overwriting([], [Path(args.plot)])
+        guards.refuse_overwriting([demo.PART], [Path(args.plot), demo.part_picture_path(args.plot)])
     return demo.run(plot=args.plot)

@@ -10,11 +10,15 @@ import sys
 import time
 from dataclasses import replace
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any, Callable
 
 from nonobtuse.cli import guards
 from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS
 from nonobtuse.io import jsonable
+
+if TYPE_CHECKING:  # the 3D modules are imported when a command runs
+    from nonobtuse.mesh3d import PLC, Gabriel3DResult
+    from nonobtuse.plot3d import Stage
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -23,6 +27,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("input", help=".off .obj .ply .stl .poly .smesh")
     p.add_argument("--backend", choices=("cgal", "tetgen", "ftetwild"), default="cgal")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
+    _add_picture_options(p, "the boundary")
+    guards.add_quiet_option(p)
     p.set_defaults(func=run_check3d)
 
     p = sub.add_parser("refine3d", help="refine the boundary of a 3D input until every boundary facet and "
@@ -42,7 +48,19 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="how encroached subsegments are split (see refine_gabriel)")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     guards.add_timings_option(p)
+    _add_picture_options(p, "the boundary before (the input tetrahedralized by TetGen when installed, else "
+                            "the cgal backend) and after refinement")
+    guards.add_quiet_option(p)
     p.set_defaults(func=run_refine3d)
+
+
+def _add_picture_options(p: argparse.ArgumentParser, what: str) -> None:
+    p.add_argument("--plot", metavar="PNG", help=f"also draw {what}: non-Gabriel faces and encroached "
+                   "subsegments in red, the encroaching vertices, Steiner points in blue, and a close-up of "
+                   "the worst offender with its diametral sphere")
+    p.add_argument("--offenders", metavar="VTU", help="also write the non-Gabriel boundary faces, encroached "
+                   "subsegments and encroaching vertices as a .vtu for ParaView (cell data: row, facet, "
+                   "marker, vertex, depth)")
 
 
 def _finite_or_none(x: Any) -> Any:
@@ -56,38 +74,79 @@ def _finite_or_none(x: Any) -> Any:
     return x
 
 
-def _print(summary: dict[str, Any], as_json: bool) -> None:
-    if as_json:
+def _print(summary: dict[str, Any], args: argparse.Namespace, text: Callable[[], str]) -> None:
+    """``summary`` as JSON with --json, else ``text()``; nothing with --quiet."""
+    if args.json:
         print(json.dumps(_finite_or_none(jsonable(summary)), allow_nan=False))
-    else:
-        for k, v in summary.items():
-            print(f"{k}: {v}")
+    elif not args.quiet:
+        print(text())
+
+
+def _picture_outputs(args: argparse.Namespace) -> list[Path]:
+    return [Path(p) for p in (args.plot, args.offenders) if p]
 
 
 def run_check3d(args: argparse.Namespace) -> int:
+    from nonobtuse.cli.text3d import check3d_text
     from nonobtuse.mesh3d import boundary_certificate, load_plc, tetrahedralize
 
+    guards.refuse_overwriting(_files_read(args.input), _picture_outputs(args))
     plc = load_plc(args.input)
-    summary = {"input": args.input, "backend": args.backend,
-               **boundary_certificate(tetrahedralize(plc, args.backend))}
-    _print(summary, args.json)
+    progress = guards.Progress(quiet=args.quiet, size=len(plc.triangles), min_size=CHECK3D_PROGRESS_FACES)
+    progress.start(f"tetrahedralizing {len(plc.points):,} points, {len(plc.triangles):,} triangles "
+                   f"({args.backend})")
+    mesh = tetrahedralize(plc, args.backend)
+    progress.done(f"{len(mesh.tets):,} tets; checking {len(mesh.boundary_faces):,} boundary faces exactly")
+    summary = {"input": args.input, "backend": args.backend, **boundary_certificate(mesh)}
+    _print(summary, args, lambda: check3d_text(summary))
+    if args.plot or args.offenders:
+        from nonobtuse.mesh3d import check_gabriel
+
+        _pictures(args, [("mesh", mesh, check_gabriel(mesh))])
     gabriel = summary["encroached_facets"] == 0 and summary["encroached_segments"] == 0
     return EXIT_OK if gabriel else EXIT_VIOLATIONS
 
 
+CHECK3D_PROGRESS_FACES = 10_000  # below this check3d takes about a second: no progress lines
+
+
+def _pictures(args: argparse.Namespace, stages: list[Stage]) -> None:
+    """--plot (every stage) and --offenders (the last stage's offenders), with a line on stderr for each."""
+    if args.plot:
+        from nonobtuse.plot3d import plot_gabriel_stages  # matplotlib only when asked
+
+        plot_gabriel_stages(stages, args.plot, title=Path(args.input).name)
+        _say(args, f"picture -> {args.plot}")
+    if args.offenders:
+        from nonobtuse.mesh3d.offenders import write_offenders
+
+        _, mesh, report = stages[-1]
+        cells = write_offenders(mesh, report, args.offenders)
+        _say(args, f"offenders ({cells:,} cells) -> {args.offenders}" if cells else
+             f"no offenders (Gabriel): {args.offenders} not written")
+
+
+def _say(args: argparse.Namespace, line: str) -> None:
+    if not args.quiet:
+        print(line, file=sys.stderr)
+
+
 def run_refine3d(args: argparse.Namespace) -> int:
     from nonobtuse.cli.export import write_output
+    from nonobtuse.cli.text3d import refine3d_text
     from nonobtuse.mesh3d import load_plc, refine_gabriel
 
     t0 = time.perf_counter()
-    guards.refuse_overwriting(_files_read(args.input), [Path(args.output)])
+    guards.refuse_overwriting(_files_read(args.input), [Path(args.output)] + _picture_outputs(args))
     plc = load_plc(args.input)
     limits = {k: v for k, v in (("max_steiner", args.max_steiner), ("min_length", args.min_length),
                                   ("time_limit", args.time_limit)) if v is not None}
-    print(f"refine3d: {args.input}: {len(plc.points)} points, {len(plc.triangles)} triangles; refining "
-          f"({', '.join(f'{k}={v}' for k, v in limits.items()) or 'default limits'})", file=sys.stderr)
+    progress = guards.Progress(quiet=args.quiet, size=len(plc.points), min_size=0)  # long from a few points
+    progress.start(f"refining {args.input}: {len(plc.points):,} points, {len(plc.triangles):,} triangles "
+                   f"({', '.join(f'{k}={v}' for k, v in limits.items()) or 'default limits'})")
     # started=t0: --time-limit and stats["seconds"] cover loading too
-    result = refine_gabriel(plc, split=args.split, progress=True, started=t0, **limits)
+    result = refine_gabriel(plc, split=args.split, progress=progress.active or None, started=t0, **limits)
+    progress.done(f"{result.status}; writing {args.output}")
     # The certificate is refine_gabriel's exact check of result.mesh, the arrays written below unchanged
     # (float64 coordinates, written exactly); it ran within the time limit, and rows it did not reach make the
     # status budget_exhausted. A second, unbounded check here would break --time-limit.
@@ -95,10 +154,24 @@ def run_refine3d(args: argparse.Namespace) -> int:
     written = dict(stats)
     if not args.timings:  # the file is then the same for the same input and options
         written["seconds"] = None
-    write_output(replace(result.mesh, stats=written), args.output)
-    print(f"refine3d: {result.status} after {stats['seconds']:.2f} s; wrote {args.output}", file=sys.stderr)
-    _print({"input": args.input, "output": args.output, **_unchecked_as_unknown(stats)}, args.json)
+    write_output(replace(result.mesh, stats=written), args.output, quiet=args.quiet)
+    shown = _unchecked_as_unknown(stats)
+    _print({"input": args.input, "output": args.output, **shown}, args,
+           lambda: refine3d_text(shown, args.input, args.output))
+    if args.plot or args.offenders:
+        _pictures(args, _refine3d_stages(plc, result))
     return EXIT_OK if result.status == "converged" else EXIT_NOT_CONVERGED
+
+
+def _refine3d_stages(plc: PLC, result: Gabriel3DResult) -> list[Stage]:
+    """(label, mesh, report) before (:func:`nonobtuse.plot3d.unrepaired_mesh`) and after."""
+    from nonobtuse.mesh3d import check_gabriel
+    from nonobtuse.plot3d import unrepaired_mesh
+
+    before, how = unrepaired_mesh(plc)
+    after = result.report or check_gabriel(result.mesh)  # refine_gabriel's certificate of its mesh
+    return [(f"before ({how.split(' (')[0]})", before, check_gabriel(before)),
+            ("after refine3d", result.mesh, after)]
 
 
 def _files_read(path: str) -> list[Path]:

@@ -41,8 +41,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--json", action="store_true", help="print the summary statistics as JSON on stdout")
     p.add_argument("--verbose", action="store_true", help="with --json: also the per-edge statistics and "
                    "the diagnosis (one entry per input edge: large on big inputs)")
-    p.add_argument("-q", "--quiet", action="store_true", help="print nothing on success (no summary, no "
-                   "progress); errors still go to stderr")
+    guards.add_quiet_option(p)
     guards.add_timings_option(p)
     guards.add_plot_options(p, "the constrained Delaunay triangulation before and the mesh after refinement")
     add_domain_options(p)
@@ -62,7 +61,8 @@ def run(args: argparse.Namespace) -> int:
     result = refine(domain, strategy=args.strategy, max_steiner=args.max_steiner, threads=args.threads)
     progress.done(f"{result.status}, {result.stats['steiner_points']} Steiner points; writing {args.output}")
     require_points_in_domain(domain, result.mesh.triangles)
-    write_output(guards.without_timings(result.mesh, args.timings), args.output, thickness=args.thickness)
+    write_output(guards.without_timings(result.mesh, args.timings), args.output, thickness=args.thickness,
+                 quiet=args.quiet)
     s = result.stats
     if args.json:
         json.dump(s if args.verbose else {k: v for k, v in s.items() if k not in PER_EDGE_KEYS}, sys.stdout)
