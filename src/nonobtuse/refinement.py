@@ -235,7 +235,8 @@ def refine(
                  :func:`region_sizes`) or above ``size(x, y)`` at the centroid (``size`` a callable
                  returning a positive float). A point inside a constraint subsegment's closed diametral disk
                  is never inserted: the subsegment is split (midpoint, or a power-of-two shell at an acute
-                 input angle) and the greedy rule repairs the boundary, so the certificate still holds.
+                 input angle), and so is every boundary side a split leaves obtuse, so the certificate still
+                 holds.
                  Near input angles below 60 degrees skinny triangles are left alone, as Triangle does
                  (counted in ``stats["quality"]["small_angle_triangles"]``). ``max_interior`` caps the
                  interior points (None: ``10 n + 100000 + 4 area / smallest fixed area limit``).

@@ -36,7 +36,7 @@ struct Quality2DStats {
   long long interior_points = 0;    // Steiner points strictly inside the domain (circumcenters, off-centers)
   long long interior_budget = 0;    // the budget used (max_interior, its default resolved)
   long long boundary_splits = 0;    // boundary Steiner points the interior refinement caused (encroached
-                                    // subsegments split, plus the greedy repairs after them)
+                                    // subsegments split, and the sides those splits left obtuse)
   long long bad_triangles = 0;      // triangles still bad at the end, outside small-input-angle regions
   long long small_angle_triangles = 0;  // bad triangles left alone near small input angles (see quality2d.cpp)
   long long triangles = 0;          // domain triangles of the result

@@ -29,8 +29,8 @@ struct Refine2DOptions {
   // builds always check).
   bool check_every_split = false;
   // Interior quality and size (off by default): after the boundary refinement, Ruppert/Chew refinement of the
-  // interior that keeps every boundary side acute (quality2d.h); its subsegment splits are repaired by the greedy
-  // rule whatever the strategy.
+  // interior that keeps every boundary side nonobtuse (quality2d.h); the subsegments it splits, and the sides those
+  // splits leave obtuse, get midpoints or concentric shells whatever the strategy.
   Quality2DOptions quality;
 };
 
