@@ -75,6 +75,7 @@ void bind_result_classes(py::module_& m) {
           },
           "(k, 4) int64 rows a, b, steiner_points, lower_bound per input boundary edge (a new array on each access)")
       .def_readonly("diagnosis", &Refine2DResult::diagnosis)
+      .def_readonly("quality", &Refine2DResult::quality, "the interior refinement (Quality2DStats)")
       .def_readonly("seconds", &Refine2DResult::seconds)
       .def("__repr__", [](const Refine2DResult& r) {
         return std::string("<Refine2DResult status=") + to_string(r.status) + " steiner_points=" + std::to_string(r.steiner_points) +
@@ -89,16 +90,19 @@ void bind_refine2d(py::module_& m) {
   m.def(
       "refine",
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,
-         bool convex_hull_boundary, const std::string& strategy, long long max_steiner, int threads) {
+         bool convex_hull_boundary, const std::string& strategy, long long max_steiner, int threads,
+         const Quality2DOptions& quality) {
         Domain2 d = domain_from_arrays(points, segments, holes, regions, convex_hull_boundary);
         Refine2DOptions options{strategy_from(strategy), max_steiner, threads};
+        options.quality = quality;
         py::gil_scoped_release release;
         return refine(d, options);
       },
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("regions"), py::arg("convex_hull_boundary"),
       py::arg("strategy") = "greedy", py::arg("max_steiner") = -1, py::arg("threads") = 2,
+      py::arg_v("quality", Quality2DOptions{}, "Quality2DOptions()"),
       "Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0:\n"
-      "default_steiner_budget(n). Returns a Refine2DResult.");
+      "default_steiner_budget(n); quality: interior refinement (off by default). Returns a Refine2DResult.");
   m.def(
       "conforming_gabriel_steiner_points",
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,

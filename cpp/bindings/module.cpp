@@ -11,6 +11,7 @@ namespace nonobtuse::bindings {
 void bind_mesh2d(py::module_& m);
 void bind_check2d(py::module_& m);
 void bind_validate2d(py::module_& m);
+void bind_quality2d(py::module_& m);
 void bind_refine2d(py::module_& m);
 void bind_gabriel3d(py::module_& m);
 void bind_plc(py::module_& m);
@@ -33,6 +34,7 @@ PYBIND11_MODULE(_core, m) {
   nonobtuse::bindings::bind_mesh2d(m);
   nonobtuse::bindings::bind_check2d(m);
   nonobtuse::bindings::bind_validate2d(m);
+  nonobtuse::bindings::bind_quality2d(m);
   nonobtuse::bindings::bind_refine2d(m);
   nonobtuse::bindings::bind_gabriel3d(m);
   nonobtuse::bindings::bind_plc(m);

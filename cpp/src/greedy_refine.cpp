@@ -129,17 +129,21 @@ void sweep(State& st, Side cur, std::set<Key>& deferred) {
 }  // namespace
 
 void greedy_refine(State& st) {
-  std::set<Key> deferred;
   st.enqueue_all();
+  greedy_refine_queued(st);
+}
+
+void greedy_refine_queued(State& st) {
+  std::set<Key> deferred;
   while (st.has_work() && st.budget_left()) {
     Side side = st.next_side();
     if (!st.is_violated(side)) continue;
     const std::size_t before = st.queued();
-    st.propagation().begin(side.s->info(), side.e->info(), st.placed());
+    st.propagation().begin(side.s->info(), side.e->info(), st.added().size());
     sweep(st, shell_anchor(st, side), deferred);
     for (std::size_t i = before; i < st.queued(); ++i)
       st.propagation().queued(st.queued_at(i).s->info(), st.queued_at(i).e->info());
-    st.propagation().end(st.placed());
+    st.propagation().end(st.added().size());
   }
 }
 

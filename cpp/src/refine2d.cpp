@@ -5,6 +5,7 @@
 
 #include "lower_bound.h"
 #include "nonobtuse/check2d.h"
+#include "quality2d.h"
 #include "refine2d_strategies.h"
 #include "split_point.h"
 
@@ -21,7 +22,9 @@ using refine2d::State;
 double max_steiner_offset(const Mesh2& mesh, const State& st) {
   double worst = 0.0;
   for (std::size_t i = st.n_input(); i < mesh.points.size(); ++i) {
-    const Segment& edge = st.edges()[st.steiner_edge(static_cast<int>(i))].edge;
+    const int on = st.steiner_edge(static_cast<int>(i));
+    if (on < 0) continue;  // an interior point
+    const Segment& edge = st.edges()[on].edge;
     const Point2 &a = st.domain().points[edge[0]], &b = st.domain().points[edge[1]], &p = mesh.points[i];
     const double dx = b.x - a.x, dy = b.y - a.y, vx = p.x - a.x, vy = p.y - a.y, length2 = dx * dx + dy * dy;
     const double along = vx * dx + vy * dy;
@@ -82,6 +85,7 @@ Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options) {
   }
 
   Refine2DResult r;
+  if (options.quality.enabled()) r.quality = refine2d::refine_quality(st, options.quality);
   r.mesh = cdt::to_mesh(st.cdt(), options.threads);
   // The exact certificate of the mesh as returned: the obtuse sides of boundary edges and of interfaces (each side
   // of a constrained segment or region jump checked on its own).
@@ -92,10 +96,14 @@ Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options) {
   r.edges = st.edges();
   r.max_steiner_offset = max_steiner_offset(r.mesh, st);
   r.diagnosis = refine2d::diagnose(st);
-  r.status = r.obtuse_boundary_sides == 0 ? RefineStatus::Converged
-             : st.budget_left()                 ? RefineStatus::Stalled
-                                                : RefineStatus::BudgetExhausted;
-  if (r.status == RefineStatus::Converged && r.steiner_points == r.lower_bound)
+  const bool budgets_left = st.budget_left() && r.quality.interior_points < r.quality.interior_budget;
+  r.status = r.obtuse_boundary_sides == 0 && r.quality.bad_triangles == 0 ? RefineStatus::Converged
+             : r.obtuse_boundary_sides > 0 && st.budget_left()         ? RefineStatus::Stalled
+             : r.obtuse_boundary_sides > 0 || !budgets_left            ? RefineStatus::BudgetExhausted
+                                                                        : RefineStatus::Stalled;
+  if (r.quality.boundary_splits > 0)
+    r.optimal = -1;  // interior quality asked for more boundary points than the boundary problem needs
+  else if (r.status == RefineStatus::Converged && r.steiner_points == r.lower_bound)
     r.optimal = 1;
   else if (r.status == RefineStatus::Converged && options.strategy == RefineStrategy::Greedy && st.convex_polygon() &&
            !st.fallback_used())

@@ -79,6 +79,7 @@ Refine2DDiagnosis diagnose(const State& st) {
     int idx = v->info();
     if (idx < n) continue;
     int k = st.steiner_edge(idx);
+    if (k < 0) continue;  // an interior point
     auto [a, b] = st.edges()[k].edge;
     const Point2 p = cdt::from_cgal(v->point());
     auto d2 = [&](int i) { return std::hypot(pts[i].x - p.x, pts[i].y - p.y); };

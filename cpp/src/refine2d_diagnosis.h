@@ -18,7 +18,8 @@ class Propagation {
   void queued(int s, int e);
   void end(long long placed);
   int causes() const { return causes_; }
-  // Cause of Steiner point k (0-based among Steiner points); -1 for points placed outside a sweep.
+  // Cause of added vertex k (0-based among the vertices added after the input, State::added); -1 for points
+  // placed outside a sweep (interior points among them).
   int steiner_cause(long long k) const {
     return k < static_cast<long long>(cause_of_point_.size()) ? cause_of_point_[k] : -1;
   }

@@ -34,8 +34,12 @@ class State {
   const Domain2& domain() const { return domain_; }
   int n_input() const { return n_input_; }
   long long budget() const { return budget_; }
-  long long placed() const { return placed_; }  // Steiner points inserted so far
+  long long placed() const { return placed_; }  // Steiner points inserted on constraints so far
   bool budget_left() const { return placed_ < budget_; }
+  // Every vertex inserted after the input's, in insertion order (its index is n_input() + its position): the
+  // Steiner points on constraints (split) and the interior points (insert_interior, quality2d.cpp).
+  const std::vector<Vertex_handle>& added() const { return added_; }
+  long long interior_points() const { return static_cast<long long>(added_.size()) - placed_; }
   // One row per input constraint edge, in the order of the input CDT's boundary sides (an interface once).
   const std::vector<BoundaryEdgeStats>& edges() const { return edges_; }
   void set_lower_bound(int edge, int count) { edges_[edge].lower_bound = count; }
@@ -77,7 +81,8 @@ class State {
   std::vector<Side> boundary_sides() const;
   // The index in edges() of the input boundary edge a subsegment lies on (either orientation).
   int edge_of(const Side& side) const;
-  // The index in edges() of the input edge Steiner point `index` (>= n_input) was placed on.
+  // The index in edges() of the input edge Steiner point `index` (>= n_input) was placed on; -1 for an interior
+  // point.
   int steiner_edge(int index) const { return steiner_edge_.at(index - n_input_); }
 
   // The scratch of walks on `lane` (0 or 1; lane 0 is the refinement's).
@@ -98,6 +103,8 @@ class State {
  private:
   // Inserts a Steiner point into a constrained edge; the only mutation of the triangulation (split_point.cpp).
   friend Vertex_handle split(State& st, const Side& side, const Point& p);
+  // Inserts a point strictly inside the domain, off every constraint (quality2d.cpp), the other mutation.
+  friend Vertex_handle insert_interior(State& st, const Point& p, Face_handle located);
 
   // Every side of `sides` (the boundary sides) on the hull, no interface, every vertex on a constraint.
   bool is_convex_polygon(const std::vector<Side>& sides) const;
@@ -120,7 +127,8 @@ class State {
   // Input boundary edge (min, max) -> index in edges_; keyed min << 32 | max (a hash map: a polygon of a million
   // vertices has a million edges).
   std::unordered_map<std::uint64_t, int> edge_index_;
-  std::vector<int> steiner_edge_;    // Steiner point (index - n_input) -> index in edges_
+  std::vector<int> steiner_edge_;    // added vertex (index - n_input) -> index in edges_, -1 for interior points
+  std::vector<Vertex_handle> added_;
   long long splits_ = 0;             // calls to split: the CDT changes only there
   mutable std::vector<Side> sides_;  // boundary_sides() as of split number sides_of_
   mutable long long sides_of_ = -1;

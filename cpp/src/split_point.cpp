@@ -238,7 +238,8 @@ Vertex_handle split(State& st, const Side& side, const Point& p) {
       throw InternalError("refine2d: the refined boundary s-p-e crosses a constraint");
     }
   }
-  v->info() = st.n_input_ + static_cast<int>(st.placed_);
+  v->info() = st.n_input_ + static_cast<int>(st.added_.size());
+  st.added_.push_back(v);
   st.steiner_edge_.push_back(edge);
   ++st.edges_[edge].steiner_points;
   ++st.placed_;

@@ -67,6 +67,8 @@ class Domain:
     segment_markers: (m,) int64 boundary marker per segment (Triangle's segment markers, e.g. a boundary
               condition id), or None. Validation carries them through its repairs (a split segment's pieces
               keep its marker); refinement and the writers carry them on (:mod:`nonobtuse.markers`).
+    region_max_areas: (r,) float64 the largest triangle area of each region (Triangle's regional area
+              constraint, used by ``refine(..., size="regions")``; NaN where a region gives none), or None.
     validated: read-only; True when :mod:`nonobtuse.validate` returned this domain and no field was assigned
               since (see the module docstring). ``dataclasses.replace`` gives an unvalidated copy.
     """
@@ -81,6 +83,7 @@ class Domain:
     repairs: list[str] = field(default_factory=list)
     point_markers: np.ndarray | None = None
     segment_markers: np.ndarray | None = None
+    region_max_areas: np.ndarray | None = None
     _validated: bool = field(default=False, init=False, repr=False, compare=False)
 
     def __setattr__(self, name: str, value: Any) -> None:
@@ -100,6 +103,12 @@ class Domain:
         self.regions = np.ascontiguousarray(reg.reshape(-1, 3) if reg.size else np.zeros((0, 3), np.float64))
         self.point_markers = marker_array(self.point_markers, len(self.points), "point_markers")
         self.segment_markers = marker_array(self.segment_markers, len(self.segments), "segment_markers")
+        if self.region_max_areas is not None:
+            areas = np.asarray(self.region_max_areas, dtype=np.float64).ravel()
+            if areas.shape != (len(self.regions),):
+                raise InvalidInputError(f"region_max_areas must have one value per region "
+                                        f"({len(self.regions)}), got shape {areas.shape}")
+            self.region_max_areas = np.ascontiguousarray(areas)
 
 
 def marker_array(a: Any, n: int, name: str) -> np.ndarray | None:

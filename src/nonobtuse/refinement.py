@@ -5,8 +5,10 @@ interface or dangling segment)."""
 from __future__ import annotations
 
 import gc
+import math
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, overload
+from typing import Any, Union, overload
 
 import numpy as np
 
@@ -15,10 +17,14 @@ from nonobtuse.domain import Domain
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh import Mesh
 from nonobtuse.triangulation import mesh_of_core
-from nonobtuse.validate import ensure_validated
+from nonobtuse.validate import ensure_validated, require_points_in_domain
 
 STRATEGIES = ("greedy", "project-flip", "projection")
 CONVERGED, BUDGET_EXHAUSTED, STALLED = "converged", "budget_exhausted", "stalled"
+MAX_MIN_ANGLE = 40.0  # degrees: off-centers terminate up to about 34; above 40 it would run to the budget
+
+# size=: a callable (x, y) -> the largest area at that point, {region attribute: largest area}, or "regions"
+Size = Union[Callable[[float, float], float], Mapping[float, float], str]
 
 
 @dataclass
@@ -42,9 +48,13 @@ class RefineResult:
             its closest constraint ``neighbour`` at ``vertex``), ``initial_violations`` (violated subsegments
             that started a cascade), ``propagation_depth`` (the most distinct input edges one initial
             violation put Steiner points on) and ``propagation_splits`` (the most Steiner points it caused);
-            propagation is tracked by the greedy strategy only.
+            propagation is tracked by the greedy strategy only. ``interior_points`` (int: Steiner points
+            inside the domain, 0 unless a quality option is given; ``steiner_points`` counts those on
+            constraints), ``quality``: None, or with a quality option the dict of :func:`_quality_stats`.
     status: ``"converged"``, ``"budget_exhausted"`` or ``"stalled"`` (budget left, but a violated side
             admits no double split point passing the exact checks); ``mesh`` is then the partial result.
+            With a quality option, ``"converged"`` also needs every triangle good outside small-input-angle
+            regions (``budget_exhausted`` when a budget stopped it, ``stalled`` otherwise).
     """
 
     mesh: Mesh
@@ -89,19 +99,110 @@ def _diagnosis(g: _core.Refine2DDiagnosis) -> dict[str, Any]:
     }
 
 
+def _quality_stats(q: _core.Quality2DStats, min_angle: float | None) -> dict[str, Any]:
+    """``stats["quality"]``: ``min_angle`` (the bound asked, degrees, or None), ``interior_points``,
+    ``interior_budget``, ``boundary_splits`` (boundary Steiner points the interior refinement caused),
+    ``triangles``, ``bad_triangles`` (left bad outside small-input-angle regions: 0 when converged),
+    ``small_angle_triangles`` (skinny triangles left alone near input angles below 60 degrees),
+    ``min_angle_degrees`` (every triangle) and ``min_angle_outside_small_angles_degrees`` (floats, computed in
+    floating point; 180 when there is no triangle), ``max_area`` (float, the largest triangle's)."""
+    return {
+        "min_angle": min_angle,
+        "interior_points": q.interior_points,
+        "interior_budget": q.interior_budget,
+        "boundary_splits": q.boundary_splits,
+        "triangles": q.triangles,
+        "bad_triangles": q.bad_triangles,
+        "small_angle_triangles": q.small_angle_triangles,
+        "min_angle_degrees": q.min_angle_degrees,
+        "min_angle_outside_small_angles_degrees": q.min_angle_outside_small_angles_degrees,
+        "max_area": q.max_area,
+    }
+
+
+def _positive(value: Any, name: str) -> float:
+    """``value`` as a positive finite float, else InvalidInputError naming ``name``."""
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise InvalidInputError(f"{name} must be a positive number, got {value!r}") from None
+    if not (v > 0 and math.isfinite(v)):
+        raise InvalidInputError(f"{name} must be a positive finite number, got {value!r}")
+    return v
+
+
+def region_sizes(domain: Domain) -> dict[float, float]:
+    """``{attribute: largest area}`` of the domain's regions that give one (``Domain.region_max_areas``: a
+    .poly region's fourth number, a triangle dict's ``regions`` fourth column; Triangle's ``-a`` without a
+    number).
+    Areas <= 0 or NaN mean none, as in Triangle; regions sharing an attribute get the smallest of their areas.
+    Raises InvalidInputError when no region gives an area."""
+    out: dict[float, float] = {}
+    areas = domain.region_max_areas if domain.region_max_areas is not None else np.zeros(0)
+    for (_, _, attribute), area in zip(domain.regions.tolist(), areas.tolist()):
+        if area > 0 and math.isfinite(area):
+            out[attribute] = min(area, out.get(attribute, math.inf))
+    if not out:
+        raise InvalidInputError(f"{domain.source}: size='regions', but no region of the domain gives a "
+                                "maximum area (a .poly region line's fourth number)")
+    return out
+
+
+def quality_options(
+    min_angle: float | None = None,
+    max_area: float | None = None,
+    size: Size | None = None,
+    max_interior: int | None = None,
+) -> _core.Quality2DOptions:
+    """The core's interior-quality options of :func:`refine`'s arguments (see there), checked: min_angle in
+    (0, 40] degrees, max_area positive, size a callable or a mapping of region attributes to positive areas,
+    max_interior an integer in [0, 2^62). Raises InvalidInputError naming the option."""
+    o = _core.Quality2DOptions()
+    if min_angle is not None:
+        v = _positive(min_angle, "min_angle")
+        if v > MAX_MIN_ANGLE:
+            raise InvalidInputError(f"min_angle must be at most {MAX_MIN_ANGLE:g} degrees (Delaunay "
+                                    f"refinement does not terminate much above 34), got {min_angle!r}")
+        o.min_angle_degrees = v
+    if max_area is not None:
+        o.max_area = _positive(max_area, "max_area")
+    if callable(size):
+        o.set_max_area_at(size)
+    elif isinstance(size, Mapping):
+        o.region_max_area = [(float(a), _positive(v, f"size[{a!r}]")) for a, v in size.items()]
+    elif size is not None:
+        raise InvalidInputError(f"size must be a callable (x, y) -> area or a mapping region attribute -> "
+                                f"area, got {type(size).__name__}")
+    if max_interior is not None:
+        n = max_interior
+        if isinstance(n, bool) or int(n) != n or not 0 <= n < 2**62:
+            raise InvalidInputError(f"max_interior must be an integer in [0, 2^62), got {max_interior!r}")
+        o.max_interior = int(max_interior)
+    return o
+
+
 @overload
 def refine(
-    domain: Domain, strategy: str = ..., max_steiner: int | None = ..., threads: int = ...
+    domain: Domain, strategy: str = ..., max_steiner: int | None = ..., threads: int = ..., *,
+    min_angle: float | None = ..., max_area: float | None = ..., size: Size | None = ...,
+    max_interior: int | None = ...,
 ) -> RefineResult: ...
 @overload
 def refine(
-    domain: dict[str, Any], strategy: str = ..., max_steiner: int | None = ..., threads: int = ...
+    domain: dict[str, Any], strategy: str = ..., max_steiner: int | None = ..., threads: int = ..., *,
+    min_angle: float | None = ..., max_area: float | None = ..., size: Size | None = ...,
+    max_interior: int | None = ...,
 ) -> dict[str, Any]: ...
 def refine(
     domain: Domain | dict[str, Any],
     strategy: str = "greedy",
     max_steiner: int | None = None,
     threads: int = 2,
+    *,
+    min_angle: float | None = None,
+    max_area: float | None = None,
+    size: Size | None = None,
+    max_interior: int | None = None,
 ) -> RefineResult | dict[str, Any]:
     """Adds Steiner points on the constraint edges of ``domain`` until every triangle of its constrained
     Delaunay triangulation is nonobtuse opposite each constrained edge it has (boundary, interface or
@@ -125,6 +226,20 @@ def refine(
                  returned with status ``"budget_exhausted"``.
     threads:     1, or 2 and more: the passes over the whole mesh of large inputs (the lower bound, the
                  certificate) run on two threads. The result is the same for any value.
+    min_angle, max_area, size, max_interior: interior quality, off by default (Triangle's ``-q``/``-a``).
+                 After the boundary refinement, Delaunay refinement (Ruppert, Chew; Triangle's off-centers)
+                 inserts interior points into triangles with an angle below ``min_angle`` degrees (at most
+                 40; Ruppert's proof covers 20.7, off-centers terminate in practice up to about 34) or an area
+                 above ``max_area``, above ``size[attribute]`` in a region (``size`` a mapping: region
+                 attribute -> largest area; ``"regions"``: the areas the domain's regions give, see
+                 :func:`region_sizes`) or above ``size(x, y)`` at the centroid (``size`` a callable
+                 returning a positive float). A point inside a constraint subsegment's closed diametral disk
+                 is never inserted: the subsegment is split (midpoint, or a power-of-two shell at an acute
+                 input angle), and so is every boundary side a split leaves obtuse, so the certificate still
+                 holds.
+                 Near input angles below 60 degrees skinny triangles are left alone, as Triangle does
+                 (counted in ``stats["quality"]["small_angle_triangles"]``). ``max_interior`` caps the
+                 interior points (None: ``10 n + 100000 + 4 area / smallest fixed area limit``).
 
     Guarantees: Steiner points lie on constraint subsegments (exactly on the line when a double point there
     exists, else a few ulps off it); the returned mesh is checked exactly on every side of every constraint
@@ -137,13 +252,17 @@ def refine(
     (Theorem 3), None otherwise.
     Deterministic. Cost: O(n log n) to triangulate plus, per Steiner point, the triangles meeting the
     diametral disk being refined.
-    Raises InvalidInputError for an unknown strategy, a negative budget, a thread count below 1 or a domain
-    that fails validation (it says what and where).
+    With a quality option the cost adds, per interior point, its Delaunay cavity and the walk to it.
+    Raises InvalidInputError for an unknown strategy, a negative budget, a thread count below 1, a quality
+    option out of range (or a size function returning a value that is not a positive finite number), a
+    domain that fails validation, or input points outside the domain (in the exterior or a hole; it says what
+    and where).
     """
     if isinstance(domain, dict):
         from nonobtuse.triangle_dict import mesh_to_dict, validated_domain
 
-        result = refine(validated_domain(domain), strategy, max_steiner, threads)
+        result = refine(validated_domain(domain), strategy, max_steiner, threads, min_angle=min_angle,
+                        max_area=max_area, size=size, max_interior=max_interior)
         return {**mesh_to_dict(result.mesh, domain), "stats": result.stats}
     if strategy not in STRATEGIES:
         raise InvalidInputError(f"unknown strategy {strategy!r}; choose one of {', '.join(STRATEGIES)}")
@@ -151,7 +270,12 @@ def refine(
         raise InvalidInputError(f"max_steiner must be an integer in [0, 2^62), got {max_steiner!r}")
     if isinstance(threads, bool) or int(threads) != threads or threads < 1:
         raise InvalidInputError(f"threads must be a positive integer, got {threads!r}")
+    if isinstance(size, str) and size != "regions":
+        raise InvalidInputError(f"size must be a callable, a mapping or 'regions', got {size!r}")
+    quality = quality_options(min_angle, max_area, None if isinstance(size, str) else size, max_interior)
     domain = ensure_validated(domain)
+    if size == "regions":
+        quality.region_max_area = list(region_sizes(domain).items())
     r = _core.refine(
         domain.points,
         domain.segments,
@@ -161,7 +285,9 @@ def refine(
         strategy,
         -1 if max_steiner is None else int(max_steiner),
         min(int(threads), 2),
+        quality,
     )
+    require_points_in_domain(domain, r.mesh.triangles)
     stats: dict[str, Any] = {
         "status": r.status,
         "strategy": strategy,
@@ -174,6 +300,8 @@ def refine(
         "max_steiner_offset": r.max_steiner_offset,
         "edges": _edge_stats(r.edges),
         "diagnosis": _diagnosis(r.diagnosis),
+        "interior_points": r.quality.interior_points,
+        "quality": _quality_stats(r.quality, min_angle) if quality.enabled() else None,
     }
     regions = r.mesh.triangle_region if len(domain.regions) else None
     mesh = mesh_of_core(r.mesh, domain, regions, stats)

@@ -76,6 +76,8 @@ def domain_from_dict(d: dict[str, Any]) -> Domain:
         source="<triangle dict>",
         point_markers=d.get("vertex_markers"),
         segment_markers=d.get("segment_markers"),
+        region_max_areas=regions[:, 3] if regions is not None and regions.size and regions.shape[1] == 4
+        else None,
     )
 
 

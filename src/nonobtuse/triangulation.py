@@ -8,7 +8,7 @@ from nonobtuse import _core
 from nonobtuse.domain import Domain
 from nonobtuse.markers import mesh_markers
 from nonobtuse.mesh import Mesh
-from nonobtuse.validate import ensure_validated
+from nonobtuse.validate import ensure_validated, require_points_in_domain
 
 
 @overload
@@ -30,7 +30,8 @@ def triangulate(domain: Domain | dict[str, Any]) -> Mesh | dict[str, Any]:
     Given a ``triangle`` package input dict (:mod:`nonobtuse.triangle_dict`), returns a dict in
     ``triangle.triangulate``'s output convention (what ``triangle.triangulate(d, "p")`` gives, ``"pc"`` for a
     point set).
-    Raises :class:`InvalidInputError` for a domain that cannot be triangulated (it says what and where).
+    Raises :class:`InvalidInputError` for a domain that cannot be triangulated, or with input points outside
+    it (in the exterior or a hole: no triangle would use them; it says what and where).
     Cost: O(n log n) expected for n points.
     """
     if isinstance(domain, dict):
@@ -39,6 +40,7 @@ def triangulate(domain: Domain | dict[str, Any]) -> Mesh | dict[str, Any]:
         return mesh_to_dict(triangulate(validated_domain(domain)), domain)
     valid = ensure_validated(domain)
     out = _core.triangulate(valid.points, valid.segments, valid.holes, valid.regions, valid.convex_hull)
+    require_points_in_domain(valid, out.triangles)
     stats = {"source": valid.source, "repairs": list(valid.repairs)}
     return mesh_of_core(out, valid, out.triangle_region, stats)
 

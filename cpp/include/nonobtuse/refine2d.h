@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "nonobtuse/quality2d.h"
 #include "nonobtuse/refine2d_diagnosis.h"
 #include "nonobtuse/types.h"
 
@@ -27,6 +28,10 @@ struct Refine2DOptions {
   // maintained domain marks equal a recomputation (InternalError otherwise): O(n) per split, for tests (debug
   // builds always check).
   bool check_every_split = false;
+  // Interior quality and size (off by default): after the boundary refinement, Ruppert/Chew refinement of the
+  // interior that keeps every boundary side nonobtuse (quality2d.h); the subsegments it splits, and the sides those
+  // splits leave obtuse, get midpoints or concentric shells whatever the strategy.
+  Quality2DOptions quality;
 };
 
 // Per boundary edge of the input: a constrained edge of the input's CDT with the domain on one side (a boundary
@@ -52,6 +57,11 @@ struct Refine2DResult {
   double max_steiner_offset = 0.0;
   std::vector<BoundaryEdgeStats> edges;
   Refine2DDiagnosis diagnosis;  // where the Steiner points went (junctions, input angles, propagation)
+  // The interior refinement (all zero unless options.quality is enabled). steiner_points counts the points on
+  // constraints only; quality.interior_points the others. With quality enabled, status is Converged only when the
+  // certificate holds and no bad triangle is left outside small-input-angle regions (else BudgetExhausted when a
+  // budget is spent, Stalled otherwise).
+  Quality2DStats quality;
   double seconds = 0.0;
 };
 

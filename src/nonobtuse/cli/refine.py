@@ -11,9 +11,9 @@ from nonobtuse.cli import guards
 from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK
 from nonobtuse.cli.mesh2d import add_domain_options, load
 from nonobtuse.domain import Domain
+from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh import Mesh
-from nonobtuse.refinement import STRATEGIES, default_steiner_budget
-from nonobtuse.validate import require_points_in_domain
+from nonobtuse.refinement import MAX_MIN_ANGLE, STRATEGIES, default_steiner_budget
 
 PER_EDGE_KEYS = ("edges", "diagnosis")  # in --json only with --verbose: one entry per input edge
 
@@ -38,6 +38,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help=f"Steiner budget (default: {b1 - b0} n + {b0} for n input points)")
     p.add_argument("--threads", type=int, default=2,
                    help="threads for the whole-mesh passes of large inputs (default 2; same output)")
+    add_quality_options(p)
     p.add_argument("--json", action="store_true", help="print the summary statistics as JSON on stdout")
     p.add_argument("--verbose", action="store_true", help="with --json: also the per-edge statistics and "
                    "the diagnosis (one entry per input edge: large on big inputs)")
@@ -46,6 +47,42 @@ def register(sub: argparse._SubParsersAction) -> None:
     guards.add_plot_options(p, "the constrained Delaunay triangulation before and the mesh after refinement")
     add_domain_options(p)
     p.set_defaults(func=run)
+
+
+def region_area(text: str) -> tuple[float, float]:
+    """An argparse type: ``ATTRIBUTE=AREA`` (a region attribute and its largest triangle area)."""
+    attribute, sep, area = text.partition("=")
+    try:
+        pair = float(attribute), guards.positive(area)
+    except (ValueError, argparse.ArgumentTypeError):
+        pair = None
+    if not sep or pair is None or pair[0] != pair[0]:
+        raise argparse.ArgumentTypeError(f"expected ATTRIBUTE=AREA with a positive AREA, found {text!r}")
+    return pair
+
+
+def add_quality_options(p: argparse.ArgumentParser) -> None:
+    """Interior quality and size (Triangle's -q and -a; off by default: the paper's minimal mode)."""
+    g = p.add_argument_group("interior quality (off by default; the boundary stays certified)")
+    g.add_argument("--min-angle", type=guards.positive, default=None, metavar="DEG",
+                   help=f"refine triangles with an angle below DEG degrees (at most {MAX_MIN_ANGLE:g}; "
+                   "Triangle's -q; skinny triangles at input angles below 60 degrees are left alone)")
+    g.add_argument("--max-area", type=guards.positive, default=None, metavar="A",
+                   help="refine triangles larger than A (Triangle's -a A)")
+    g.add_argument("--region-area", type=region_area, action="append", default=None, metavar="ATTR=A",
+                   help="refine triangles of the region with attribute ATTR larger than A (repeatable)")
+    g.add_argument("--region-areas", action="store_true",
+                   help="refine triangles larger than their region's maximum area in the .poly region list "
+                   "(Triangle's -a without a number)")
+    g.add_argument("--max-interior", type=guards.count, default=None, metavar="N",
+                   help="interior point budget (default 10 n + 100000 + 4 area / smallest area limit)")
+
+
+def _size(args: argparse.Namespace) -> dict[float, float] | str | None:
+    """refine's ``size``: the --region-area pairs, or "regions" for --region-areas (both: refused)."""
+    if args.region_areas and args.region_area:
+        raise InvalidInputError("--region-areas and --region-area exclude each other")
+    return "regions" if args.region_areas else dict(args.region_area) if args.region_area else None
 
 
 def run(args: argparse.Namespace) -> int:
@@ -58,9 +95,10 @@ def run(args: argparse.Namespace) -> int:
     guards.refuse_overwriting(guards.files_read(args.input, domain), mesh_output_paths(args.output) + plots)
     progress = guards.Progress(quiet=args.quiet, size=len(domain.points))
     progress.start(f"refining {len(domain.points)} points, {len(domain.segments)} segments ({args.strategy})")
-    result = refine(domain, strategy=args.strategy, max_steiner=args.max_steiner, threads=args.threads)
+    result = refine(domain, strategy=args.strategy, max_steiner=args.max_steiner, threads=args.threads,
+                    min_angle=args.min_angle, max_area=args.max_area,
+                    size=_size(args), max_interior=args.max_interior)
     progress.done(f"{result.status}, {result.stats['steiner_points']} Steiner points; writing {args.output}")
-    require_points_in_domain(domain, result.mesh.triangles)
     write_output(guards.without_timings(result.mesh, args.timings), args.output, thickness=args.thickness,
                  quiet=args.quiet)
     s = result.stats
@@ -72,6 +110,12 @@ def run(args: argparse.Namespace) -> int:
             f"{args.input}: {s['status']}, {s['steiner_points']} Steiner points ({args.strategy}), "
             f"lower bound {s['lower_bound']}, optimal {s['optimal']}, {s['seconds']:.3f} s -> {args.output}"
         )
+        if s["quality"] is not None:
+            q = s["quality"]
+            print(f"  interior: {q['interior_points']} points ({q['boundary_splits']} of the boundary points "
+                  f"for them), {q['triangles']} triangles, smallest angle "
+                  f"{q['min_angle_outside_small_angles_degrees']:.2f} deg outside small input angles "
+                  f"({q['small_angle_triangles']} triangles left there, {q['bad_triangles']} bad elsewhere)")
     if args.plot:
         _plot(domain, result.mesh, args)
     return EXIT_OK if result.converged else EXIT_NOT_CONVERGED

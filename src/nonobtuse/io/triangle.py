@@ -13,8 +13,9 @@ Reading follows Triangle's documentation (https://www.cs.cmu.edu/~quake/triangle
 ``#`` starts a comment anywhere on a line; blank lines are skipped. Ids are 0- or 1-based, decided by the
 first vertex's id; vertices must be numbered consecutively from it, and segment endpoints use the same base.
 Vertex and segment boundary markers are kept (``Domain.point_markers`` / ``segment_markers``, None when the
-file has no marker column); vertex attributes and maximum areas are read (and checked to be numbers) but not
-kept. Every error names ``file:line``.
+file has no marker column); regional maximum areas are kept (``Domain.region_max_areas``, NaN where a
+region gives none); vertex attributes are read (and checked to be numbers) but not kept. Every error names
+``file:line``.
 
 Blocks of plain numeric lines (the vertices, segments and triangles) are parsed in one numpy pass
 (:meth:`nonobtuse.io._files.Lines.numbers`); anything unusual in a block (comments, blank lines, extra
@@ -69,7 +70,7 @@ def read_poly(path: Path) -> Domain:
     holes, hole_lines = _read_rows(lines, "hole", 3, required=True)
     regions, region_lines = _read_rows(
         lines, "regional attribute", 4, required=False, optional="the maximum area"
-    )
+    )  # rows x, y, attribute, maximum area (NaN when absent)
     lines.expect_end()
     origin = SourceMap(
         file=str(path), first_id=first_id, points_file=points_file, points=point_lines,
@@ -77,7 +78,7 @@ def read_poly(path: Path) -> Domain:
     )  # fmt: skip
     return Domain(
         points, segments, holes[:, :2], regions[:, :3], source=str(path), origin=origin,
-        point_markers=point_markers, segment_markers=segment_markers,
+        point_markers=point_markers, segment_markers=segment_markers, region_max_areas=regions[:, 3],
     )  # fmt: skip
 
 
@@ -195,20 +196,22 @@ def _read_rows(
     lines: Lines, what: str, width: int, *, required: bool, optional: str | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
     """A count line and ``<id> <numbers...>`` lines of ``width`` tokens (plus the ``optional`` number when
-    given). Returns (rows (k, width - 1) float64, line per row). A section not ``required`` may be absent."""
+    given). Returns (rows (k, width - 1) float64, plus a last column holding the optional number or NaN when
+    ``optional`` is given; line per row). A section not ``required`` may be absent."""
+    cols = width - 1 + bool(optional)
     if not required and lines.at_end():
-        return np.zeros((0, width - 1)), np.zeros(0, dtype=np.int64)
+        return np.zeros((0, cols)), np.zeros(0, dtype=np.int64)
     head = lines.next(f"the {what} count line")
     k = head.count(0, f"the {what} count")
-    rows = np.empty((lines.room_for(k), width - 1), dtype=np.float64)
+    rows = np.full((lines.room_for(k), cols), np.nan, dtype=np.float64)
     row_lines = np.empty(lines.room_for(k), dtype=np.int64)
     names = ["x", "y", "attribute"]
     for i in range(k):
         line = lines.next(f"{what} {i + 1} of {k}").need(width, f"id, {', '.join(names[: width - 1])}")
         line.int(0, f"the {what} id")
-        rows[i] = [line.float(j, names[j - 1]) for j in range(1, width)]
+        rows[i, : width - 1] = [line.float(j, names[j - 1]) for j in range(1, width)]
         if optional and len(line.tokens) > width:
-            line.float(width, optional)
+            rows[i, width - 1] = line.float(width, optional)
         row_lines[i] = line.number
     return rows, row_lines
 

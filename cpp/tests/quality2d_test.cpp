@@ -1,0 +1,131 @@
+// Interior quality refinement (quality2d.cpp): the angle and area bounds reached, the boundary certificate kept,
+// small input angles left alone with a status, budgets respected. Angles and areas are recomputed here from the
+// returned mesh.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "nonobtuse/check2d.h"
+#include "nonobtuse/refine2d.h"
+
+namespace nonobtuse {
+namespace {
+
+double smallest_angle(const Mesh2& m, const Triangle& t) {
+  double best = 180.0;
+  for (int i = 0; i < 3; ++i) {
+    const Point2 &v = m.points[t[i]], &a = m.points[t[(i + 1) % 3]], &b = m.points[t[(i + 2) % 3]];
+    const double ux = a.x - v.x, uy = a.y - v.y, wx = b.x - v.x, wy = b.y - v.y;
+    best = std::min(best, std::atan2(std::abs(ux * wy - uy * wx), ux * wx + uy * wy) * 180.0 / M_PI);
+  }
+  return best;
+}
+
+double area(const Mesh2& m, const Triangle& t) {
+  const Point2 &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
+  return 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+}
+
+Refine2DResult run(const Domain2& d, const Quality2DOptions& q, long long budget = -1) {
+  Refine2DOptions o;
+  o.quality = q;
+  o.max_steiner = budget;
+  o.check_every_split = true;
+  Refine2DResult r = refine(d, o);
+  EXPECT_EQ(r.obtuse_boundary_sides, count_obtuse_boundary_sides(r.mesh));
+  return r;
+}
+
+// An L-shaped hexagon (angles 90 and 270 only) with an interior interface from the reflex corner.
+Domain2 l_shape() {
+  Domain2 d;
+  d.points = {{0, 0}, {10, 0}, {10, 4}, {4, 4}, {4, 10}, {0, 10}};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 0}, {3, 0}};
+  return d;
+}
+
+TEST(Quality2d, MinAngleReachedAndBoundaryCertified) {
+  Quality2DOptions q;
+  q.min_angle_degrees = 30.0;
+  Refine2DResult r = run(l_shape(), q);
+  ASSERT_EQ(r.status, RefineStatus::Converged);
+  EXPECT_EQ(r.obtuse_boundary_sides, 0);
+  // Without the bound the L has triangles of 26.57 degrees (atan(1/2)): points were needed.
+  EXPECT_GT(r.quality.boundary_splits + r.quality.interior_points, 0);
+  EXPECT_EQ(r.quality.small_angle_triangles, 0);  // the interface makes 45 degrees with the edges at (4, 4)
+  double worst = 180.0;
+  for (const Triangle& t : r.mesh.triangles) worst = std::min(worst, smallest_angle(r.mesh, t));
+  EXPECT_GE(worst, 30.0 - 1e-9);
+  EXPECT_NEAR(worst, r.quality.min_angle_degrees, 1e-9);
+  EXPECT_EQ(r.quality.triangles, static_cast<long long>(r.mesh.triangles.size()));
+  EXPECT_EQ(r.mesh.points.size(), l_shape().points.size() + r.steiner_points + r.quality.interior_points);
+}
+
+TEST(Quality2d, MaxAreaAndRegionAreas) {
+  Domain2 d = l_shape();
+  d.regions = {{{1, 6}, 1.0}, {{6, 1}, 2.0}};  // the interface (4,4)-(0,0) splits the L into two regions
+  Quality2DOptions q;
+  q.max_area = 2.0;
+  q.region_max_area = {{2.0, 0.25}};
+  Refine2DResult r = run(d, q);
+  ASSERT_EQ(r.status, RefineStatus::Converged);
+  int small_region = 0;
+  for (std::size_t i = 0; i < r.mesh.triangles.size(); ++i) {
+    const double a = area(r.mesh, r.mesh.triangles[i]);
+    EXPECT_LE(a, r.mesh.triangle_region[i] == 2.0 ? 0.25 : 2.0);
+    small_region += r.mesh.triangle_region[i] == 2.0;
+  }
+  EXPECT_GE(small_region, 2 * 32 / 0.25 / 2);  // region 2 has area 32: at least 128 triangles of area <= 0.25
+}
+
+TEST(Quality2d, SizeFunctionIsObeyedAtCentroids) {
+  Quality2DOptions q;
+  q.max_area_at = [](double x, double) { return 0.05 + 0.1 * x; };
+  Refine2DResult r = run(l_shape(), q);
+  ASSERT_EQ(r.status, RefineStatus::Converged);
+  for (const Triangle& t : r.mesh.triangles) {
+    const Point2 &a = r.mesh.points[t[0]], &b = r.mesh.points[t[1]], &c = r.mesh.points[t[2]];
+    EXPECT_LE(area(r.mesh, t), 0.05 + 0.1 * (a.x + b.x + c.x) / 3 + 1e-12);
+  }
+}
+
+TEST(Quality2d, SmallInputAngleTerminatesAndIsReported) {
+  // A 5-degree wedge closed by an arc of chords: triangles at the apex cannot all reach 25 degrees.
+  Domain2 d;
+  d.points.push_back({0, 0});
+  const double a = 5.0 * M_PI / 180.0;
+  for (int i = 0; i <= 4; ++i) d.points.push_back({10 * std::cos(a * i / 4), 10 * std::sin(a * i / 4)});
+  for (int i = 0; i < 6; ++i) d.segments.push_back({i, (i + 1) % 6});
+  Quality2DOptions q;
+  q.min_angle_degrees = 25.0;
+  Refine2DResult r = run(d, q, 2000);
+  EXPECT_EQ(r.obtuse_boundary_sides, 0);
+  EXPECT_EQ(r.status, RefineStatus::Converged);
+  EXPECT_GT(r.quality.small_angle_triangles, 0);
+  EXPECT_GE(r.quality.min_angle_outside_small_angles_degrees, 25.0 - 1e-9);
+  EXPECT_LT(r.quality.min_angle_degrees, 25.0);
+}
+
+TEST(Quality2d, InteriorBudgetIsAStatus) {
+  Quality2DOptions q;
+  q.min_angle_degrees = 30.0;
+  q.max_area = 1e-3;
+  q.max_interior = 10;
+  Refine2DResult r = run(l_shape(), q);
+  EXPECT_EQ(r.status, RefineStatus::BudgetExhausted);
+  EXPECT_EQ(r.quality.interior_points, 10);
+  EXPECT_GT(r.quality.bad_triangles, 0);
+  EXPECT_EQ(r.obtuse_boundary_sides, 0);  // interior points never break the boundary
+}
+
+TEST(Quality2d, OffByDefault) {
+  Refine2DResult r = run(l_shape(), Quality2DOptions{});
+  EXPECT_EQ(r.quality.interior_points, 0);
+  EXPECT_EQ(r.quality.triangles, 0);
+  EXPECT_EQ(default_interior_budget(10, 100.0, 0.5), 100 + 100000 + 800);
+}
+
+}  // namespace
+}  // namespace nonobtuse
