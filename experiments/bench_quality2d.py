@@ -9,10 +9,10 @@ area bound); its boundary Steiner points are its output vertices on output segme
 Our smallest angle is the one outside small-input-angle regions (triangles there are left alone, as Triangle
 does), and both counts are given.
 
-    PYTHONPATH=src .venv/bin/python -m experiments.bench_quality2d [--out CSV]
+    PYTHONPATH=src .venv/bin/python -m experiments bench_quality2d [--out DIR]
 
-Writes experiments/results/bench_quality2d.csv (or --out) and prints a table with the vertex ratio ours /
-Triangle's.
+Writes bench_quality2d.csv in --out DIR (default experiments/results) and prints a table with the vertex ratio
+ours / Triangle's.
 """
 
 from __future__ import annotations
@@ -29,13 +29,12 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path[:0] = [str(ROOT / "tests")]
 
 import nonobtuse  # noqa: E402
+from experiments.outputs import add_out_option, out_dir  # noqa: E402
 from nonobtuse import Domain, InvalidInputError  # noqa: E402
 from nonobtuse.demo import cross_section  # noqa: E402
 from nonobtuse.io import load_domain  # noqa: E402
 from nonobtuse.validate import ensure_validated  # noqa: E402
 from refine_helpers import SHARED  # noqa: E402
-
-RESULTS = ROOT / "experiments" / "results"
 
 
 def min_input_angle(d: Domain) -> float:
@@ -113,7 +112,7 @@ def inputs() -> list[tuple[str, Domain]]:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", type=Path, default=RESULTS / "bench_quality2d.csv")
+    add_out_option(ap, "bench_quality2d.csv")
     args = ap.parse_args()
     rows = []
     for name, d in inputs():
@@ -129,15 +128,15 @@ def main() -> None:
                   f"{r['tri_vertices']:6d} v ({r['tri_boundary_steiner']:5d} bnd, "
                   f"min {r['tri_min_angle']:6.2f}, "
                   f"{r['tri_seconds']:.3f} s)  ratio {r['vertex_ratio']:.3f}", flush=True)
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    with open(args.out, "w", newline="") as fh:
+    path = out_dir(args) / "bench_quality2d.csv"
+    with open(path, "w", newline="") as fh:
         w = csv.DictWriter(fh, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
     ratios = np.array([r["vertex_ratio"] for r in rows])
     fewer = sum(r["boundary_steiner"] < r["tri_boundary_steiner"] for r in rows)
     print(f"vertex ratio ours / Triangle: median {np.median(ratios):.3f}, max {ratios.max():.3f}; boundary "
-          f"Steiner points fewer on {fewer} of {len(rows)} -> {args.out}")
+          f"Steiner points fewer on {fewer} of {len(rows)} -> {path}")
 
 
 if __name__ == "__main__":
