@@ -14,6 +14,7 @@ from typing import Any
 
 from nonobtuse.cli import guards
 from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS
+from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import jsonable
 
 
@@ -40,9 +41,26 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "the writing (near-linear in the output) come on top")
     p.add_argument("--split", choices=("shells", "midpoint", "greedy", "protected"), default="shells",
                    help="how encroached subsegments are split (see refine_gabriel)")
+    p.add_argument("--max-volume", type=guards.positive, default=None,
+                   help="largest tet volume (TetGen's -a): interior points are added, never in a boundary "
+                        "diametral sphere (see refine_quality3d)")
+    p.add_argument("--region-max-volume", type=_region_volume, action="append", default=None,
+                   metavar="ATTR=V", help="largest tet volume in the region with attribute ATTR (repeatable)")
+    p.add_argument("--radius-edge", type=guards.positive, default=None,
+                   help="largest circumradius / shortest edge of a tet, > 1 (TetGen's -q, e.g. 2.0)")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     guards.add_timings_option(p)
     p.set_defaults(func=run_refine3d)
+
+
+def _region_volume(text: str) -> tuple[float, float]:
+    """An argparse type: ATTR=V, a region attribute and a volume bound > 0."""
+    attr, sep, volume = text.partition("=")
+    try:
+        return float(attr), guards.positive(volume)
+    except (ValueError, argparse.ArgumentTypeError):
+        raise argparse.ArgumentTypeError(f"expected ATTR=V (a region attribute and a volume > 0), found "
+                                         f"{text!r}") from None
 
 
 def _finite_or_none(x: Any) -> Any:
@@ -81,20 +99,29 @@ def run_refine3d(args: argparse.Namespace) -> int:
 
     t0 = time.perf_counter()
     guards.refuse_overwriting(_files_read(args.input), [Path(args.output)])
+    if args.region_max_volume and args.max_volume is not None:
+        raise InvalidInputError("give --max-volume or --region-max-volume, not both")
     plc = load_plc(args.input)
     limits = {k: v for k, v in (("max_steiner", args.max_steiner), ("min_length", args.min_length),
                                   ("time_limit", args.time_limit)) if v is not None}
     print(f"refine3d: {args.input}: {len(plc.points)} points, {len(plc.triangles)} triangles; refining "
           f"({', '.join(f'{k}={v}' for k, v in limits.items()) or 'default limits'})", file=sys.stderr)
     # started=t0: --time-limit and stats["seconds"] cover loading too
-    result = refine_gabriel(plc, split=args.split, progress=True, started=t0, **limits)
-    # The certificate is refine_gabriel's exact check of result.mesh, the arrays written below unchanged
+    if args.max_volume is not None or args.radius_edge is not None or args.region_max_volume:
+        from nonobtuse.mesh3d.quality3d import refine_quality3d
+
+        volume = dict(args.region_max_volume) if args.region_max_volume else args.max_volume
+        result: Any = refine_quality3d(plc, max_volume=volume, radius_edge=args.radius_edge, split=args.split,
+                                       progress=True, started=t0, **limits)
+    else:
+        result = refine_gabriel(plc, split=args.split, progress=True, started=t0, **limits)
+    # The certificate is refine_gabriel's (refine_quality3d's) exact check of result.mesh, the arrays written below unchanged
     # (float64 coordinates, written exactly); it ran within the time limit, and rows it did not reach make the
     # status budget_exhausted. A second, unbounded check here would break --time-limit.
     stats = result.stats
     written = dict(stats)
     if not args.timings:  # the file is then the same for the same input and options
-        written["seconds"] = None
+        written.update({k: None for k in ("seconds", "quality_seconds") if k in written})
     write_output(replace(result.mesh, stats=written), args.output)
     print(f"refine3d: {result.status} after {stats['seconds']:.2f} s; wrote {args.output}", file=sys.stderr)
     _print({"input": args.input, "output": args.output, **_unchecked_as_unknown(stats)}, args.json)
