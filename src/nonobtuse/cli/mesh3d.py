@@ -111,8 +111,8 @@ def run_refine3d(args: argparse.Namespace) -> int:
         from nonobtuse.mesh3d.quality3d import refine_quality3d
 
         volume = dict(args.region_max_volume) if args.region_max_volume else args.max_volume
-        result: Any = refine_quality3d(plc, max_volume=volume, radius_edge=args.radius_edge, split=args.split,
-                                       progress=True, started=t0, **limits)
+        result: Any = refine_quality3d(plc, max_volume=volume, radius_edge=args.radius_edge,
+                                       split=args.split, progress=True, started=t0, **limits)
     else:
         result = refine_gabriel(plc, split=args.split, progress=True, started=t0, **limits)
     # The certificate is refine_gabriel's (refine_quality3d's) exact check of result.mesh, the arrays written below unchanged

@@ -1,14 +1,12 @@
-"""Interior quality and size for 3D meshes with a Gabriel boundary: TetGen's ``-q`` (radius-edge ratio) and ``-a``
-(maximum volume) without touching the boundary certificate.
+"""Interior quality and size for 3D meshes with a Gabriel boundary: TetGen's ``-q`` (radius-edge ratio) and
+``-a`` (maximum volume), the boundary certificate kept.
 
-:func:`refine_quality3d` first repairs the boundary (:func:`refine_gabriel`: every subfacet and subsegment gets an
-empty diametral sphere), then adds interior points only, each outside every subfacet's and subsegment's closed
-diametral sphere (exact predicate), so no boundary simplex becomes encroached or cospherical with a new point, and
-the Delaunay tetrahedralization of all points still conforms to the PLC. The interior points come from TetGen
-(``-pq R -a V -Y`` on the repaired boundary; the points it puts inside a diametral sphere are dropped) and then
-from circumcenters of the tets that still break a bound, inserted in rounds over CGAL's exact Delaunay
-tetrahedralization. A bad tet whose circumcenter falls in a closed diametral sphere is left as it is (splitting the
-boundary there is the boundary repair's business): the status says so and the stats count such tets.
+:func:`refine_quality3d` lets TetGen split the facets for the bounds, repairs that boundary (:func:`refine_gabriel`:
+every subfacet and subsegment gets an empty diametral sphere), takes TetGen's interior points on it (``-Y``) but
+those in a closed diametral sphere, then inserts circumcenters of the tets over a bound in rounds. A
+circumcenter in a closed diametral sphere is not kept: the next boundary repair, which sees it as an encroaching
+point, splits the subfacet or subsegment instead (Ruppert's rule). The returned mesh is refine_gabriel's Delaunay
+tetrahedralization, certified by the exact check.
 """
 
 from __future__ import annotations
@@ -16,8 +14,9 @@ from __future__ import annotations
 import math
 import sys
 import time
+from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any, Callable, Literal, Mapping
+from typing import Any, Callable, Literal, cast
 
 import numpy as np
 from scipy.spatial import cKDTree
@@ -25,7 +24,7 @@ from scipy.spatial import cKDTree
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d.gabriel import GabrielReport, check_gabriel, control_volume_summary, refine_gabriel
-from nonobtuse.mesh3d.plc import PLC, TetMesh, region_attributes
+from nonobtuse.mesh3d.plc import PLC, TetMesh
 
 QualityStatus = Literal["converged", "quality_blocked", "budget_exhausted", "min_length_reached", "stalled"]
 Start = Literal["tetgen", "boundary"]
@@ -35,19 +34,22 @@ Start = Literal["tetgen", "boundary"]
 class Quality3DResult:
     """The outcome of refine_quality3d.
 
-    mesh:   the TetMesh: PLC points first in input order, then the boundary Steiner points (as refine_gabriel
-            returned them), then the interior points; tets of the Delaunay tetrahedralization of all of them in
-            the PLC's regions (exact, CGAL); boundary_faces, face_markers, face_facets and segments are the
-            repaired boundary's subfacets and subsegments, unchanged by the interior points.
-    status: "converged" (the exact Gabriel check of mesh passes and every tet meets the bounds, floating point),
-            "quality_blocked" (certificate passes; the tets still over a bound all have their circumcenter in a
-            closed boundary diametral sphere), "budget_exhausted" (max_points or time_limit), or the boundary
-            repair's status when it did not converge (then no interior point is added).
-    stats:  the boundary repair's stats (steiner_points, ...) plus boundary_points, interior_points, tets,
-            worst_radius_edge, max_volume (the largest tet volume), bad_tets (tets over a bound), blocked_tets
-            (those whose circumcenter lies in a closed diametral sphere), rounds, tetgen_points_dropped (TetGen
-            points inside a closed diametral sphere), radius_edge / max_volume_bound (the bounds asked), start,
-            quality_seconds, seconds.
+    mesh:   the TetMesh: PLC points first in input order, then the boundary Steiner points, then the interior
+            points; tets of the Delaunay tetrahedralization of all of them in the PLC's regions (exact, CGAL);
+            boundary_faces (subfacets) with face_facets and face_markers of their input facets; segments the
+            subsegments.
+    status: "converged" (the exact Gabriel check of mesh passes and every tet meets the bounds, floating
+            point), "quality_blocked" (certificate passes; a round could add nothing: the centers left lie on
+            diametral spheres), "budget_exhausted" (max_points or time_limit), or the boundary repair's status
+            when it did not converge ("budget_exhausted", "min_length_reached", "stalled").
+    stats:  boundary_points, interior_points, steiner_points (all points not in the input), tets,
+            worst_radius_edge, max_volume, min_volume, radius_edge_over_2 (see :func:`tet_quality`), bad_tets
+            (tets over a bound at the end), blocked_centers (circumcenters of the last round in a closed
+            diametral sphere), rounds, surface (how the facets were split first), tetgen / tetgen_points /
+            tetgen_points_dropped (TetGen's interior points, and those dropped for lying in a closed diametral
+            sphere), encroached_facets / encroached_segments (the exact certificate), volume_mesh,
+            negative_couplings, boundary_repair (the first refine_gabriel's stats), radius_edge /
+            max_volume_bound (the bounds asked), start, warnings, seconds.
     report: the GabrielReport of mesh (exact).
     """
 
@@ -78,8 +80,8 @@ def shortest_edges(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
 
 
 def tet_quality(mesh: TetMesh) -> dict[str, Any]:
-    """Shape and size of mesh.tets, floating point: tets, worst_radius_edge (circumradius over shortest edge; a
-    regular tet has 0.612), max_volume, min_volume, and the fraction of tets with radius-edge above 2."""
+    """Shape and size of mesh.tets, floating point: tets, worst_radius_edge (circumradius over shortest edge;
+    a regular tet has 0.612), max_volume, min_volume, and radius_edge_over_2 (the fraction of tets above 2)."""
     tets = np.asarray(mesh.tets, dtype=np.int64).reshape(-1, 4)
     if not len(tets):
         return {"tets": 0, "worst_radius_edge": None, "max_volume": None, "min_volume": None,
@@ -106,31 +108,35 @@ def refine_quality3d(
     started: float | None = None,
     **gabriel_options: Any,
 ) -> Quality3DResult:
-    """Repair the boundary of `plc` to Gabriel (refine_gabriel with ``gabriel_options``: max_steiner,
-    min_length, split, protected_fallback), then add interior points until every tet has radius-edge ratio
-    <= radius_edge and volume <= max_volume, never inside a subfacet's or subsegment's closed diametral sphere.
+    """Repair the boundary of `plc` to Gabriel (refine_gabriel with ``gabriel_options``: max_steiner, min_length,
+    split, protected_fallback) and add interior points until every tet has radius-edge ratio <= radius_edge
+    and volume <= max_volume; no interior point is kept inside a subfacet's or subsegment's closed diametral
+    sphere.
 
     plc: as for refine_gabriel. max_volume: a volume bound for every tet, or a mapping {region attribute:
     bound} (regions not listed are free; the attributes are those of plc.regions, or 1, 2, ... without seeds),
-    or None. radius_edge: a bound > 1 on circumradius / shortest edge (TetGen's -q; 2 is its default), or None.
-    max_points: interior point budget (None: 10^6). time_limit: seconds for everything (boundary repair
-    included), checked between rounds. start: "tetgen" takes TetGen's -pq/-a -Y points on the repaired boundary
-    as the first interior points (needs the 3d extra; falls back to "boundary" without it), "boundary" starts
-    from the boundary points alone. progress: True prints a line per round to stderr; a callable gets (round,
-    interior_points, bad_tets, blocked_tets, seconds). started: time.perf_counter() at which the caller's work
-    began (time_limit counts from it).
-    Split rule and termination: a tet over a bound gets its circumcenter, in rounds; within a round a circumcenter
-    is taken only when no point taken before it in the round lies inside its tet's circumsphere (floating point),
-    as if inserted one by one (Bowyer-Watson), so each new point is at least its tet's circumradius r from every
-    other point. A tet over the radius-edge bound has r > radius_edge * (its shortest edge) >= the smallest
-    distance between points so far (radius_edge > 1); a tet over the volume bound V has r >= (3V / 4 pi)^(1/3)
-    (a tet lies in its circumsphere). No boundary point is added, so the distance between points never drops below
-    min(smallest boundary edge, (3V / 4 pi)^(1/3)) and the points pack a bounded domain: the loop ends. A
-    circumcenter in a closed diametral sphere is not inserted (its tet stays); with none in any (the lemma of
-    Ruppert and Shewchuk), circumcenters lie in the domain: one that lands outside (rounding) is dropped.
-    Guarantee: the returned mesh's boundary certificate is the exact check_gabriel of it (report); status
-    "converged" needs it to pass. The bounds themselves are measured in floating point. Deterministic.
-    Cost: the boundary repair, one TetGen run, then per round a Delaunay tetrahedralization, O(n log n).
+    or None. radius_edge: a bound > 1 on circumradius / shortest edge (TetGen's -q; 2 is its default), or
+    None. max_points: interior point budget (None: 10^6). time_limit: seconds for everything, checked between
+    rounds and passed on to each boundary repair. start: "tetgen" lets TetGen (-pq R -a V, the 3d extra) split
+    the facets for the bounds before the Gabriel repair and takes its -Y interior points on the repaired
+    boundary as the first interior points (it falls back to "boundary" when TetGen is missing or fails);
+    "boundary" starts from the input boundary and its repair alone. progress: True prints a line per round to
+    stderr; a callable gets (round, interior_points, bad_tets, blocked_tets, seconds). started:
+    time.perf_counter() at which the caller's work began (time_limit counts from it).
+    Each round: the boundary repair (refine_gabriel on the current subfacets, subsegments and interior points:
+    it splits every subfacet or subsegment an interior point encroaches, and builds the Delaunay
+    tetrahedralization), then the circumcenters of the tets over a bound. Split rule (Ruppert, Shewchuk):
+    within a round a circumcenter is taken only when no center taken before it lies inside its tet's
+    circumsphere (floating point), as Bowyer-Watson insertion one by one would still see the tet, so each new
+    point is at least its tet's circumradius r from every other point; a center in a closed diametral sphere
+    is not kept: the next repair splits the subfacet or subsegment it encroaches instead. Termination: a tet
+    over the radius-edge bound has r > radius_edge * (its shortest edge), one over the volume bound V has r >=
+    (3V / 4 pi)^(1/3) (a tet lies in its circumsphere), so interior points do not crowd; boundary splits
+    follow refine_gabriel's rule and limits. The loop itself is bounded by max_points, time_limit and the
+    boundary repair's budget, and a round that adds nothing ends it ("quality_blocked").
+    Guarantee: report is the exact check_gabriel of the returned mesh; status "converged" needs it to pass and
+    every tet within the bounds (measured in floating point). Deterministic.
+    Cost: per round a boundary repair (O(n log n) when few splits) and floating-point tet measures.
     Raises InvalidInputError for a malformed PLC or bounds (radius_edge <= 1, max_volume <= 0, not finite).
     """
     started = time.perf_counter() if started is None else started
@@ -138,109 +144,115 @@ def refine_quality3d(
     _check_bounds(max_volume, radius_edge, max_points)
     switches = _tetgen_switches(max_volume, radius_edge)
     surface, surface_note = _tetgen_surface(plc, switches + "AQ") if start == "tetgen" else (plc, "input")
-    boundary = refine_gabriel(surface, time_limit=time_limit, started=started, **gabriel_options)
-    stats: dict[str, Any] = dict(boundary.stats)
-    stats.update(boundary_points=len(boundary.mesh.points), interior_points=0, radius_edge=radius_edge,
-                 max_volume_bound=_jsonable_bound(max_volume), start=start, rounds=0, surface=surface_note)
-    if boundary.status != "converged":
-        stats.update(tet_quality(boundary.mesh), quality="not attempted: the boundary is not certified")
-        return Quality3DResult(boundary.mesh, boundary.status, stats, boundary.report)
-    t0 = time.perf_counter()
-    refiner = _InteriorRefiner(plc, boundary.mesh, max_volume, radius_edge)
-    interior = refiner.tetgen_points(switches + "YAQ", stats) if start == "tetgen" else np.zeros((0, 3))
+    refiner = _InteriorRefiner(plc, max_volume, radius_edge, time_limit, started, gabriel_options)
+    g = refiner.repair(surface, np.zeros((0, 3)))
+    stats: dict[str, Any] = {"boundary_repair": dict(g.stats), "radius_edge": radius_edge,
+                             "max_volume_bound": _jsonable_bound(max_volume), "start": start, "rounds": 0,
+                             "surface": surface_note}
+    if g.status == "converged" and start == "tetgen":
+        surface, _ = refiner.split_mesh(g.mesh)
+        g = refiner.repair(surface, refiner.tetgen_points(surface, switches + "YAQ", stats))
+    bad = blocked = np.zeros(0, dtype=np.int64)
+    status: str = g.status
     budget = 10**6 if max_points is None else int(max_points)
-    status: QualityStatus = "converged"
-    while True:
-        interior = interior[:budget]
-        mesh, interior = refiner.delaunay(interior)
-        bad, blocked, centers = refiner.bad_tets(mesh)
+    while status == "converged":
+        surface, interior = refiner.split_mesh(g.mesh)
+        bad, centers = refiner.bad_tets(g.mesh)
+        accepted = refiner.independent_centers(g.mesh, bad, centers)
+        on_spheres = refiner.closed_hits(surface, np.concatenate([interior, accepted]))
+        blocked = np.flatnonzero(on_spheres[len(interior):])
         stats["rounds"] += 1
         seconds = time.perf_counter() - started
         if callback:
-            callback(stats["rounds"], len(interior), int(bad.size), int(blocked.sum()), seconds)
-        free = bad[~blocked]
-        if not bad.size:
-            break
-        if not free.size:
-            status = "quality_blocked"
+            callback(stats["rounds"], len(interior), int(bad.size), len(blocked), seconds)
+        if not bad.size and not on_spheres.any():
             break
         if len(interior) >= budget or seconds > time_limit:
             status = "budget_exhausted"
             break
-        interior = np.concatenate([interior, refiner.independent_centers(mesh, free, centers[~blocked])])
-    report = check_gabriel(mesh)
-    if not report.ok:  # cannot happen: no point is in a closed diametral sphere; the check decides all the same
+        keep = np.concatenate([interior, accepted])[~on_spheres][:budget]
+        if len(blocked):  # the repair splits what the blocked centers encroach; they are then dropped
+            split = refiner.repair(surface, np.concatenate([keep, accepted[blocked]]))
+            if split.status != "converged":
+                g, status = split, split.status
+                break
+            grown, _ = refiner.split_mesh(split.mesh)
+        else:
+            grown = surface
+        if len(keep) == len(interior) and len(grown.points) == len(surface.points):
+            status = "quality_blocked"  # nothing added: the centers left lie on spheres, which split nothing
+            break
+        g = refiner.repair(grown, keep)
+        status = g.status
+    mesh, report = g.mesh, check_gabriel(g.mesh)
+    if status == "converged" and not report.ok:  # the repair converged, so this cannot happen; checked anyway
         status = "stalled"
-    stats.update(tet_quality(mesh), interior_points=len(interior), bad_tets=int(bad.size),
-                 blocked_tets=int(blocked.sum()), encroached_facets=len(report.faces),
-                 encroached_segments=len(report.segments), status=status,
-                 steiner_points=len(mesh.points) - len(plc.points),
+    interior_points = len(mesh.points) - len(refiner.split_mesh(mesh)[0].points)
+    stats.update(tet_quality(mesh), status=status, steiner_points=len(mesh.points) - len(plc.points),
+                 boundary_points=len(mesh.points) - interior_points, interior_points=interior_points,
+                 bad_tets=int(bad.size), blocked_centers=len(blocked), encroached_facets=len(report.faces),
+                 encroached_segments=len(report.segments), volume_mesh=g.stats.get("volume_mesh"),
                  negative_couplings=control_volume_summary(mesh)["negative_couplings"],
-                 quality_seconds=time.perf_counter() - t0, seconds=time.perf_counter() - started)
+                 warnings=list(plc.warnings), seconds=time.perf_counter() - started)
     mesh.stats = stats
-    return Quality3DResult(mesh, status, stats, report)
+    return Quality3DResult(mesh, cast(QualityStatus, status), stats, report)
 
 
 class _InteriorRefiner:
-    """The repaired boundary (fixed) and the bounds; interior points come and go as (k, 3) arrays."""
+    """The input PLC, the bounds and the limits shared by the rounds of refine_quality3d."""
 
-    def __init__(self, plc: PLC, boundary: TetMesh, max_volume: Any, radius_edge: float | None) -> None:
-        self.plc, self.boundary = plc, boundary
-        self.points = np.ascontiguousarray(boundary.points, dtype=np.float64)
-        self.faces = np.ascontiguousarray(boundary.boundary_faces, dtype=np.int64).reshape(-1, 3)
-        self.segments = np.ascontiguousarray(boundary.segments, dtype=np.int64).reshape(-1, 2)
-        self.max_volume, self.radius_edge = max_volume, radius_edge
+    def __init__(self, plc: PLC, max_volume: Any, radius_edge: float | None, time_limit: float,
+                 started: float, gabriel_options: dict[str, Any]) -> None:
+        self.plc, self.max_volume, self.radius_edge = plc, max_volume, radius_edge
+        self.time_limit, self.started, self.gabriel_options = time_limit, started, gabriel_options
 
-    def closed_hits(self, candidates: np.ndarray) -> np.ndarray:
-        """True for each candidate (k, 3) in some subfacet's or subsegment's closed diametral sphere (exact)."""
-        face, segment = _core.closed_diametral_sphere_hits(self.points, self.faces, self.segments,
-                                                           np.ascontiguousarray(candidates, dtype=np.float64))
+    def repair(self, surface: PLC, interior: np.ndarray) -> Any:
+        """refine_gabriel of `surface` with `interior` (k, 3) as isolated points (after surface's points)."""
+        points = np.concatenate([surface.points, np.asarray(interior, dtype=np.float64).reshape(-1, 3)])
+        plc = PLC(points, surface.triangles, surface.facet_ids, surface.segments, self.plc.holes,
+                  self.plc.regions, self.plc.source, self.plc.warnings, self.plc.facet_markers)
+        return refine_gabriel(plc, time_limit=self.time_limit, started=self.started, **self.gabriel_options)
+
+    def split_mesh(self, mesh: TetMesh) -> tuple[PLC, np.ndarray]:
+        """The surface PLC of `mesh` (the input points, then the other vertices of its subfacets and
+        subsegments, in mesh order; its subfacets as triangles with their facet ids; its subsegments) and its other points
+        (k, 3), the interior points, in mesh order."""
+        on = np.zeros(len(mesh.points), dtype=bool)
+        on[: len(self.plc.points)] = True
+        on[np.asarray(mesh.boundary_faces, dtype=np.int64).ravel()] = True
+        on[np.asarray(mesh.segments, dtype=np.int64).ravel()] = True
+        renumber = np.cumsum(on) - 1
+        faces = renumber[np.asarray(mesh.boundary_faces, dtype=np.int64)]
+        segments = renumber[np.asarray(mesh.segments, dtype=np.int64).reshape(-1, 2)]
+        surface = PLC(mesh.points[on], faces, np.asarray(mesh.face_facets, dtype=np.int64), segments,
+                      self.plc.holes, self.plc.regions, self.plc.source, self.plc.warnings,
+                      self.plc.facet_markers)
+        return surface, mesh.points[~on]
+
+    @staticmethod
+    def closed_hits(surface: PLC, candidates: np.ndarray) -> np.ndarray:
+        """True for each candidate (k, 3) in a closed diametral sphere of a subfacet or subsegment (exact)."""
+        face, segment = _core.closed_diametral_sphere_hits(
+            np.ascontiguousarray(surface.points, dtype=np.float64),
+            np.ascontiguousarray(surface.triangles, dtype=np.int64),
+            np.ascontiguousarray(surface.segments, dtype=np.int64).reshape(-1, 2),
+            np.ascontiguousarray(candidates, dtype=np.float64).reshape(-1, 3))
         return (face >= 0) | (segment >= 0)
 
-    def tetgen_points(self, switches: str, stats: dict[str, Any]) -> np.ndarray:
-        """TetGen's interior points (``switches`` with -Y: the boundary is kept) on the repaired boundary, without
-        those in a closed diametral sphere; none when TetGen is not installed or fails (stats["tetgen"] says
-        why)."""
+    def tetgen_points(self, surface: PLC, switches: str, stats: dict[str, Any]) -> np.ndarray:
+        """TetGen's interior points (``switches`` with -Y: the boundary is kept) on `surface`, without those in
+        a closed diametral sphere; none when TetGen is not installed or fails (stats["tetgen"] says why)."""
         from nonobtuse.mesh3d.tetrahedralize import tetrahedralize
 
         try:
-            tm = tetrahedralize(self._boundary_plc(), "tetgen", switches=switches)
+            tm = tetrahedralize(surface, "tetgen", switches=switches)
         except (ModuleNotFoundError, InvalidInputError) as e:
             stats["tetgen"] = f"not used: {e}"
             return np.zeros((0, 3))
-        extra = np.asarray(tm.points[len(self.points):], dtype=np.float64)
-        keep = ~self.closed_hits(extra)
+        extra = np.asarray(tm.points[len(surface.points):], dtype=np.float64)
+        keep = ~self.closed_hits(surface, extra)
         stats.update(tetgen=switches, tetgen_points=len(extra), tetgen_points_dropped=int((~keep).sum()))
         return extra[keep]
-
-    def _boundary_plc(self) -> PLC:
-        regions = np.asarray(self.plc.regions, dtype=np.float64).reshape(-1, 4)
-        return PLC(self.points, self.faces, np.asarray(self.boundary.face_facets, dtype=np.int64), self.segments,
-                   self.plc.holes, regions, self.plc.source, facet_markers=self.plc.facet_markers)
-
-    def delaunay(self, interior: np.ndarray) -> tuple[TetMesh, np.ndarray]:
-        """The Delaunay tetrahedralization (exact) of the boundary points and `interior` in the PLC's regions,
-        and the interior points it uses (a point outside the regions, from a rounded circumcenter, is dropped)."""
-        from nonobtuse.mesh3d.tetrahedralize import _plc_arrays
-
-        while True:
-            plc = self._boundary_plc()
-            points = np.concatenate([self.points, interior])
-            arrays = _plc_arrays(PLC(points, plc.triangles, plc.facet_ids, plc.segments, plc.holes, plc.regions))
-            d = _core.delaunay_restricted_to_plc(*arrays)
-            if len(d["uncovered_facets"]):
-                raise RuntimeError("internal: the Delaunay tetrahedralization of a Gabriel boundary with no point "
-                                   "in a closed diametral sphere does not conform to its facets")
-            used = np.zeros(len(points), dtype=bool)
-            used[np.asarray(d["tets"]).ravel()] = True
-            if used[len(self.points):].all():
-                break
-            interior = interior[used[len(self.points):]]
-        b = self.boundary
-        mesh = TetMesh(points, np.asarray(d["tets"], dtype=np.int64), b.boundary_faces, b.face_markers,
-                       b.segments, region_attributes(d["tet_regions"], self.plc, True), {},
-                       face_facets=b.face_facets)
-        return mesh, interior
 
     def volume_bounds(self, mesh: TetMesh) -> np.ndarray:
         """The volume bound (t,) of each tet: inf where none."""
@@ -252,10 +264,9 @@ class _InteriorRefiner:
         regions = np.ones(t) if mesh.tet_regions is None else np.asarray(mesh.tet_regions, dtype=np.float64)
         return np.array([self.max_volume.get(r, math.inf) for r in regions.tolist()], dtype=np.float64)
 
-    def bad_tets(self, mesh: TetMesh) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Rows of mesh.tets over a bound (most skewed first), whether each one's circumcenter lies in a closed
-        diametral sphere, and their circumcenters."""
-        tets = np.asarray(mesh.tets, dtype=np.int64)
+    def bad_tets(self, mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
+        """Rows of mesh.tets over a bound, most skewed first, and their circumcenters (floating point)."""
+        tets = np.asarray(mesh.tets, dtype=np.int64).reshape(-1, 4)
         centers, radius, volume = tet_circumspheres(mesh.points, tets)
         ratio = radius / shortest_edges(mesh.points, tets)
         over = volume > self.volume_bounds(mesh)
@@ -263,19 +274,21 @@ class _InteriorRefiner:
             over |= ratio > self.radius_edge
         bad = np.flatnonzero(over)
         bad = bad[np.argsort(-ratio[bad], kind="stable")]
-        if not bad.size:
-            return bad, np.zeros(0, dtype=bool), np.zeros((0, 3))
-        return bad, self.closed_hits(centers[bad]), centers[bad]
+        return bad, centers[bad]
 
-    def independent_centers(self, mesh: TetMesh, tets: np.ndarray, centers: np.ndarray) -> np.ndarray:
-        """The circumcenters (k, 3) of rows `tets` (in order) taken one by one as Bowyer-Watson would still see
-        their tets: a center is skipped when a center taken before it lies inside its tet's circumsphere."""
+    @staticmethod
+    def independent_centers(mesh: TetMesh, tets: np.ndarray, centers: np.ndarray) -> np.ndarray:
+        """The circumcenters (k, 3) of rows `tets` (in order) taken one by one as Bowyer-Watson would still
+        see their tets: a center is skipped when a center taken before it lies inside its tet's circumsphere.
+        Each kept center is then at least its tet's circumradius from every point: the spacing the termination
+        argument of refine_quality3d needs."""
+        if not len(tets):
+            return np.zeros((0, 3))
         radius = tet_circumspheres(mesh.points, np.asarray(mesh.tets, dtype=np.int64)[tets])[1]
         tree = cKDTree(centers)
         taken = np.zeros(len(centers), dtype=bool)
         for i in range(len(centers)):
-            near = tree.query_ball_point(centers[i], radius[i])
-            if not taken[near].any():
+            if not taken[tree.query_ball_point(centers[i], radius[i])].any():
                 taken[i] = True
         return centers[taken]
 
@@ -287,8 +300,8 @@ def _tetgen_switches(max_volume: Any, radius_edge: float | None) -> str:
 
 
 def _tetgen_surface(plc: PLC, switches: str) -> tuple[PLC, str]:
-    """The PLC whose facets are TetGen's boundary triangles of `plc` (``switches``: TetGen splits the facets for
-    the bounds): the input points first, then TetGen's boundary Steiner points; facet ids and markers those of
+    """The PLC whose facets are TetGen's boundary triangles of `plc` (``switches``: TetGen splits the facets
+    for the bounds): the input points first, then TetGen's boundary Steiner points; facet ids and markers those of
     `plc`; segments the facets' boundary edges. `plc` itself, and why, when TetGen is missing or fails."""
     from nonobtuse.mesh3d.load import facet_boundary_segments
     from nonobtuse.mesh3d.tetrahedralize import tetrahedralize
@@ -302,8 +315,8 @@ def _tetgen_surface(plc: PLC, switches: str) -> tuple[PLC, str]:
     renumber[keep] = np.arange(len(keep))
     faces = renumber[tm.boundary_faces]
     facets = np.asarray(tm.face_facets, dtype=np.int64)
-    surface = PLC(tm.points[keep], faces, facets, facet_boundary_segments(faces, facets), plc.holes, plc.regions,
-                  plc.source, plc.warnings, plc.facet_markers)
+    surface = PLC(tm.points[keep], faces, facets, facet_boundary_segments(faces, facets), plc.holes,
+                  plc.regions, plc.source, plc.warnings, plc.facet_markers)
     return surface, f"TetGen -{switches}: {len(keep) - len(plc.points)} boundary Steiner points"
 
 
@@ -317,15 +330,16 @@ def _check_bounds(max_volume: Any, radius_edge: Any, max_points: Any) -> None:
     """InvalidInputError unless radius_edge is None or finite > 1, max_volume None, finite > 0 or a mapping to
     such values, and max_points None or an integer >= 0."""
     def positive(x: Any) -> bool:
-        return not isinstance(x, bool) and isinstance(x, (int, float, np.number)) and math.isfinite(x) and x > 0
+        number = not isinstance(x, bool) and isinstance(x, (int, float, np.number))
+        return number and math.isfinite(x) and x > 0
 
     if radius_edge is not None and not (positive(radius_edge) and radius_edge > 1):
         raise InvalidInputError(f"radius_edge must be a finite number > 1 (TetGen's -q; 2 is usual), got "
                                 f"{radius_edge!r}")
     volumes = max_volume.values() if isinstance(max_volume, Mapping) else [max_volume]
     if max_volume is not None and not all(positive(v) for v in volumes):
-        raise InvalidInputError(f"max_volume must be a finite number > 0 or a mapping region -> such a number, "
-                                f"got {max_volume!r}")
-    if max_points is not None and (isinstance(max_points, bool) or not isinstance(max_points, (int, np.integer))
-                                   or max_points < 0):
+        raise InvalidInputError(f"max_volume must be a finite number > 0 or a mapping region -> such a "
+                                f"number, got {max_volume!r}")
+    integer = not isinstance(max_points, bool) and isinstance(max_points, (int, np.integer))
+    if max_points is not None and not (integer and max_points >= 0):
         raise InvalidInputError(f"max_points must be an integer >= 0, got {max_points!r}")
