@@ -115,9 +115,10 @@ def run_refine3d(args: argparse.Namespace) -> int:
                                        split=args.split, progress=True, started=t0, **limits)
     else:
         result = refine_gabriel(plc, split=args.split, progress=True, started=t0, **limits)
-    # The certificate is refine_gabriel's (refine_quality3d's) exact check of result.mesh, the arrays written below unchanged
-    # (float64 coordinates, written exactly); it ran within the time limit, and rows it did not reach make the
-    # status budget_exhausted. A second, unbounded check here would break --time-limit.
+    # The certificate is refine_gabriel's (or refine_quality3d's) exact check of result.mesh, the arrays
+    # written below unchanged (float64 coordinates, written exactly); it ran within the time limit, and rows
+    # it did not reach make the status budget_exhausted. A second, unbounded check here would break
+    # --time-limit.
     stats = result.stats
     written = dict(stats)
     if not args.timings:  # the file is then the same for the same input and options

@@ -1,12 +1,12 @@
 """Interior quality and size for 3D meshes with a Gabriel boundary: TetGen's ``-q`` (radius-edge ratio) and
 ``-a`` (maximum volume), the boundary certificate kept.
 
-:func:`refine_quality3d` lets TetGen split the facets for the bounds, repairs that boundary (:func:`refine_gabriel`:
-every subfacet and subsegment gets an empty diametral sphere), takes TetGen's interior points on it (``-Y``) but
-those in a closed diametral sphere, then inserts circumcenters of the tets over a bound in rounds. A
-circumcenter in a closed diametral sphere is not kept: the next boundary repair, which sees it as an encroaching
-point, splits the subfacet or subsegment instead (Ruppert's rule). The returned mesh is refine_gabriel's Delaunay
-tetrahedralization, certified by the exact check.
+:func:`refine_quality3d` lets TetGen split the facets for the bounds, repairs that boundary
+(:func:`refine_gabriel`: every subfacet and subsegment gets an empty diametral sphere), takes TetGen's
+interior points on it (``-Y``) but those in a closed diametral sphere, then inserts circumcenters of the tets
+over a bound in rounds. A circumcenter in a closed diametral sphere is not kept: the next boundary repair,
+which sees it as an encroaching point, splits the subfacet or subsegment instead (Ruppert's rule). The
+returned mesh is refine_gabriel's Delaunay tetrahedralization, certified by the exact check.
 """
 
 from __future__ import annotations
@@ -81,7 +81,8 @@ def shortest_edges(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
 
 def tet_quality(mesh: TetMesh) -> dict[str, Any]:
     """Shape and size of mesh.tets, floating point: tets, worst_radius_edge (circumradius over shortest edge;
-    a regular tet has 0.612), max_volume, min_volume, and radius_edge_over_2 (the fraction of tets above 2)."""
+    a regular tet has 0.612), max_volume, min_volume, and radius_edge_over_2 (the fraction of tets above
+    2)."""
     tets = np.asarray(mesh.tets, dtype=np.int64).reshape(-1, 4)
     if not len(tets):
         return {"tets": 0, "worst_radius_edge": None, "max_volume": None, "min_volume": None,
@@ -108,10 +109,10 @@ def refine_quality3d(
     started: float | None = None,
     **gabriel_options: Any,
 ) -> Quality3DResult:
-    """Repair the boundary of `plc` to Gabriel (refine_gabriel with ``gabriel_options``: max_steiner, min_length,
-    split, protected_fallback) and add interior points until every tet has radius-edge ratio <= radius_edge
-    and volume <= max_volume; no interior point is kept inside a subfacet's or subsegment's closed diametral
-    sphere.
+    """Repair the boundary of `plc` to Gabriel (refine_gabriel with ``gabriel_options``: max_steiner,
+    min_length, split, protected_fallback) and add interior points until every tet has radius-edge ratio <=
+    radius_edge and volume <= max_volume; no interior point is kept inside a subfacet's or subsegment's closed
+    diametral sphere.
 
     plc: as for refine_gabriel. max_volume: a volume bound for every tet, or a mapping {region attribute:
     bound} (regions not listed are free; the attributes are those of plc.regions, or 1, 2, ... without seeds),
@@ -215,8 +216,8 @@ class _InteriorRefiner:
 
     def split_mesh(self, mesh: TetMesh) -> tuple[PLC, np.ndarray]:
         """The surface PLC of `mesh` (the input points, then the other vertices of its subfacets and
-        subsegments, in mesh order; its subfacets as triangles with their facet ids; its subsegments) and its other points
-        (k, 3), the interior points, in mesh order."""
+        subsegments, in mesh order; its subfacets as triangles with their facet ids; its subsegments) and its
+        other points (k, 3), the interior points, in mesh order."""
         on = np.zeros(len(mesh.points), dtype=bool)
         on[: len(self.plc.points)] = True
         on[np.asarray(mesh.boundary_faces, dtype=np.int64).ravel()] = True
@@ -240,8 +241,9 @@ class _InteriorRefiner:
         return (face >= 0) | (segment >= 0)
 
     def tetgen_points(self, surface: PLC, switches: str, stats: dict[str, Any]) -> np.ndarray:
-        """TetGen's interior points (``switches`` with -Y: the boundary is kept) on `surface`, without those in
-        a closed diametral sphere; none when TetGen is not installed or fails (stats["tetgen"] says why)."""
+        """TetGen's interior points (``switches`` with -Y: the boundary is kept) on `surface`, without those
+        in a closed diametral sphere; none when TetGen is not installed or fails (stats["tetgen"] says
+        why)."""
         from nonobtuse.mesh3d.tetrahedralize import tetrahedralize
 
         try:
@@ -301,8 +303,9 @@ def _tetgen_switches(max_volume: Any, radius_edge: float | None) -> str:
 
 def _tetgen_surface(plc: PLC, switches: str) -> tuple[PLC, str]:
     """The PLC whose facets are TetGen's boundary triangles of `plc` (``switches``: TetGen splits the facets
-    for the bounds): the input points first, then TetGen's boundary Steiner points; facet ids and markers those of
-    `plc`; segments the facets' boundary edges. `plc` itself, and why, when TetGen is missing or fails."""
+    for the bounds): the input points first, then TetGen's boundary Steiner points; facet ids and markers
+    those of `plc`; segments the facets' boundary edges. `plc` itself, and why, when TetGen is missing or
+    fails."""
     from nonobtuse.mesh3d.load import facet_boundary_segments
     from nonobtuse.mesh3d.tetrahedralize import tetrahedralize
 
