@@ -122,7 +122,9 @@ def run_refine3d(args: argparse.Namespace) -> int:
     stats = result.stats
     written = dict(stats)
     if not args.timings:  # the file is then the same for the same input and options
-        written.update({k: None for k in ("seconds", "quality_seconds") if k in written})
+        written["seconds"] = None
+        if "boundary_repair" in written:  # refine_quality3d's first repair
+            written["boundary_repair"] = {**written["boundary_repair"], "seconds": None}
     write_output(replace(result.mesh, stats=written), args.output)
     print(f"refine3d: {result.status} after {stats['seconds']:.2f} s; wrote {args.output}", file=sys.stderr)
     _print({"input": args.input, "output": args.output, **_unchecked_as_unknown(stats)}, args.json)

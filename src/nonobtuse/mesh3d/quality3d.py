@@ -147,9 +147,9 @@ def refine_quality3d(
     surface, surface_note = _tetgen_surface(plc, switches + "AQ") if start == "tetgen" else (plc, "input")
     refiner = _InteriorRefiner(plc, max_volume, radius_edge, time_limit, started, gabriel_options)
     g = refiner.repair(surface, np.zeros((0, 3)))
-    stats: dict[str, Any] = {"boundary_repair": dict(g.stats), "radius_edge": radius_edge,
-                             "max_volume_bound": _jsonable_bound(max_volume), "start": start, "rounds": 0,
-                             "surface": surface_note}
+    stats: dict[str, Any] = {"radius_edge": radius_edge, "max_volume_bound": _jsonable_bound(max_volume),
+                             "start": start, "rounds": 0, "surface": surface_note,
+                             "boundary_repair": dict(g.stats)}
     if g.status == "converged" and start == "tetgen":
         surface, _ = refiner.split_mesh(g.mesh)
         g = refiner.repair(surface, refiner.tetgen_points(surface, switches + "YAQ", stats))
@@ -159,7 +159,7 @@ def refine_quality3d(
     while status == "converged":
         surface, interior = refiner.split_mesh(g.mesh)
         bad, centers = refiner.bad_tets(g.mesh)
-        accepted = refiner.independent_centers(g.mesh, bad, centers)
+        bad_of_accepted, accepted = refiner.independent_centers(g.mesh, bad, centers)
         on_spheres = refiner.closed_hits(surface, np.concatenate([interior, accepted]))
         blocked = np.flatnonzero(on_spheres[len(interior):])
         stats["rounds"] += 1
@@ -171,9 +171,10 @@ def refine_quality3d(
         if len(interior) >= budget or seconds > time_limit:
             status = "budget_exhausted"
             break
-        keep = np.concatenate([interior, accepted])[~on_spheres][:budget]
-        if len(blocked):  # the repair splits what the blocked centers encroach; they are then dropped
-            split = refiner.repair(surface, np.concatenate([keep, accepted[blocked]]))
+        triggers, free = refiner.stand_ins(g.mesh, bad_of_accepted[blocked], accepted[blocked], surface)
+        keep = np.concatenate([np.concatenate([interior, accepted])[~on_spheres], free])[:budget]
+        if len(triggers):  # the repair splits what they encroach (Ruppert's rule); they are then dropped
+            split = refiner.repair(surface, np.concatenate([keep, triggers]))
             if split.status != "converged":
                 g, status = split, split.status
                 break
@@ -189,12 +190,13 @@ def refine_quality3d(
     if status == "converged" and not report.ok:  # the repair converged, so this cannot happen; checked anyway
         status = "stalled"
     interior_points = len(mesh.points) - len(refiner.split_mesh(mesh)[0].points)
-    stats.update(tet_quality(mesh), status=status, steiner_points=len(mesh.points) - len(plc.points),
-                 boundary_points=len(mesh.points) - interior_points, interior_points=interior_points,
-                 bad_tets=int(bad.size), blocked_centers=len(blocked), encroached_facets=len(report.faces),
-                 encroached_segments=len(report.segments), volume_mesh=g.stats.get("volume_mesh"),
-                 negative_couplings=control_volume_summary(mesh)["negative_couplings"],
-                 warnings=list(plc.warnings), seconds=time.perf_counter() - started)
+    stats = {"status": status, "steiner_points": len(mesh.points) - len(plc.points),
+             "boundary_points": len(mesh.points) - interior_points, "interior_points": interior_points,
+             **tet_quality(mesh), "bad_tets": int(bad.size), "blocked_centers": len(blocked),
+             "encroached_facets": len(report.faces), "encroached_segments": len(report.segments),
+             "volume_mesh": g.stats.get("volume_mesh"),
+             "negative_couplings": control_volume_summary(mesh)["negative_couplings"], **stats,
+             "warnings": list(plc.warnings), "seconds": time.perf_counter() - started}
     mesh.stats = stats
     return Quality3DResult(mesh, cast(QualityStatus, status), stats, report)
 
@@ -285,14 +287,38 @@ class _InteriorRefiner:
         Each kept center is then at least its tet's circumradius from every point: the spacing the termination
         argument of refine_quality3d needs."""
         if not len(tets):
-            return np.zeros((0, 3))
+            return tets, np.zeros((0, 3))
         radius = tet_circumspheres(mesh.points, np.asarray(mesh.tets, dtype=np.int64)[tets])[1]
         tree = cKDTree(centers)
         taken = np.zeros(len(centers), dtype=bool)
         for i in range(len(centers)):
             if not taken[tree.query_ball_point(centers[i], radius[i])].any():
                 taken[i] = True
-        return centers[taken]
+        return tets[taken], centers[taken]
+
+    def stand_ins(self, mesh: TetMesh, tets: np.ndarray, centers: np.ndarray,
+                  surface: PLC) -> tuple[np.ndarray, np.ndarray]:
+        """For the rows `tets` whose circumcenters (`centers`) lie in a closed diametral sphere: points that
+        stand for them, strictly inside the tet (exact orient3d; so in the domain and on no facet or segment,
+        where a circumcenter can lie): the first of centroid + (center - centroid) 2^-k, k = 1..8, inside the
+        tet. Returns (triggers: those in a closed diametral sphere, for the boundary repair to split what they
+        encroach; free: those in none, inserted instead of the center). Floating-point points, exact tests."""
+        tets = np.asarray(mesh.tets, dtype=np.int64)[tets]
+        centroid = mesh.points[tets].mean(axis=1)
+        found = np.zeros(len(tets), dtype=bool)
+        out = np.zeros((len(tets), 3))
+        faces = np.array([[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]])  # outward faces of a positive tet
+        for k in range(1, 9):
+            p = centroid + (centers - centroid) * 2.0**-k
+            points = np.concatenate([mesh.points, p])
+            quads = np.column_stack([tets[:, faces].reshape(-1, 3),
+                                     np.repeat(len(mesh.points) + np.arange(len(p)), 4)])
+            # p is strictly inside iff it is strictly on the inner side of every face
+            new = ~found & (_core.plc_orient3d(points, quads).reshape(-1, 4) < 0).all(axis=1)
+            out[new], found[new] = p[new], True
+        out = out[found]
+        hit = self.closed_hits(surface, out)
+        return out[hit], out[~hit]
 
 
 def _tetgen_switches(max_volume: Any, radius_edge: float | None) -> str:
