@@ -41,7 +41,9 @@ class Quality3DResult:
     status: "converged" (the exact Gabriel check of mesh passes and every tet meets the bounds, floating
             point), "quality_blocked" (certificate passes; a round could add nothing: the centers left lie on
             diametral spheres), "budget_exhausted" (max_points or time_limit), or the boundary repair's status
-            when it did not converge ("budget_exhausted", "min_length_reached", "stalled").
+            when one did not converge ("budget_exhausted", "min_length_reached", "stalled"): mesh is then
+            the last converged repair's (certified) when there was one; stats["last_repair"] says how the last
+            repair ended.
     stats:  boundary_points, interior_points, steiner_points (all points not in the input), tets,
             worst_radius_edge, max_volume, min_volume, radius_edge_over_2 (see :func:`tet_quality`), bad_tets
             (tets over a bound at the end), blocked_centers (circumcenters of the last round in a closed
@@ -121,7 +123,8 @@ def refine_quality3d(
     rounds and passed on to each boundary repair. start: "tetgen" lets TetGen (-pq R -a V, the 3d extra) split
     the facets for the bounds before the Gabriel repair and takes its -Y interior points on the repaired
     boundary as the first interior points (it falls back to "boundary" when TetGen is missing or fails);
-    "boundary" starts from the input boundary and its repair alone. progress: True prints a line per round to
+    "boundary" starts from the input boundary and its repair alone (also taken when the repair of TetGen's
+    surface does not converge within half the time). progress: True prints a line per round to
     stderr; a callable gets (round, interior_points, bad_tets, blocked_tets, seconds). started:
     time.perf_counter() at which the caller's work began (time_limit counts from it).
     Each round: the boundary repair (refine_gabriel on the current subfacets, subsegments and interior points:
@@ -146,7 +149,13 @@ def refine_quality3d(
     switches = _tetgen_switches(max_volume, radius_edge)
     surface, surface_note = _tetgen_surface(plc, switches + "AQ") if start == "tetgen" else (plc, "input")
     refiner = _InteriorRefiner(plc, max_volume, radius_edge, time_limit, started, gabriel_options)
-    g = refiner.repair(surface, np.zeros((0, 3)))
+    # TetGen's facet splits can make the repair harder (points near small input angles): with half the time
+    # left, it stops and the input's own boundary is repaired instead
+    g = refiner.repair(surface, np.zeros((0, 3)), share=0.5 if surface is not plc else 1.0)
+    if g.status != "converged" and surface is not plc:
+        surface_note = f"input (the repair of TetGen's surface ended {g.status})"
+        surface, start = plc, "boundary"
+        g = refiner.repair(surface, np.zeros((0, 3)))
     stats: dict[str, Any] = {"radius_edge": radius_edge, "max_volume_bound": _jsonable_bound(max_volume),
                              "start": start, "rounds": 0, "surface": surface_note,
                              "boundary_repair": dict(g.stats)}
@@ -155,6 +164,7 @@ def refine_quality3d(
         g = refiner.repair(surface, refiner.tetgen_points(surface, switches + "YAQ", stats))
     bad = blocked = np.zeros(0, dtype=np.int64)
     status: str = g.status
+    stop = g.stats["diagnosis"]["stop_reason"]
     budget = 10**6 if max_points is None else int(max_points)
     while status == "converged":
         surface, interior = refiner.split_mesh(g.mesh)
@@ -173,19 +183,21 @@ def refine_quality3d(
             break
         triggers, free = refiner.stand_ins(g.mesh, bad_of_accepted[blocked], accepted[blocked], surface)
         keep = np.concatenate([np.concatenate([interior, accepted])[~on_spheres], free])[:budget]
+        grown = surface
         if len(triggers):  # the repair splits what they encroach (Ruppert's rule); they are then dropped
             split = refiner.repair(surface, np.concatenate([keep, triggers]))
-            if split.status != "converged":
-                g, status = split, split.status
+            status, stop = split.status, split.stats["diagnosis"]["stop_reason"]
+            if status != "converged":
                 break
             grown, _ = refiner.split_mesh(split.mesh)
-        else:
-            grown = surface
         if len(keep) == len(interior) and len(grown.points) == len(surface.points):
             status = "quality_blocked"  # nothing added: the centers left lie on spheres, which split nothing
             break
-        g = refiner.repair(grown, keep)
-        status = g.status
+        repaired = refiner.repair(grown, keep)
+        status, stop = repaired.status, repaired.stats["diagnosis"]["stop_reason"]
+        if status == "converged":
+            g = repaired
+    # g is the last converged repair when a later one stopped (its status is returned, with g's mesh)
     mesh, report = g.mesh, check_gabriel(g.mesh)
     if status == "converged" and not report.ok:  # the repair converged, so this cannot happen; checked anyway
         status = "stalled"
@@ -194,7 +206,7 @@ def refine_quality3d(
              "boundary_points": len(mesh.points) - interior_points, "interior_points": interior_points,
              **tet_quality(mesh), "bad_tets": int(bad.size), "blocked_centers": len(blocked),
              "encroached_facets": len(report.faces), "encroached_segments": len(report.segments),
-             "volume_mesh": g.stats.get("volume_mesh"),
+             "volume_mesh": g.stats.get("volume_mesh"), "last_repair": stop,
              "negative_couplings": control_volume_summary(mesh)["negative_couplings"], **stats,
              "warnings": list(plc.warnings), "seconds": time.perf_counter() - started}
     mesh.stats = stats
@@ -209,12 +221,14 @@ class _InteriorRefiner:
         self.plc, self.max_volume, self.radius_edge = plc, max_volume, radius_edge
         self.time_limit, self.started, self.gabriel_options = time_limit, started, gabriel_options
 
-    def repair(self, surface: PLC, interior: np.ndarray) -> Any:
-        """refine_gabriel of `surface` with `interior` (k, 3) as isolated points (after surface's points)."""
+    def repair(self, surface: PLC, interior: np.ndarray, share: float = 1.0) -> Any:
+        """refine_gabriel of `surface` with `interior` (k, 3) as isolated points (after surface's points),
+        within `share` of the time left."""
         points = np.concatenate([surface.points, np.asarray(interior, dtype=np.float64).reshape(-1, 3)])
         plc = PLC(points, surface.triangles, surface.facet_ids, surface.segments, self.plc.holes,
                   self.plc.regions, self.plc.source, self.plc.warnings, self.plc.facet_markers)
-        return refine_gabriel(plc, time_limit=self.time_limit, started=self.started, **self.gabriel_options)
+        left = self.time_limit - (time.perf_counter() - self.started)
+        return refine_gabriel(plc, time_limit=max(0.0, share * left), **self.gabriel_options)
 
     def split_mesh(self, mesh: TetMesh) -> tuple[PLC, np.ndarray]:
         """The surface PLC of `mesh` (the input points, then the other vertices of its subfacets and
