@@ -21,7 +21,6 @@ Run: ``PYTHONPATH=src .venv/bin/python -m experiments.bench_quality3d [--quick] 
 from __future__ import annotations
 
 import argparse
-import csv
 import sys
 import time
 from pathlib import Path
@@ -29,8 +28,8 @@ from typing import Any
 
 import numpy as np
 
+from experiments.sweep import output_stem, write_csv
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.io._files import atomic_text
 from nonobtuse.mesh3d import check_gabriel, load_plc, tetrahedralize
 from nonobtuse.mesh3d.load import PLC_SUFFIXES, SURFACE_SUFFIXES
 from nonobtuse.mesh3d.quality3d import refine_quality3d, tet_quality
@@ -61,14 +60,8 @@ def _round(x: float | None) -> float | None:
     return None if x is None else float(f"{x:.4g}")
 
 
-def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
-    name = f"{path.resolve().parents[2].name}/{path.name}"  # shared/... or tests/...: the corpus
-    try:
-        plc = load_plc(path)
-    except InvalidInputError as e:
-        return [{"input": name, "method": "-", "status": f"invalid: {str(e)[:40]}"}]
-    if len(plc.triangles) > args.max_triangles:
-        return [{"input": name, "method": "-", "status": f"skipped: {len(plc.triangles)} triangles"}]
+def bench_one(name: str, plc, args: argparse.Namespace) -> list[dict[str, Any]]:
+    """The rows of TetGen and ours on one PLC."""
     extent = plc.points.max(axis=0) - plc.points.min(axis=0)
     bound = args.volume_fraction * float(np.prod(extent))
     rows = []
@@ -84,11 +77,11 @@ def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
     return rows
 
 
-def print_table(rows: list[dict[str, Any]]) -> None:
-    widths = {c: max(len(c), *(len(str(r.get(c, ""))) for r in rows)) for c in COLUMNS}
-    print("  ".join(c.ljust(widths[c]) for c in COLUMNS))
-    for r in rows:
-        print("  ".join(str(r.get(c, "")).ljust(widths[c]) for c in COLUMNS))
+def markdown_table(rows: list[dict[str, Any]]) -> str:
+    """The rows as a Markdown table (the README's form), one line per row."""
+    lines = ["| " + " | ".join(COLUMNS) + " |", "|" + " --- |" * len(COLUMNS)]
+    lines += ["| " + " | ".join(str(r.get(c, "")) for c in COLUMNS) + " |" for r in rows]
+    return "\n".join(lines)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -111,14 +104,17 @@ def main(argv: list[str] | None = None) -> int:
     rows = []
     for path in inputs:
         print(f"bench_quality3d: {path.name}", file=sys.stderr)
-        rows += bench_one(path, args)
-    args.out.mkdir(parents=True, exist_ok=True)
-    out = args.out / ("bench_quality3d_quick.csv" if args.quick else "bench_quality3d.csv")
-    with atomic_text(out) as f:
-        w = csv.DictWriter(f, fieldnames=COLUMNS, lineterminator="\n")
-        w.writeheader()
-        w.writerows(rows)
-    print_table(rows)
+        name = f"{path.resolve().parents[2].name}/{path.name}"  # shared/... or tests/...: the corpus
+        try:
+            plc = load_plc(path)
+        except InvalidInputError as e:
+            rows.append({"input": name, "status": f"invalid: {e}"[:60]})
+            continue
+        too_big = len(plc.triangles) > args.max_triangles
+        rows += [{"input": name, "status": "skipped (size)"}] if too_big else bench_one(name, plc, args)
+    out = args.out / f"{output_stem('bench_quality3d', args.quick)}.csv"
+    write_csv(out, rows, COLUMNS)
+    print(markdown_table(rows))
     print(f"\nwrote {out}", file=sys.stderr)
     return 0
 

@@ -183,3 +183,18 @@ def test_refine3d_cli_writes_a_quality_mesh(tmp_path, capsys):
     assert ratios.max() <= 2.0 and volumes.max() <= 0.02 and check_gabriel(mesh).ok
     assert main(["refine3d", str(cube), "-o", str(tmp_path / "b.json"), "--max-volume", "1",
                  "--region-max-volume", "1=0.1"]) == EXIT_INVALID
+
+
+@needs_tetgen
+def test_bench_quality3d_writes_both_rows(tmp_path):
+    from experiments.bench_quality3d import COLUMNS, main as bench
+
+    cube = write_off(tmp_path / "cube.off", CUBE_POINTS, CUBE_TRIANGLES.tolist())
+    assert bench([str(cube), "--out", str(tmp_path), "--volume-fraction", "0.05"]) == 0
+    lines = (tmp_path / "bench_quality3d.csv").read_text().splitlines()
+    assert lines[0].split(",") == COLUMNS
+    rows = [dict(zip(COLUMNS, line.split(","))) for line in lines[1:]]
+    assert [r["method"] for r in rows] == ["tetgen", "ours"]
+    ours = rows[1]
+    assert ours["status"] == "converged" and ours["encroached_facets"] == ours["encroached_segments"] == "0"
+    assert float(ours["worst_radius_edge"]) <= 2.0 and float(ours["max_volume"]) <= 0.05
