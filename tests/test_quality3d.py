@@ -187,7 +187,8 @@ def test_refine3d_cli_writes_a_quality_mesh(tmp_path, capsys):
 
 @needs_tetgen
 def test_bench_quality3d_writes_both_rows(tmp_path):
-    from experiments.bench_quality3d import COLUMNS, main as bench
+    from experiments.bench_quality3d import COLUMNS
+    from experiments.bench_quality3d import main as bench
 
     cube = write_off(tmp_path / "cube.off", CUBE_POINTS, CUBE_TRIANGLES.tolist())
     assert bench([str(cube), "--out", str(tmp_path), "--volume-fraction", "0.05"]) == 0

@@ -295,11 +295,12 @@ class _InteriorRefiner:
         return bad, centers[bad]
 
     @staticmethod
-    def independent_centers(mesh: TetMesh, tets: np.ndarray, centers: np.ndarray) -> np.ndarray:
-        """The circumcenters (k, 3) of rows `tets` (in order) taken one by one as Bowyer-Watson would still
-        see their tets: a center is skipped when a center taken before it lies inside its tet's circumsphere.
-        Each kept center is then at least its tet's circumradius from every point: the spacing the termination
-        argument of refine_quality3d needs."""
+    def independent_centers(mesh: TetMesh, tets: np.ndarray,
+                            centers: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The rows (k,) and circumcenters (k, 3) of rows `tets` (in order) taken one by one as Bowyer-Watson
+        would still see their tets: a center is skipped when a center taken before it lies inside its tet's
+        circumsphere. Each kept center is then at least its tet's circumradius from every point: the spacing
+        the termination argument of refine_quality3d needs."""
         if not len(tets):
             return tets, np.zeros((0, 3))
         radius = tet_circumspheres(mesh.points, np.asarray(mesh.tets, dtype=np.int64)[tets])[1]
