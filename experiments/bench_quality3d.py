@@ -11,7 +11,9 @@ input's bounding box:
 Columns: input, method, status, points, boundary_points (vertices of boundary faces and segments),
 interior_points, tets, worst_radius_edge, max_volume (largest tet volume; both floating point, over every
 tet), volume_bound (V), encroached_facets, encroached_segments (the exact check_gabriel of the mesh as
-returned), seconds. CSV to DIR/bench_quality3d.csv (``--quick``: bench_quality3d_quick.csv) and a table on
+returned), seconds. Each method runs in a child process killed after 2 time_limit + 60 s (status "timeout":
+TetGen has no time limit). CSV to DIR/bench_quality3d.csv (``--quick``: bench_quality3d_quick.csv) and a
+table on
 stdout.
 
 Run: ``PYTHONPATH=src .venv/bin/python -m experiments.bench_quality3d [--quick] [--out DIR] [files...]``
@@ -28,7 +30,7 @@ from typing import Any
 
 import numpy as np
 
-from experiments.sweep import output_stem, write_csv
+from experiments.sweep import output_stem, run_case_limited, write_csv
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import check_gabriel, load_plc, tetrahedralize
 from nonobtuse.mesh3d.load import PLC_SUFFIXES, SURFACE_SUFFIXES
@@ -60,20 +62,37 @@ def _round(x: float | None) -> float | None:
     return None if x is None else float(f"{x:.4g}")
 
 
-def bench_one(name: str, plc, args: argparse.Namespace) -> list[dict[str, Any]]:
-    """The rows of TetGen and ours on one PLC."""
+def run_case(case: dict[str, Any]) -> dict[str, Any]:
+    """One row (the sweep task, run in a child process): case has path, name, method ("tetgen" or "ours"),
+    radius_edge, volume_fraction, time_limit."""
+    plc = load_plc(case["path"])
     extent = plc.points.max(axis=0) - plc.points.min(axis=0)
-    bound = args.volume_fraction * float(np.prod(extent))
+    bound = case["volume_fraction"] * float(np.prod(extent))
+    name, r = case["name"], case["radius_edge"]
+    t0 = time.perf_counter()
+    if case["method"] == "tetgen":
+        try:
+            tm = tetrahedralize(plc, "tetgen", switches=f"pq{r!r}a{bound!r}AQ")
+        except InvalidInputError as e:
+            return {"input": name, "method": "tetgen", "status": f"failed: {str(e)[-60:]}"}
+        return measure(name, "tetgen", tm, "ok", bound, time.perf_counter() - t0)
+    result = refine_quality3d(plc, max_volume=bound, radius_edge=r, time_limit=case["time_limit"])
+    return measure(name, "ours", result.mesh, result.status, bound, time.perf_counter() - t0)
+
+
+def bench_one(name: str, path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
+    """The rows of TetGen and ours on one input, each in a child process killed after 2 time_limit + 60 s
+    (TetGen has no time limit of its own: -pq ran for minutes on mc_torus.off)."""
     rows = []
-    t0 = time.perf_counter()
-    try:
-        tm = tetrahedralize(plc, "tetgen", switches=f"pq{args.radius_edge!r}a{bound!r}AQ")
-        rows.append(measure(name, "tetgen", tm, "ok", bound, time.perf_counter() - t0))
-    except InvalidInputError as e:
-        rows.append({"input": name, "method": "tetgen", "status": f"failed: {str(e)[-60:]}"})
-    t0 = time.perf_counter()
-    r = refine_quality3d(plc, max_volume=bound, radius_edge=args.radius_edge, time_limit=args.time_limit)
-    rows.append(measure(name, "ours", r.mesh, r.status, bound, time.perf_counter() - t0))
+    for method in ("tetgen", "ours"):
+        case = {"path": str(path), "name": name, "method": method, "radius_edge": args.radius_edge,
+                "volume_fraction": args.volume_fraction, "time_limit": args.time_limit}
+        record = run_case_limited("experiments.bench_quality3d:run_case", case, 2 * args.time_limit + 60)
+        if record["status"] == "ok":
+            rows.append(record["result"])
+        else:
+            rows.append({"input": name, "method": method, "status": record["status"],
+                         "seconds": record["seconds"]})
     return rows
 
 
@@ -101,7 +120,8 @@ def main(argv: list[str] | None = None) -> int:
     if not inputs:
         print("no inputs", file=sys.stderr)
         return 2
-    rows = []
+    rows: list[dict[str, Any]] = []
+    out = args.out / f"{output_stem('bench_quality3d', args.quick)}.csv"
     for path in inputs:
         print(f"bench_quality3d: {path.name}", file=sys.stderr)
         name = f"{path.resolve().parents[2].name}/{path.name}"  # shared/... or tests/...: the corpus
@@ -111,9 +131,8 @@ def main(argv: list[str] | None = None) -> int:
             rows.append({"input": name, "status": f"invalid: {e}"[:60]})
             continue
         too_big = len(plc.triangles) > args.max_triangles
-        rows += [{"input": name, "status": "skipped (size)"}] if too_big else bench_one(name, plc, args)
-    out = args.out / f"{output_stem('bench_quality3d', args.quick)}.csv"
-    write_csv(out, rows, COLUMNS)
+        rows += [{"input": name, "status": "skipped (size)"}] if too_big else bench_one(name, path, args)
+        write_csv(out, rows, COLUMNS)  # after every input: a long run shows its rows as it goes
     print(markdown_table(rows))
     print(f"\nwrote {out}", file=sys.stderr)
     return 0
