@@ -13,8 +13,7 @@ interior_points, tets, worst_radius_edge, max_volume (largest tet volume; both f
 tet), volume_bound (V), encroached_facets, encroached_segments (the exact check_gabriel of the mesh as
 returned), seconds. Each method runs in a child process killed after 2 time_limit + 60 s (status "timeout":
 TetGen has no time limit). CSV to DIR/bench_quality3d.csv (``--quick``: bench_quality3d_quick.csv) and a
-table on
-stdout.
+Markdown table on stdout.
 
 Run: ``PYTHONPATH=src .venv/bin/python -m experiments.bench_quality3d [--quick] [--out DIR] [files...]``
 (--quick: inputs up to 500 triangles, 20 s each for ours).
