@@ -185,6 +185,16 @@ def test_refine3d_cli_writes_a_quality_mesh(tmp_path, capsys):
                  "--region-max-volume", "1=0.1"]) == EXIT_INVALID
 
 
+def test_refine3d_cli_without_tetgen_start(tmp_path, capsys):
+    cube = write_off(tmp_path / "cube.off", CUBE_POINTS, CUBE_TRIANGLES.tolist())
+    out = tmp_path / "b.json"
+    assert main(["refine3d", str(cube), "-o", str(out), "--region-max-volume", "1=0.05", "--quality-start",
+                 "boundary", "--json"]) == EXIT_OK
+    summary = json.loads(capsys.readouterr().out)
+    _, volumes = radius_edge_and_volume(read_tetmesh_json(out))
+    assert summary["start"] == "boundary" and "tetgen" not in summary and volumes.max() <= 0.05
+
+
 @needs_tetgen
 def test_bench_quality3d_writes_both_rows(tmp_path):
     from experiments.bench_quality3d import COLUMNS

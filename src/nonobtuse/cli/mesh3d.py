@@ -48,6 +48,10 @@ def register(sub: argparse._SubParsersAction) -> None:
                    metavar="ATTR=V", help="largest tet volume in the region with attribute ATTR (repeatable)")
     p.add_argument("--radius-edge", type=guards.positive, default=None,
                    help="largest circumradius / shortest edge of a tet, > 1 (TetGen's -q, e.g. 2.0)")
+    p.add_argument("--quality-start", choices=("tetgen", "boundary"), default="tetgen",
+                   help="with a bound: let TetGen split the facets and seed interior points first (default), "
+                        "or start from the input boundary alone (TetGen has no time limit; see "
+                        "refine_quality3d)")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     guards.add_timings_option(p)
     p.set_defaults(func=run_refine3d)
@@ -112,7 +116,8 @@ def run_refine3d(args: argparse.Namespace) -> int:
 
         volume = dict(args.region_max_volume) if args.region_max_volume else args.max_volume
         result: Any = refine_quality3d(plc, max_volume=volume, radius_edge=args.radius_edge,
-                                       split=args.split, progress=True, started=t0, **limits)
+                                       start=args.quality_start, split=args.split, progress=True,
+                                       started=t0, **limits)
     else:
         result = refine_gabriel(plc, split=args.split, progress=True, started=t0, **limits)
     # The certificate is refine_gabriel's (or refine_quality3d's) exact check of result.mesh, the arrays
