@@ -16,6 +16,7 @@ void bind_refine2d(py::module_& m);
 void bind_gabriel3d(py::module_& m);
 void bind_plc(py::module_& m);
 void bind_control_volumes3d(py::module_& m);
+void bind_quality3d(py::module_& m);
 }
 
 PYBIND11_MODULE(_core, m) {
@@ -39,4 +40,5 @@ PYBIND11_MODULE(_core, m) {
   nonobtuse::bindings::bind_gabriel3d(m);
   nonobtuse::bindings::bind_plc(m);
   nonobtuse::bindings::bind_control_volumes3d(m);
+  nonobtuse::bindings::bind_quality3d(m);
 }

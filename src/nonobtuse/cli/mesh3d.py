@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any, Callable
 
 from nonobtuse.cli import guards
 from nonobtuse.cli.exit_codes import EXIT_NOT_CONVERGED, EXIT_OK, EXIT_VIOLATIONS
+from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import jsonable
 
 if TYPE_CHECKING:  # the 3D modules are imported when a command runs
@@ -46,6 +47,17 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "the writing (near-linear in the output) come on top")
     p.add_argument("--split", choices=("shells", "midpoint", "greedy", "protected"), default="shells",
                    help="how encroached subsegments are split (see refine_gabriel)")
+    p.add_argument("--max-volume", type=guards.positive, default=None,
+                   help="largest tet volume (TetGen's -a): interior points are added, never in a boundary "
+                        "diametral sphere (see refine_quality3d)")
+    p.add_argument("--region-max-volume", type=_region_volume, action="append", default=None,
+                   metavar="ATTR=V", help="largest tet volume in the region with attribute ATTR (repeatable)")
+    p.add_argument("--radius-edge", type=guards.positive, default=None,
+                   help="largest circumradius / shortest edge of a tet, > 1 (TetGen's -q, e.g. 2.0)")
+    p.add_argument("--quality-start", choices=("tetgen", "boundary"), default="tetgen",
+                   help="with a bound: let TetGen split the facets and seed interior points first (default), "
+                        "or start from the input boundary alone (TetGen has no time limit; see "
+                        "refine_quality3d)")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     guards.add_timings_option(p)
     _add_picture_options(p, "the boundary before (the input tetrahedralized by TetGen when installed, else "
@@ -61,6 +73,16 @@ def _add_picture_options(p: argparse.ArgumentParser, what: str) -> None:
     p.add_argument("--offenders", metavar="VTU", help="also write the non-Gabriel boundary faces, encroached "
                    "subsegments and encroaching vertices as a .vtu for ParaView (cell data: row, facet, "
                    "marker, vertex, depth)")
+
+
+def _region_volume(text: str) -> tuple[float, float]:
+    """An argparse type: ATTR=V, a region attribute and a volume bound > 0."""
+    attr, sep, volume = text.partition("=")
+    try:
+        return float(attr), guards.positive(volume)
+    except (ValueError, argparse.ArgumentTypeError):
+        raise argparse.ArgumentTypeError(f"expected ATTR=V (a region attribute and a volume > 0), found "
+                                         f"{text!r}") from None
 
 
 def _finite_or_none(x: Any) -> Any:
@@ -138,6 +160,8 @@ def run_refine3d(args: argparse.Namespace) -> int:
 
     t0 = time.perf_counter()
     guards.refuse_overwriting(_files_read(args.input), [Path(args.output)] + _picture_outputs(args))
+    if args.region_max_volume and args.max_volume is not None:
+        raise InvalidInputError("give --max-volume or --region-max-volume, not both")
     plc = load_plc(args.input)
     limits = {k: v for k, v in (("max_steiner", args.max_steiner), ("min_length", args.min_length),
                                   ("time_limit", args.time_limit)) if v is not None}
@@ -145,15 +169,26 @@ def run_refine3d(args: argparse.Namespace) -> int:
     progress.start(f"refining {args.input}: {len(plc.points):,} points, {len(plc.triangles):,} triangles "
                    f"({', '.join(f'{k}={v}' for k, v in limits.items()) or 'default limits'})")
     # started=t0: --time-limit and stats["seconds"] cover loading too
-    result = refine_gabriel(plc, split=args.split, progress=progress.active or None, started=t0, **limits)
+    if args.max_volume is not None or args.radius_edge is not None or args.region_max_volume:
+        from nonobtuse.mesh3d.quality3d import refine_quality3d
+
+        volume = dict(args.region_max_volume) if args.region_max_volume else args.max_volume
+        result: Any = refine_quality3d(plc, max_volume=volume, radius_edge=args.radius_edge,
+                                       start=args.quality_start, split=args.split,
+                                       progress=progress.active or None, started=t0, **limits)
+    else:
+        result = refine_gabriel(plc, split=args.split, progress=progress.active or None, started=t0, **limits)
     progress.done(f"{result.status}; writing {args.output}")
-    # The certificate is refine_gabriel's exact check of result.mesh, the arrays written below unchanged
-    # (float64 coordinates, written exactly); it ran within the time limit, and rows it did not reach make the
-    # status budget_exhausted. A second, unbounded check here would break --time-limit.
+    # The certificate is refine_gabriel's (or refine_quality3d's) exact check of result.mesh, the arrays
+    # written below unchanged (float64 coordinates, written exactly); it ran within the time limit, and rows
+    # it did not reach make the status budget_exhausted. A second, unbounded check here would break
+    # --time-limit.
     stats = result.stats
     written = dict(stats)
     if not args.timings:  # the file is then the same for the same input and options
         written["seconds"] = None
+        if "boundary_repair" in written:  # refine_quality3d's first repair
+            written["boundary_repair"] = {**written["boundary_repair"], "seconds": None}
     write_output(replace(result.mesh, stats=written), args.output, quiet=args.quiet)
     shown = _unchecked_as_unknown(stats)
     _print({"input": args.input, "output": args.output, **shown}, args,

@@ -1,0 +1,389 @@
+"""Interior quality and size for 3D meshes with a Gabriel boundary: TetGen's ``-q`` (radius-edge ratio) and
+``-a`` (maximum volume), the boundary certificate kept.
+
+:func:`refine_quality3d` lets TetGen split the facets for the bounds, repairs that boundary
+(:func:`refine_gabriel`: every subfacet and subsegment gets an empty diametral sphere), takes TetGen's
+interior points on it (``-Y``) but those in a closed diametral sphere, then inserts circumcenters of the tets
+over a bound in rounds. A circumcenter in a closed diametral sphere is not kept: the next boundary repair,
+which sees it as an encroaching point, splits the subfacet or subsegment instead (Ruppert's rule). The
+returned mesh is refine_gabriel's Delaunay tetrahedralization, certified by the exact check.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import time
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any, Callable, Literal, cast
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from nonobtuse import _core
+from nonobtuse.errors import InvalidInputError
+from nonobtuse.mesh3d.gabriel import GabrielReport, check_gabriel, control_volume_summary, refine_gabriel
+from nonobtuse.mesh3d.plc import PLC, TetMesh
+
+QualityStatus = Literal["converged", "quality_blocked", "budget_exhausted", "min_length_reached", "stalled"]
+Start = Literal["tetgen", "boundary"]
+
+
+@dataclass
+class Quality3DResult:
+    """The outcome of refine_quality3d.
+
+    mesh:   the TetMesh: PLC points first in input order, then the boundary Steiner points, then the interior
+            points; tets of the Delaunay tetrahedralization of all of them in the PLC's regions (exact, CGAL);
+            boundary_faces (subfacets) with face_facets and face_markers of their input facets; segments the
+            subsegments.
+    status: "converged" (the exact Gabriel check of mesh passes and every tet meets the bounds, floating
+            point), "quality_blocked" (certificate passes; a round could add nothing: the centers left lie on
+            diametral spheres), "budget_exhausted" (max_points or time_limit), or the boundary repair's status
+            when one did not converge ("budget_exhausted", "min_length_reached", "stalled"): mesh is then
+            the last converged repair's (certified) when there was one; stats["last_repair"] says how the last
+            repair ended.
+    stats:  boundary_points, interior_points, steiner_points (all points not in the input), tets,
+            worst_radius_edge, max_volume, min_volume, radius_edge_over_2 (see :func:`tet_quality`), bad_tets
+            (tets over a bound at the end), blocked_centers (circumcenters of the last round in a closed
+            diametral sphere), rounds, surface (how the facets were split first), tetgen / tetgen_points /
+            tetgen_points_dropped (TetGen's interior points, and those dropped for lying in a closed diametral
+            sphere), encroached_facets / encroached_segments (the exact certificate), volume_mesh,
+            negative_couplings, boundary_repair (the first refine_gabriel's stats), radius_edge /
+            max_volume_bound (the bounds asked), start, warnings, seconds.
+    report: the GabrielReport of mesh (exact).
+    """
+
+    mesh: TetMesh
+    status: QualityStatus
+    stats: dict[str, Any] = field(default_factory=dict)
+    report: GabrielReport | None = None
+
+
+def tet_circumspheres(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Circumcenters (t, 3), circumradii (t,) and volumes (t,) of tets (t, 4) int64 over points (n, 3) float64
+    (positively oriented tets give positive volumes). Floating point; a flat tet gives inf or NaN."""
+    a = points[tets[:, 0]]
+    b, c, d = (points[tets[:, k]] - a for k in (1, 2, 3))
+    cd, db, bc = np.cross(c, d), np.cross(d, b), np.cross(b, c)
+    six_volume = np.einsum("ij,ij->i", b, cd)
+    offset = ((b * b).sum(1)[:, None] * cd + (c * c).sum(1)[:, None] * db + (d * d).sum(1)[:, None] * bc)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        offset = offset / (2.0 * six_volume)[:, None]
+    return a + offset, np.sqrt((offset * offset).sum(1)), six_volume / 6.0
+
+
+def shortest_edges(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
+    """The shortest edge length (t,) of each tet (t, 4) over points (n, 3)."""
+    pairs = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)]
+    d2 = np.stack([((points[tets[:, i]] - points[tets[:, j]]) ** 2).sum(1) for i, j in pairs])
+    return np.sqrt(d2.min(0))
+
+
+def tet_quality(mesh: TetMesh) -> dict[str, Any]:
+    """Shape and size of mesh.tets, floating point: tets, worst_radius_edge (circumradius over shortest edge;
+    a regular tet has 0.612), max_volume, min_volume, and radius_edge_over_2 (the fraction of tets above
+    2)."""
+    tets = np.asarray(mesh.tets, dtype=np.int64).reshape(-1, 4)
+    if not len(tets):
+        return {"tets": 0, "worst_radius_edge": None, "max_volume": None, "min_volume": None,
+                "radius_edge_over_2": None}
+    _, radius, volume = tet_circumspheres(np.asarray(mesh.points, dtype=np.float64), tets)
+    ratio = radius / shortest_edges(np.asarray(mesh.points, dtype=np.float64), tets)
+    return {"tets": len(tets), "worst_radius_edge": float(ratio.max()), "max_volume": float(volume.max()),
+            "min_volume": float(volume.min()), "radius_edge_over_2": float((ratio > 2.0).mean())}
+
+
+def _print_progress(round_: int, interior: int, bad: int, blocked: int, seconds: float) -> None:
+    print(f"refine_quality3d: round {round_}, {interior} interior points, {bad} tets over a bound "
+          f"({blocked} blocked by a boundary sphere), {seconds:.1f} s", file=sys.stderr)
+
+
+def refine_quality3d(
+    plc: PLC,
+    max_volume: float | Mapping[float, float] | None = None,
+    radius_edge: float | None = None,
+    max_points: int | None = None,
+    time_limit: float = 120.0,
+    start: Start = "tetgen",
+    progress: Callable[[int, int, int, int, float], None] | bool | None = None,
+    started: float | None = None,
+    **gabriel_options: Any,
+) -> Quality3DResult:
+    """Repair the boundary of `plc` to Gabriel (refine_gabriel with ``gabriel_options``: max_steiner,
+    min_length, split, protected_fallback) and add interior points until every tet has radius-edge ratio <=
+    radius_edge and volume <= max_volume; no interior point is kept inside a subfacet's or subsegment's closed
+    diametral sphere.
+
+    plc: as for refine_gabriel. max_volume: a volume bound for every tet, or a mapping {region attribute:
+    bound} (regions not listed are free; the attributes are those of plc.regions, or 1, 2, ... without seeds),
+    or None. radius_edge: a bound > 1 on circumradius / shortest edge (TetGen's -q; 2 is its default), or
+    None. max_points: interior point budget (None: 10^6). time_limit: seconds for everything, checked between
+    rounds and passed on to each boundary repair. start: "tetgen" lets TetGen (-pq R -a V, the 3d extra) split
+    the facets for the bounds before the Gabriel repair and takes its -Y interior points on the repaired
+    boundary as the first interior points (it falls back to "boundary" when TetGen is missing or fails);
+    "boundary" starts from the input boundary and its repair alone (also taken when the repair of TetGen's
+    surface does not converge within half the time). progress: True prints a line per round to
+    stderr; a callable gets (round, interior_points, bad_tets, blocked_tets, seconds). started:
+    time.perf_counter() at which the caller's work began (time_limit counts from it).
+    Each round: the boundary repair (refine_gabriel on the current subfacets, subsegments and interior points:
+    it splits every subfacet or subsegment an interior point encroaches, and builds the Delaunay
+    tetrahedralization), then the circumcenters of the tets over a bound. Split rule (Ruppert, Shewchuk):
+    within a round a circumcenter is taken only when no center taken before it lies inside its tet's
+    circumsphere (floating point), as Bowyer-Watson insertion one by one would still see the tet, so each new
+    point is at least its tet's circumradius r from every other point; a center in a closed diametral sphere
+    is not kept: the next repair splits the subfacet or subsegment it encroaches instead. Termination: a tet
+    over the radius-edge bound has r > radius_edge * (its shortest edge), one over the volume bound V has r >=
+    (3V / 4 pi)^(1/3) (a tet lies in its circumsphere), so interior points do not crowd; boundary splits
+    follow refine_gabriel's rule and limits. The loop itself is bounded by max_points, time_limit and the
+    boundary repair's budget, and a round that adds nothing ends it ("quality_blocked").
+    Guarantee: report is the exact check_gabriel of the returned mesh; status "converged" needs it to pass and
+    every tet within the bounds (measured in floating point). Deterministic.
+    Cost: per round a boundary repair (O(n log n) when few splits) and floating-point tet measures.
+    Raises InvalidInputError for a malformed PLC or bounds (radius_edge <= 1, max_volume <= 0, not finite).
+    """
+    started = time.perf_counter() if started is None else started
+    callback = _print_progress if progress is True else (progress or None)
+    _check_bounds(max_volume, radius_edge, max_points)
+    switches = _tetgen_switches(max_volume, radius_edge)
+    surface, surface_note = _tetgen_surface(plc, switches + "AQ") if start == "tetgen" else (plc, "input")
+    refiner = _InteriorRefiner(plc, max_volume, radius_edge, time_limit, started, gabriel_options)
+    # TetGen's facet splits can make the repair harder (points near small input angles): with half the time
+    # left, it stops and the input's own boundary is repaired instead
+    g = refiner.repair(surface, np.zeros((0, 3)), share=0.5 if surface is not plc else 1.0)
+    if g.status != "converged" and surface is not plc:
+        surface_note = f"input (the repair of TetGen's surface ended {g.status})"
+        surface, start = plc, "boundary"
+        g = refiner.repair(surface, np.zeros((0, 3)))
+    stats: dict[str, Any] = {"radius_edge": radius_edge, "max_volume_bound": _jsonable_bound(max_volume),
+                             "start": start, "rounds": 0, "surface": surface_note,
+                             "boundary_repair": dict(g.stats)}
+    if g.status == "converged" and start == "tetgen":
+        surface, _ = refiner.split_mesh(g.mesh)
+        g = refiner.repair(surface, refiner.tetgen_points(surface, switches + "YAQ", stats))
+    bad = blocked = np.zeros(0, dtype=np.int64)
+    status: str = g.status
+    stop = g.stats["diagnosis"]["stop_reason"]
+    budget = 10**6 if max_points is None else int(max_points)
+    while status == "converged":
+        surface, interior = refiner.split_mesh(g.mesh)
+        bad, centers = refiner.bad_tets(g.mesh)
+        bad_of_accepted, accepted = refiner.independent_centers(g.mesh, bad, centers)
+        on_spheres = refiner.closed_hits(surface, np.concatenate([interior, accepted]))
+        blocked = np.flatnonzero(on_spheres[len(interior):])
+        stats["rounds"] += 1
+        seconds = time.perf_counter() - started
+        if callback:
+            callback(stats["rounds"], len(interior), int(bad.size), len(blocked), seconds)
+        if not bad.size and not on_spheres.any():
+            break
+        if len(interior) >= budget or seconds > time_limit:
+            status = "budget_exhausted"
+            break
+        triggers, free = refiner.stand_ins(g.mesh, bad_of_accepted[blocked], accepted[blocked], surface)
+        keep = np.concatenate([np.concatenate([interior, accepted])[~on_spheres], free])[:budget]
+        grown = surface
+        if len(triggers):  # the repair splits what they encroach (Ruppert's rule); they are then dropped
+            split = refiner.repair(surface, np.concatenate([keep, triggers]))
+            status, stop = split.status, split.stats["diagnosis"]["stop_reason"]
+            if status != "converged":
+                break
+            grown, _ = refiner.split_mesh(split.mesh)
+        if len(keep) == len(interior) and len(grown.points) == len(surface.points):
+            status = "quality_blocked"  # nothing added: the centers left lie on spheres, which split nothing
+            break
+        repaired = refiner.repair(grown, keep)
+        status, stop = repaired.status, repaired.stats["diagnosis"]["stop_reason"]
+        if status == "converged":
+            g = repaired
+    # g is the last converged repair when a later one stopped (its status is returned, with g's mesh)
+    mesh, report = g.mesh, check_gabriel(g.mesh)
+    if status == "converged" and not report.ok:  # the repair converged, so this cannot happen; checked anyway
+        status = "stalled"
+    interior_points = len(mesh.points) - len(refiner.split_mesh(mesh)[0].points)
+    stats = {"status": status, "steiner_points": len(mesh.points) - len(plc.points),
+             "boundary_points": len(mesh.points) - interior_points, "interior_points": interior_points,
+             **tet_quality(mesh), "bad_tets": int(bad.size), "blocked_centers": len(blocked),
+             "encroached_facets": len(report.faces), "encroached_segments": len(report.segments),
+             "volume_mesh": g.stats.get("volume_mesh"), "last_repair": stop,
+             "negative_couplings": control_volume_summary(mesh)["negative_couplings"], **stats,
+             "warnings": list(plc.warnings), "seconds": time.perf_counter() - started}
+    mesh.stats = stats
+    return Quality3DResult(mesh, cast(QualityStatus, status), stats, report)
+
+
+class _InteriorRefiner:
+    """The input PLC, the bounds and the limits shared by the rounds of refine_quality3d."""
+
+    def __init__(self, plc: PLC, max_volume: Any, radius_edge: float | None, time_limit: float,
+                 started: float, gabriel_options: dict[str, Any]) -> None:
+        self.plc, self.max_volume, self.radius_edge = plc, max_volume, radius_edge
+        self.time_limit, self.started, self.gabriel_options = time_limit, started, gabriel_options
+
+    def repair(self, surface: PLC, interior: np.ndarray, share: float = 1.0) -> Any:
+        """refine_gabriel of `surface` with `interior` (k, 3) as isolated points (after surface's points),
+        within `share` of the time left."""
+        points = np.concatenate([surface.points, np.asarray(interior, dtype=np.float64).reshape(-1, 3)])
+        plc = PLC(points, surface.triangles, surface.facet_ids, surface.segments, self.plc.holes,
+                  self.plc.regions, self.plc.source, self.plc.warnings, self.plc.facet_markers)
+        left = self.time_limit - (time.perf_counter() - self.started)
+        return refine_gabriel(plc, time_limit=max(0.0, share * left), **self.gabriel_options)
+
+    def split_mesh(self, mesh: TetMesh) -> tuple[PLC, np.ndarray]:
+        """The surface PLC of `mesh` (the input points, then the other vertices of its subfacets and
+        subsegments, in mesh order; its subfacets as triangles with their facet ids; its subsegments) and its
+        other points (k, 3), the interior points, in mesh order."""
+        on = np.zeros(len(mesh.points), dtype=bool)
+        on[: len(self.plc.points)] = True
+        on[np.asarray(mesh.boundary_faces, dtype=np.int64).ravel()] = True
+        on[np.asarray(mesh.segments, dtype=np.int64).ravel()] = True
+        renumber = np.cumsum(on) - 1
+        faces = renumber[np.asarray(mesh.boundary_faces, dtype=np.int64)]
+        segments = renumber[np.asarray(mesh.segments, dtype=np.int64).reshape(-1, 2)]
+        surface = PLC(mesh.points[on], faces, np.asarray(mesh.face_facets, dtype=np.int64), segments,
+                      self.plc.holes, self.plc.regions, self.plc.source, self.plc.warnings,
+                      self.plc.facet_markers)
+        return surface, mesh.points[~on]
+
+    @staticmethod
+    def closed_hits(surface: PLC, candidates: np.ndarray) -> np.ndarray:
+        """True for each candidate (k, 3) in a closed diametral sphere of a subfacet or subsegment (exact)."""
+        face, segment = _core.closed_diametral_sphere_hits(
+            np.ascontiguousarray(surface.points, dtype=np.float64),
+            np.ascontiguousarray(surface.triangles, dtype=np.int64),
+            np.ascontiguousarray(surface.segments, dtype=np.int64).reshape(-1, 2),
+            np.ascontiguousarray(candidates, dtype=np.float64).reshape(-1, 3))
+        return (face >= 0) | (segment >= 0)
+
+    def tetgen_points(self, surface: PLC, switches: str, stats: dict[str, Any]) -> np.ndarray:
+        """TetGen's interior points (``switches`` with -Y: the boundary is kept) on `surface`, without those
+        in a closed diametral sphere; none when TetGen is not installed or fails (stats["tetgen"] says
+        why)."""
+        from nonobtuse.mesh3d.tetrahedralize import tetrahedralize
+
+        try:
+            tm = tetrahedralize(surface, "tetgen", switches=switches)
+        except (ModuleNotFoundError, InvalidInputError) as e:
+            stats["tetgen"] = f"not used: {e}"
+            return np.zeros((0, 3))
+        extra = np.asarray(tm.points[len(surface.points):], dtype=np.float64)
+        keep = ~self.closed_hits(surface, extra)
+        stats.update(tetgen=switches, tetgen_points=len(extra), tetgen_points_dropped=int((~keep).sum()))
+        return extra[keep]
+
+    def volume_bounds(self, mesh: TetMesh) -> np.ndarray:
+        """The volume bound (t,) of each tet: inf where none."""
+        t = len(mesh.tets)
+        if self.max_volume is None:
+            return np.full(t, np.inf)
+        if isinstance(self.max_volume, (int, float)):
+            return np.full(t, float(self.max_volume))
+        regions = np.ones(t) if mesh.tet_regions is None else np.asarray(mesh.tet_regions, dtype=np.float64)
+        return np.array([self.max_volume.get(r, math.inf) for r in regions.tolist()], dtype=np.float64)
+
+    def bad_tets(self, mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
+        """Rows of mesh.tets over a bound, most skewed first, and their circumcenters (floating point)."""
+        tets = np.asarray(mesh.tets, dtype=np.int64).reshape(-1, 4)
+        centers, radius, volume = tet_circumspheres(mesh.points, tets)
+        ratio = radius / shortest_edges(mesh.points, tets)
+        over = volume > self.volume_bounds(mesh)
+        if self.radius_edge is not None:
+            over |= ratio > self.radius_edge
+        bad = np.flatnonzero(over)
+        bad = bad[np.argsort(-ratio[bad], kind="stable")]
+        return bad, centers[bad]
+
+    @staticmethod
+    def independent_centers(mesh: TetMesh, tets: np.ndarray,
+                            centers: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The rows (k,) and circumcenters (k, 3) of rows `tets` (in order) taken one by one as Bowyer-Watson
+        would still see their tets: a center is skipped when a center taken before it lies inside its tet's
+        circumsphere. Each kept center is then at least its tet's circumradius from every point: the spacing
+        the termination argument of refine_quality3d needs."""
+        if not len(tets):
+            return tets, np.zeros((0, 3))
+        radius = tet_circumspheres(mesh.points, np.asarray(mesh.tets, dtype=np.int64)[tets])[1]
+        tree = cKDTree(centers)
+        taken = np.zeros(len(centers), dtype=bool)
+        for i in range(len(centers)):
+            if not taken[tree.query_ball_point(centers[i], radius[i])].any():
+                taken[i] = True
+        return tets[taken], centers[taken]
+
+    def stand_ins(self, mesh: TetMesh, tets: np.ndarray, centers: np.ndarray,
+                  surface: PLC) -> tuple[np.ndarray, np.ndarray]:
+        """For the rows `tets` whose circumcenters (`centers`) lie in a closed diametral sphere: points that
+        stand for them, strictly inside the tet (exact orient3d; so in the domain and on no facet or segment,
+        where a circumcenter can lie): the first of centroid + (center - centroid) 2^-k, k = 1..8, inside the
+        tet. Returns (triggers: those in a closed diametral sphere, for the boundary repair to split what they
+        encroach; free: those in none, inserted instead of the center). Floating-point points, exact tests."""
+        tets = np.asarray(mesh.tets, dtype=np.int64)[tets]
+        centroid = mesh.points[tets].mean(axis=1)
+        found = np.zeros(len(tets), dtype=bool)
+        out = np.zeros((len(tets), 3))
+        faces = np.array([[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]])  # outward faces of a positive tet
+        for k in range(1, 9):
+            p = centroid + (centers - centroid) * 2.0**-k
+            points = np.concatenate([mesh.points, p])
+            quads = np.column_stack([tets[:, faces].reshape(-1, 3),
+                                     np.repeat(len(mesh.points) + np.arange(len(p)), 4)])
+            # p is strictly inside iff it is strictly on the inner side of every face
+            new = ~found & (_core.plc_orient3d(points, quads).reshape(-1, 4) < 0).all(axis=1)
+            out[new], found[new] = p[new], True
+        out = out[found]
+        hit = self.closed_hits(surface, out)
+        return out[hit], out[~hit]
+
+
+def _tetgen_switches(max_volume: Any, radius_edge: float | None) -> str:
+    """TetGen's -p -q [-a] switches for the bounds (a mapping of region bounds is left to the rounds)."""
+    switches = "pq" + (repr(float(radius_edge)) if radius_edge else "")
+    return switches + (f"a{float(max_volume)!r}" if isinstance(max_volume, (int, float)) else "")
+
+
+def _tetgen_surface(plc: PLC, switches: str) -> tuple[PLC, str]:
+    """The PLC whose facets are TetGen's boundary triangles of `plc` (``switches``: TetGen splits the facets
+    for the bounds): the input points first, then TetGen's boundary Steiner points; facet ids and markers
+    those of `plc`; segments the facets' boundary edges. `plc` itself, and why, when TetGen is missing or
+    fails."""
+    from nonobtuse.mesh3d.load import facet_boundary_segments
+    from nonobtuse.mesh3d.tetrahedralize import tetrahedralize
+
+    try:
+        tm = tetrahedralize(plc, "tetgen", switches=switches)
+    except (ModuleNotFoundError, InvalidInputError) as e:
+        return plc, f"input (TetGen not used: {e})"
+    keep = np.union1d(np.arange(len(plc.points)), np.asarray(tm.boundary_faces).ravel())
+    renumber = np.full(len(tm.points), -1, dtype=np.int64)
+    renumber[keep] = np.arange(len(keep))
+    faces = renumber[tm.boundary_faces]
+    facets = np.asarray(tm.face_facets, dtype=np.int64)
+    surface = PLC(tm.points[keep], faces, facets, facet_boundary_segments(faces, facets), plc.holes,
+                  plc.regions, plc.source, plc.warnings, plc.facet_markers)
+    return surface, f"TetGen -{switches}: {len(keep) - len(plc.points)} boundary Steiner points"
+
+
+def _jsonable_bound(max_volume: Any) -> Any:
+    if isinstance(max_volume, Mapping):
+        return {str(k): float(v) for k, v in max_volume.items()}
+    return max_volume
+
+
+def _check_bounds(max_volume: Any, radius_edge: Any, max_points: Any) -> None:
+    """InvalidInputError unless radius_edge is None or finite > 1, max_volume None, finite > 0 or a mapping to
+    such values, and max_points None or an integer >= 0."""
+    def positive(x: Any) -> bool:
+        number = not isinstance(x, bool) and isinstance(x, (int, float, np.number))
+        return number and math.isfinite(x) and x > 0
+
+    if radius_edge is not None and not (positive(radius_edge) and radius_edge > 1):
+        raise InvalidInputError(f"radius_edge must be a finite number > 1 (TetGen's -q; 2 is usual), got "
+                                f"{radius_edge!r}")
+    volumes = max_volume.values() if isinstance(max_volume, Mapping) else [max_volume]
+    if max_volume is not None and not all(positive(v) for v in volumes):
+        raise InvalidInputError(f"max_volume must be a finite number > 0 or a mapping region -> such a "
+                                f"number, got {max_volume!r}")
+    integer = not isinstance(max_points, bool) and isinstance(max_points, (int, np.integer))
+    if max_points is not None and not (integer and max_points >= 0):
+        raise InvalidInputError(f"max_points must be an integer >= 0, got {max_points!r}")

@@ -1,0 +1,211 @@
+"""refine_quality3d and refine3d --radius-edge/--max-volume: interior quality and size, the Gabriel boundary
+certificate unchanged."""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from mesh3d_shapes import CUBE_POINTS, CUBE_QUADS, CUBE_TRIANGLES, write_off
+from nonobtuse import _core
+from nonobtuse.cli import EXIT_INVALID, EXIT_OK, main
+from nonobtuse.errors import InvalidInputError
+from nonobtuse.mesh3d import check_gabriel, load_plc, read_tetmesh_json
+from nonobtuse.mesh3d.plc import PLC
+from nonobtuse.mesh3d.quality3d import refine_quality3d
+
+DATA3D = Path(__file__).resolve().parent / "data" / "3d"
+SHARED3D = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "3d"
+needs_tetgen = pytest.mark.skipif(importlib.util.find_spec("tetgen") is None,
+                                  reason="needs tetgen (the 3d extra)")
+
+
+def cube_plc() -> PLC:
+    # the two triangles of each quad share its facet id
+    facet_ids = np.concatenate([np.arange(len(CUBE_QUADS))] * 2)
+    return PLC(CUBE_POINTS.copy(), CUBE_TRIANGLES.copy(), facet_ids)
+
+
+def circumsphere(p: np.ndarray) -> tuple[np.ndarray, float]:
+    """Center and radius of the sphere through the 4 rows of p, by solving 2 (p_i - p_0) . x = |p_i|^2 -
+    |p_0|^2 (independent of the module's formula)."""
+    a = 2.0 * (p[1:] - p[0])
+    b = (p[1:] ** 2).sum(1) - (p[0] ** 2).sum()
+    center = np.linalg.solve(a, b)
+    return center, float(np.linalg.norm(p[0] - center))
+
+
+def radius_edge_and_volume(mesh) -> tuple[np.ndarray, np.ndarray]:
+    ratios, volumes = [], []
+    for t in np.asarray(mesh.tets):
+        p = mesh.points[t]
+        _, r = circumsphere(p)
+        edges = [np.linalg.norm(p[i] - p[j]) for i in range(4) for j in range(i + 1, 4)]
+        ratios.append(r / min(edges))
+        volumes.append(abs(np.linalg.det(p[1:] - p[0])) / 6.0)
+    return np.array(ratios), np.array(volumes)
+
+
+def exact_in_closed_sphere(corners: list[np.ndarray], q: np.ndarray) -> bool:
+    """Is q in the closed diametral sphere of the segment (2 corners) or triangle (3 corners)? Rationals."""
+    a, *rest = [[Fraction(float(x)) for x in c] for c in corners]
+    qq = [Fraction(float(x)) for x in q]
+    sub = lambda u, v: [u[i] - v[i] for i in range(3)]  # noqa: E731
+    dot = lambda u, v: sum(u[i] * v[i] for i in range(3))  # noqa: E731
+
+    def cross(u, v):
+        return [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+
+    if len(rest) == 1:
+        center = [(a[i] + rest[0][i]) / 2 for i in range(3)]
+    else:
+        u, v = sub(rest[0], a), sub(rest[1], a)
+        w = cross(u, v)
+        t = cross([dot(u, u) * v[i] - dot(v, v) * u[i] for i in range(3)], w)
+        center = [a[i] + t[i] / (2 * dot(w, w)) for i in range(3)]
+    return dot(sub(qq, center), sub(qq, center)) <= dot(sub(a, center), sub(a, center))
+
+
+def interior_points_in_closed_spheres(mesh) -> int:
+    """Interior points (on no subfacet or subsegment) in a closed diametral sphere, decided with rationals on
+    the pairs a floating-point distance test proposes (with a wide margin)."""
+    on = np.zeros(len(mesh.points), dtype=bool)
+    on[np.asarray(mesh.boundary_faces).ravel()] = True
+    on[np.asarray(mesh.segments).ravel()] = True
+    interior = mesh.points[~on]
+    found = 0
+    for simplex in [*np.asarray(mesh.boundary_faces), *np.asarray(mesh.segments)]:
+        corners = [mesh.points[v] for v in simplex]
+        if len(corners) == 2:
+            center = (corners[0] + corners[1]) / 2
+        else:  # the triangle's circumcenter, floating point: it only proposes candidates
+            u, v = corners[1] - corners[0], corners[2] - corners[0]
+            w = np.cross(u, v)
+            center = corners[0] + np.cross(u @ u * v - v @ v * u, w) / (2 * w @ w)
+        radius = np.linalg.norm(corners[0] - center) * 1.01
+        for q in interior[np.linalg.norm(interior - center, axis=1) <= radius]:
+            found += exact_in_closed_sphere(corners, q)
+    return found
+
+
+def test_closed_sphere_hits_count_points_on_the_sphere():
+    # segment (0,0,0)-(2,0,0): sphere of center (1,0,0), radius 1; (1,1,0) is on it, (1,1,1e-9) outside
+    points = np.array([[0.0, 0, 0], [2, 0, 0], [0, 2, 0]])
+    face, segment = _core.closed_diametral_sphere_hits(points, np.zeros((0, 3), dtype=np.int64), [[0, 1]],
+                                                       [[1, 1, 0], [1, 1, 1e-9], [1, 0.5, 0]])
+    assert segment.tolist() == [0, -1, 0] and face.tolist() == [-1, -1, -1]
+    # the right triangle's diametral sphere: center (1,1,0), radius^2 2; (2,2,0) on it, (1,1,1) inside,
+    # (2,2,1) outside
+    face, _ = _core.closed_diametral_sphere_hits(points, [[0, 1, 2]], np.zeros((0, 2), dtype=np.int64),
+                                                 [[2, 2, 0], [1, 1, 1], [2, 2, 1]])
+    assert face.tolist() == [0, 0, -1]
+
+
+@needs_tetgen
+def test_cube_meets_both_bounds_and_stays_gabriel():
+    r = refine_quality3d(cube_plc(), max_volume=0.01, radius_edge=2.0)
+    assert r.status == "converged"
+    ratios, volumes = radius_edge_and_volume(r.mesh)
+    assert ratios.max() <= 2.0 and volumes.max() <= 0.01
+    assert volumes.sum() == pytest.approx(1.0)
+    assert check_gabriel(r.mesh).ok and r.report.ok
+    assert interior_points_in_closed_spheres(r.mesh) == 0
+    s = r.stats
+    assert s["interior_points"] > 0 and s["boundary_points"] + s["interior_points"] == len(r.mesh.points)
+    assert s["worst_radius_edge"] == pytest.approx(ratios.max()) and s["tets"] == len(r.mesh.tets)
+    assert np.array_equal(r.mesh.points[:8], CUBE_POINTS)
+
+
+def test_boundary_start_needs_no_tetgen_and_splits_the_boundary_for_the_volume():
+    # The cube's own faces block every interior point (the center is inside each face's diametral sphere):
+    # the volume bound is met only by boundary splits, here from circumcenters alone.
+    r = refine_quality3d(cube_plc(), max_volume=0.05, radius_edge=2.0, start="boundary")
+    assert r.status == "converged"
+    ratios, volumes = radius_edge_and_volume(r.mesh)
+    assert ratios.max() <= 2.0 and volumes.max() <= 0.05
+    assert check_gabriel(r.mesh).ok and interior_points_in_closed_spheres(r.mesh) == 0
+    assert r.stats["boundary_points"] > 8
+
+
+@needs_tetgen
+def test_region_volumes_hold_per_region():
+    plc = load_plc(DATA3D / "two_cubes_face.poly")
+    r = refine_quality3d(plc, max_volume={1.0: 0.01, 2.0: 0.1}, radius_edge=2.0)
+    assert r.status == "converged"
+    _, volumes = radius_edge_and_volume(r.mesh)
+    regions = np.asarray(r.mesh.tet_regions)
+    assert set(np.unique(regions).tolist()) == {1.0, 2.0}
+    assert volumes[regions == 1.0].max() <= 0.01 and volumes[regions == 2.0].max() <= 0.1
+    assert volumes[regions == 2.0].max() > 0.01  # region 2 was not refined to region 1's bound
+    assert check_gabriel(r.mesh).ok
+
+
+@needs_tetgen
+@pytest.mark.skipif(not SHARED3D.is_dir(), reason="needs ../shared/data/3d (the shared corpus)")
+def test_corpus_sphere_meets_the_radius_edge_bound():
+    r = refine_quality3d(load_plc(SHARED3D / "sphere.off"), radius_edge=1.5)
+    assert r.status == "converged"
+    ratios, _ = radius_edge_and_volume(r.mesh)
+    assert ratios.max() <= 1.5
+    assert check_gabriel(r.mesh).ok and interior_points_in_closed_spheres(r.mesh) == 0
+
+
+def test_budget_and_unrepaired_boundary_are_statuses():
+    r = refine_quality3d(cube_plc(), max_volume=0.001, max_points=0, start="boundary")
+    assert r.status == "budget_exhausted" and r.stats["interior_points"] == 0 and r.report.ok
+    schonhardt = load_plc(DATA3D / "schonhardt.off")
+    r = refine_quality3d(schonhardt, radius_edge=2.0, max_steiner=5, protected_fallback=False)
+    assert r.status == "budget_exhausted" and r.stats["rounds"] == 0
+
+
+@pytest.mark.parametrize("bounds", [{"radius_edge": 1.0}, {"radius_edge": float("nan")}, {"max_volume": 0},
+                                    {"max_volume": {1: -1.0}}, {"max_points": -1}, {"radius_edge": True}])
+def test_bad_bounds_are_refused(bounds):
+    with pytest.raises(InvalidInputError):
+        refine_quality3d(cube_plc(), **bounds)
+
+
+@needs_tetgen
+def test_refine3d_cli_writes_a_quality_mesh(tmp_path, capsys):
+    cube = write_off(tmp_path / "cube.off", CUBE_POINTS, CUBE_TRIANGLES.tolist())
+    out = tmp_path / "q.json"
+    assert main(["refine3d", str(cube), "-o", str(out), "--radius-edge", "2", "--max-volume", "0.02",
+                 "--json"]) == EXIT_OK
+    summary = json.loads(capsys.readouterr().out)
+    mesh = read_tetmesh_json(out)
+    ratios, volumes = radius_edge_and_volume(mesh)
+    assert summary["status"] == "converged" and summary["tets"] == len(mesh.tets)
+    assert ratios.max() <= 2.0 and volumes.max() <= 0.02 and check_gabriel(mesh).ok
+    assert main(["refine3d", str(cube), "-o", str(tmp_path / "b.json"), "--max-volume", "1",
+                 "--region-max-volume", "1=0.1"]) == EXIT_INVALID
+
+
+def test_refine3d_cli_without_tetgen_start(tmp_path, capsys):
+    cube = write_off(tmp_path / "cube.off", CUBE_POINTS, CUBE_TRIANGLES.tolist())
+    out = tmp_path / "b.json"
+    assert main(["refine3d", str(cube), "-o", str(out), "--region-max-volume", "1=0.05", "--quality-start",
+                 "boundary", "--json"]) == EXIT_OK
+    summary = json.loads(capsys.readouterr().out)
+    _, volumes = radius_edge_and_volume(read_tetmesh_json(out))
+    assert summary["start"] == "boundary" and "tetgen" not in summary and volumes.max() <= 0.05
+
+
+@needs_tetgen
+def test_bench_quality3d_writes_both_rows(tmp_path):
+    from experiments.bench_quality3d import COLUMNS
+    from experiments.bench_quality3d import main as bench
+
+    cube = write_off(tmp_path / "cube.off", CUBE_POINTS, CUBE_TRIANGLES.tolist())
+    assert bench([str(cube), "--out", str(tmp_path), "--volume-fraction", "0.05"]) == 0
+    lines = (tmp_path / "bench_quality3d.csv").read_text().splitlines()
+    assert lines[0].split(",") == COLUMNS
+    rows = [dict(zip(COLUMNS, line.split(","))) for line in lines[1:]]
+    assert [r["method"] for r in rows] == ["tetgen", "ours"]
+    ours = rows[1]
+    assert ours["status"] == "converged" and ours["encroached_facets"] == ours["encroached_segments"] == "0"
+    assert float(ours["worst_radius_edge"]) <= 2.0 and float(ours["max_volume"]) <= 0.05
