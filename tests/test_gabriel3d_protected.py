@@ -84,3 +84,34 @@ def test_schonhardt_with_orientation_fixed_reports_both_attempts():
     if res.status != "converged":
         assert res.stats["strategy"] == "shells"
         assert res.stats["other_attempt"].startswith("protected: ")
+
+
+CORPUS = Path(__file__).resolve().parent / "data" / "3d"
+
+
+def test_generated_schonhardt_converges_through_the_fallback():
+    # The generated Schönhardt prism (twisted 30 degrees): shells alone run down to min_length at its
+    # segment-facet angles; the protected rerun converges with a few dozen points.
+    plc = load_plc(CORPUS / "schonhardt.off")
+    res = refine_gabriel(plc, time_limit=30)
+    assert_certified(res, plc)
+    assert res.stats["strategy"] == "shells+protected"
+    assert res.stats["other_attempt"].startswith("shells: min_length_reached")
+
+
+def closest_pair(points: np.ndarray) -> float:
+    from scipy.spatial import cKDTree
+
+    d, _ = cKDTree(points).query(points, k=2)
+    return float(d[:, 1].min())
+
+
+@pytest.mark.slow
+def test_gyroid_converges_past_cospherical_circumcenters():
+    # Marching cubes of a gyroid: the repair of the Delaunay mesh meets the second face of a cospherical
+    # pair whose circumcenter (already inserted) is 2e-16 from it. That circumcenter is refused instead of
+    # ending the run at min_length; the mesh converges and keeps no edge of rounding length.
+    plc = load_plc(CORPUS / "mc_gyroid.off")
+    res = refine_gabriel(plc, split="protected", time_limit=120)
+    assert_certified(res, plc)
+    assert closest_pair(res.mesh.points) >= res.stats["min_length"]

@@ -2,7 +2,9 @@
 // protected strategy of the Gabriel refinement. Sizes are floating point (a construction); every decision that
 // uses a ball is an exact comparison of squared distances on the stored coordinates.
 #pragma once
+#include <functional>
 #include <optional>
+#include <set>
 #include <vector>
 
 #include "gabriel3d_plc.h"
@@ -50,5 +52,23 @@ class Protection {
 // The point of the ball's sphere on the ray from the apex through p (p != apex), rounded to doubles: on the sphere
 // and in the plane of apex and p up to rounding. nullopt when p is the apex.
 std::optional<P3> onto_sphere(const P3& apex, double radius, const P3& p);
+
+// The power of two that cuts a piece of this size most evenly (the two parts within a 1:2 ratio): the shells
+// rule's distance from an input vertex, and the angular shells' first arc piece.
+double power_of_two_piece(double size);
+
+// Concentric shells at each ball: for every input segment through an apex, calls place(from, to, t) to split the
+// subsegment (from, to) at from + t (to - from) where the segment leaves the ball (distance r from the apex; both
+// ends of a segment can be apices, r_a + r_b <= |ab| / 2). place returns the new point, or -1 when it placed none.
+// Stops visiting once keep_going() is false. Cost: O(s) calls for s input segments.
+void split_segments_on_spheres(const PlcState& s, const std::vector<ProtectingBall>& balls,
+                               const std::function<int(int from, int to, double t)>& place,
+                               const std::function<bool()>& keep_going);
+
+// The protected strategy's split point for a point c strictly inside `ball` (apex on `facet`): on the ball's sphere
+// (see the termination argument at the definition). segment_sphere_points: the points where segments leave balls
+// (split_segments_on_spheres); arc_points: those placed on spheres by this rule before. nullopt when c is the apex.
+std::optional<P3> arc_split_point(const PlcState& s, const Facet& facet, const ProtectingBall& ball, const P3& c,
+                                  const std::set<int>& segment_sphere_points, const std::set<int>& arc_points);
 
 }  // namespace nonobtuse::gabriel3d

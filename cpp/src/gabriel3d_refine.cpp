@@ -44,7 +44,7 @@ class Refiner {
           acute_[v] = CGAL::angle(s.points[ends[v][i]], s.points[v], s.points[ends[v][j]]) == CGAL::ACUTE;
   }
 
-  // Splits every input segment through a protected apex where it leaves the apex's ball (see split_subfacet).
+  // Splits every input segment through a protected apex where it leaves the apex's ball.
   std::optional<Stop> place_protecting_points();
   // Runs to convergence of the subfacets and subsegments, or to a stop.
   std::optional<Stop> run();
@@ -88,9 +88,8 @@ class Refiner {
   // Splits subfacet f (a face of facet f.facet's triangulation, or only a triangle on it when !require_face).
   std::optional<Stop> split_subfacet(const SubfacetRef& f, bool require_face, bool* inserted);
   std::optional<Stop> too_short(const P3& p, const P3& q) const;
-  // Where a split point c strictly inside the protecting ball of an apex on facet f goes (see split_subfacet).
-  std::optional<P3> arc_split_point(const Facet& facet, const ProtectingBall& ball, const P3& c) const;
-  std::optional<Stop> too_close(const P3& p) const;
+  // A stop when p is closer than min_length to a point; *near (when given) is set to that point.
+  std::optional<Stop> too_close(const P3& p, int* near = nullptr) const;
   void inserted(int m);
 
   PlcState& s_;
@@ -146,12 +145,14 @@ std::optional<Stop> Refiner::too_short(const P3& p, const P3& q) const {
   return std::nullopt;
 }
 
-std::optional<Stop> Refiner::too_close(const P3& p) const {
+std::optional<Stop> Refiner::too_close(const P3& p, int* near) const {
   if (o_.min_length <= 0) return std::nullopt;
   SearchBall ball{{p.x(), p.y(), p.z()}, o_.min_length, false};
   std::optional<Stop> stop;
   index_.for_each_in(ball, [&](int i) {
-    if (!stop) stop = too_short(p, s_.points[i]);
+    if (stop) return;
+    stop = too_short(p, s_.points[i]);
+    if (stop && near) *near = i;
   });
   return stop;
 }
@@ -179,14 +180,6 @@ P3 interpolate(const P3& a, const P3& b, double t) {
 // cos(angle(d1, d2)) > 1: never). So the ping-pong of midpoint splitting down two segments meeting at a small
 // angle stops once the subsegments at e reach a common shell. Small segment-facet and dihedral angles have no
 // known terminating rule: the budgets end those runs.
-// The power of two that cuts a piece of this size most evenly (the two parts within a 1:2 ratio).
-double power_of_two_piece(double size) {
-  double piece = 1.0;
-  while (size > 3.0 * piece) piece *= 2.0;
-  while (size < 1.5 * piece) piece *= 0.5;
-  return piece;
-}
-
 double shell_cutting_evenly(const P3& pa, const P3& pb, bool a_input, bool b_input) {
   if (a_input == b_input) return 0.5;
   double length = std::sqrt(CGAL::to_double(CGAL::squared_distance(pa, pb)));
@@ -299,62 +292,6 @@ std::optional<Key> first_crossed_subsegment(const Facet& facet, const Q2& g, con
   return best;
 }
 
-// The protected strategy's split rule: a split point c strictly inside the protecting ball B (radius r) of an apex e
-// on this facet is moved to B's sphere. When the fan subfacet (e, p, q) of the facet whose angle at e holds c has
-// both p and q on the sphere, the point goes on the arc from p to q at angle a from one end ("angular shells"): from
-// p when only p is where a segment leaves B, a the power of two (radians) that cuts the arc's angle phi most evenly;
-// from q likewise; else a = phi / 2. Otherwise (an edge from e to a point outside B) c moves along the ray from e.
-// Termination argument. Inside B lie only e, the point x_s where each segment s through e leaves B
-// (place_protecting_points) and these arc points, all on the sphere (to rounding), since the radius (lfs(e) / 4)
-// keeps every feature that misses e out of B and no other rule inserts inside B. (1) A protected subsegment [e, x_s]
-// is never encroached: its diametral ball lies in B and meets the sphere only at x_s, and a point y with
-// |y - e| = r is strictly inside it iff cos angle(y - e, x_s - e) > 1 (the concentric-shells argument): never.
-// (2) A fan subfacet (e, p, q) with p, q on the sphere at angle phi < 120 degrees has its diametral sphere centred
-// in the facet on the bisector b at r / (2 cos(phi / 2)) < r from e: a point y of the sphere encroaches it iff
-// angle(y - e, b) < phi / 2, a point at distance d > r from e only if d < r / cos(phi / 2). Its circumcenter is in B,
-// so it is split on its arc. A sphere point y at angular distance eta > 0 from the arc stops encroaching once the
-// arc's pieces are below 2 eta, a point at distance d once they are below 2 acos(r / d): each encroacher causes
-// finitely many arc points. The one exception is the ping-pong of two facets F, G through a segment s at a small
-// dihedral angle: their sphere points near x_s are close in angle to each other's arcs. The angular shells end it as
-// concentric shells end it on segments: the first pieces of F's and G's arcs at x_s both end at powers of two
-// 2^k from x_s, and a point of G at angle 2^k from x_s is at angular distance > 2^(k-1) (strictly, for a dihedral
-// angle > 0: cos dist = cos 2^k cos 2^(k-1) + sin 2^k sin 2^(k-1) cos delta < cos 2^(k-1)) from the bisector of
-// F's piece [0, 2^k]: no encroachment once both pieces reach the same shell. (3) Outside the balls, a segment
-// through e and a facet through e that it leans over are at least r sin(theta) apart, and features that do not meet
-// are lfs apart: a subsegment or subfacet there encroached by a point of such a feature has a diametral radius at
-// least that gap, so these splits are bounded by a positive size and the cascade down a segment-facet angle, which
-// concentric shells alone run to the floating-point resolution, cannot start. Not covered: chains outside the
-// balls through facets meeting along a segment at a small dihedral angle (collars around segments would be needed);
-// there the shells rule and the budgets end the run, and the exact check of the result decides the status.
-std::optional<P3> Refiner::arc_split_point(const Facet& facet, const ProtectingBall& ball, const P3& c) const {
-  const P3& e = s_.points[ball.apex];
-  const auto ve = facet.vertex.at(ball.apex);
-  const Q2 qc = facet.project(c), &qe = ve->point();
-  auto on_sphere = [&](int v) { return segment_sphere_points_.count(v) || arc_points_.count(v); };
-  auto fc = facet.cdt.incident_faces(ve), done = fc;
-  do {
-    if (facet.cdt.is_infinite(fc) || !fc->info().in_domain) continue;
-    const int i = fc->index(ve);
-    const auto vp = fc->vertex(FacetCDT::ccw(i)), vq = fc->vertex(FacetCDT::cw(i));  // (e, p, q) counter-clockwise
-    if (CGAL::orientation(qe, vp->point(), qc) == CGAL::RIGHT_TURN ||
-        CGAL::orientation(qe, vq->point(), qc) == CGAL::LEFT_TURN)
-      continue;  // c's direction is not in this subfacet's angle at e
-    int p = vp->info(), q = vq->info();
-    if (!on_sphere(p) || !on_sphere(q)) break;
-    if (!segment_sphere_points_.count(p) && segment_sphere_points_.count(q)) std::swap(p, q);
-    const K::Vector_3 wp = s_.points[p] - e, wq = s_.points[q] - e;
-    const double lp = std::sqrt(CGAL::to_double(wp.squared_length()));
-    const K::Vector_3 w = wp / lp;
-    const K::Vector_3 across = wq - w * CGAL::to_double(wq * w);  // the part of q - e orthogonal to w
-    const double la = std::sqrt(CGAL::to_double(across.squared_length()));
-    const double phi = std::atan2(la, CGAL::to_double(wq * w));
-    const bool dyadic = segment_sphere_points_.count(p) && !segment_sphere_points_.count(q);
-    const double a = dyadic ? power_of_two_piece(phi) : 0.5 * phi;
-    return e + (w * std::cos(a) + across * (std::sin(a) / la)) * ball.radius;
-  } while (++fc != done);
-  return onto_sphere(e, ball.radius, c);
-}
-
 // Splits subfacet f at its circumcenter, or splits the subsegments that point encroaches or lies beyond.
 std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_face, bool* inserted_point) {
   Facet& facet = *s_.facets[r.facet];
@@ -369,7 +306,7 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
   P3 center = *rounded;
   const ProtectingBall* ball = protection_ ? protection_->strictly_containing(center) : nullptr;
   if (ball && facet.vertex.count(ball->apex)) {
-    const std::optional<P3> on_sphere = arc_split_point(facet, *ball, center);
+    const std::optional<P3> on_sphere = arc_split_point(s_, facet, *ball, center, segment_sphere_points_, arc_points_);
     if (!on_sphere) return std::nullopt;  // the circumcenter is the apex itself: refused
     center = *on_sphere;
   } else {
@@ -403,7 +340,21 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
   }
   if (!inside || s_.at.count({center.x(), center.y(), center.z()})) return std::nullopt;  // refused; see run()
   if (auto stop = budget_left()) return stop;
-  if (auto stop = too_close(center)) return stop;
+  int near = -1;
+  if (auto stop = too_close(center, &near)) {
+    // A vertex of this facet closer than min_length to the circumcenter and strictly inside the subfacet's
+    // circumcircle in the facet's frame (exact): the subfacet is no Delaunay face of the facet, only the rounding
+    // of the frame and of Steiner points kept it a face of the 3D Delaunay mesh (repair() meets it: the second
+    // face of a cospherical pair whose circumcenter was inserted in an earlier round; measured on mc_two_spheres
+    // and mc_gyroid, the vertex sat 2e-16 from the circumcenter of a subfacet of circumradius 4e-3). That is no
+    // cascade toward a small feature: the circumcenter is refused (an edge of rounding length otherwise) and the
+    // stall handling of refine_with takes over. Any other point that close is a min_length stop.
+    const auto it = facet.vertex.find(near);
+    if (it != facet.vertex.end() && CGAL::side_of_bounded_circle(va->point(), vb->point(), vc->point(),
+                                                                 it->second->point()) == CGAL::ON_BOUNDED_SIDE)
+      return std::nullopt;
+    return stop;
+  }
   int id = insert_in_facet(s_, r.facet, center, lt, loc, li);
   if (ball) arc_points_.insert(id);
   ++steiner_on_facets;
@@ -412,14 +363,10 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
   return std::nullopt;
 }
 
-// Concentric shells at the apex's ball: the split point of each input segment through the apex at distance r from
-// it. Both ends of a segment can be apices (r_a + r_b <= |ab| / 2). Each point is the interpolation a + t (b - a)
-// rounded to doubles, like every subsegment split; the exact predicates then decide on the rounded coordinates.
+// Splits every input segment through a protected apex where it leaves the apex's ball
+// (split_segments_on_spheres), as subsegment splits counted on segments.
 std::optional<Stop> Refiner::place_protecting_points() {
-  std::vector<double> radius(s_.n_input, 0.0);
-  for (const auto& ball : protection_->balls()) radius[ball.apex] = ball.radius;
   std::optional<Stop> stop;
-  // Splits subsegment (from, to) at parameter t; returns the new point, or -1 (a stop, or rounding onto a vertex).
   auto place = [&](int from, int to, double t) {
     const P3 m = interpolate(s_.points[from], s_.points[to], t);
     if (!stop) stop = budget_left();
@@ -432,16 +379,7 @@ std::optional<Stop> Refiner::place_protecting_points() {
     inserted(id);
     return id;
   };
-  auto length = [&](int a, int b) {
-    return std::sqrt(CGAL::to_double(CGAL::squared_distance(s_.points[a], s_.points[b])));
-  };
-  for (std::size_t g = 0; g < s_.segments.size() && !stop; ++g) {
-    int a = s_.segments[g].a;
-    const int b = s_.segments[g].b;  // before any split, the input segment is one subsegment
-    if (radius[a] > 0)
-      if (int id = place(a, b, radius[a] / length(a, b)); id >= 0) a = id;
-    if (radius[b] > 0 && !stop) place(a, b, 1.0 - radius[b] / length(a, b));
-  }
+  split_segments_on_spheres(s_, protection_->balls(), place, [&] { return !stop; });
   return stop;
 }
 

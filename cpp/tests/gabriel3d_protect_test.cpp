@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
+#include <vector>
 
 #include "gabriel3d_protect.h"
 
@@ -47,6 +49,35 @@ TEST(Gabriel3DProtect, RadiusIsAPowerOfTwoAtMostAQuarterOfTheFeatureSize) {
   EXPECT_EQ(protecting_radius(0.9), 0.125);  // 0.225 -> 0.125
   EXPECT_EQ(protecting_radius(0.5), 0.125);
   EXPECT_EQ(protecting_radius(3.0), 0.5);  // 0.75 -> 0.5
+}
+
+TEST(Gabriel3DProtect, PowerOfTwoPieceCutsWithinOneToTwo) {
+  EXPECT_EQ(power_of_two_piece(1.0), 0.5);   // 1 < 1.5: 0.5 and 0.5
+  EXPECT_EQ(power_of_two_piece(2.0), 1.0);   // 1 and 1
+  EXPECT_EQ(power_of_two_piece(3.5), 2.0);   // 2 and 1.5
+  EXPECT_EQ(power_of_two_piece(0.7), 0.25);  // 0.25 and 0.45 (0.5 would leave 0.2)
+}
+
+TEST(Gabriel3DProtect, SegmentsThroughAnApexAreSplitWhereTheyLeaveItsBall) {
+  // Two segments of length 0.5 from the foot (ball radius 0.125, as below): each is split once, at t = 0.125 / 0.5
+  // from the foot (exactly 1/4 when the foot is the segment's first end, 3/4 when its second); the box edges, whose
+  // ends are no apices, never.
+  PLC3 plc = box_with_segments(5.0, {0.0, kPi / 2});
+  PlcState s = build_plc_state(plc);
+  const auto balls = protecting_balls(s, plc);
+  ASSERT_EQ(balls.size(), 1u);
+  std::vector<std::tuple<int, int, double>> calls;
+  split_segments_on_spheres(s, balls, [&](int from, int to, double t) { calls.emplace_back(from, to, t); return -1; },
+                            [] { return true; });
+  ASSERT_EQ(calls.size(), 2u);
+  for (const auto& [from, to, t] : calls) {
+    ASSERT_TRUE(from == 8 || to == 8);
+    EXPECT_NEAR(from == 8 ? t : 1.0 - t, 0.25, 1e-15);
+  }
+  calls.clear();
+  split_segments_on_spheres(s, balls, [&](int from, int to, double t) { calls.emplace_back(from, to, t); return -1; },
+                            [] { return false; });
+  EXPECT_TRUE(calls.empty());
 }
 
 TEST(Gabriel3DProtect, OneBallAtTheFootSizedByTheNearestFeature) {

@@ -143,7 +143,7 @@ struct Refine3DResult {
 // max_steiner and the rest of time_limit; its result is returned if it converged, else the first pass's
 // (strategy and other_attempt say which). Protecting balls keep the split points of a
 // segment and a facet meeting at a small angle off the apex, which ends the cascade there (the termination argument
-// and what it does not cover are at the split rule in gabriel3d_refine.cpp).
+// and what it does not cover are at arc_split_point in gabriel3d_protect.cpp).
 // Deterministic. Throws InvalidInput on malformed input (index out of range, duplicate points, degenerate
 // triangles, facet edges crossing or passing through a vertex, facet vertices coinciding in the facet's plane).
 Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& options);
