@@ -159,13 +159,14 @@ domains = st.one_of(star_domain(), thin_layers()).flatmap(placed)
 
 
 def check_refine_2d(domain: Domain, strategy: str) -> str:
-    """Validate and refine ``domain``; returns ``"invalid"`` or the status. Raises AssertionError when the run
-    ends otherwise than with a status, or a converged mesh fails the exact re-check."""
+    """Validate and refine ``domain``; returns ``"invalid"`` (validation refuses it, or refine finds input
+    points outside the domain) or the status. Raises AssertionError when the run ends otherwise than with a
+    status, or a converged mesh fails the exact re-check."""
     try:
         d = validate_domain(domain)
+        result = nonobtuse.refine(d, strategy=strategy, max_steiner=MAX_STEINER_2D)
     except InvalidInputError:
         return "invalid"
-    result = nonobtuse.refine(d, strategy=strategy, max_steiner=MAX_STEINER_2D)
     assert result.status in STATUSES_2D, result.status
     m = result.mesh
     assert np.array_equal(m.points[: len(d.points)], d.points), "the input points moved"
