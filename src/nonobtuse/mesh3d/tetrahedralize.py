@@ -47,6 +47,8 @@ from nonobtuse.mesh3d.plc import PLC, TetMesh, region_attributes
 
 BACKENDS = ("cgal", "tetgen", "ftetwild")
 TETGEN_DEFAULT_SWITCHES = "pq1.414YAQ"
+# What the tetgen extension prints on every run (left out of the failure messages it is quoted in)
+TETGEN_CHATTER = ("parsing switches", "success")
 
 
 def positively_oriented(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
@@ -76,17 +78,21 @@ def tet_faces_once(tets: np.ndarray) -> np.ndarray:
 
 
 @contextlib.contextmanager
-def _stdout_to_stderr():
-    """Route the C-level stdout (file descriptor 1) to stderr: the tetgen extension prints progress
-    there, which would corrupt the --json output of the CLI."""
+def _captured_stdout(into: list[str]):
+    """Capture the C-level stdout (file descriptor 1) into ``into`` (its lines): the tetgen extension prints
+    there ("parsing switches", "success", and its reasons when it fails), which would corrupt the --json
+    output of the CLI and clutter its text."""
     sys.stdout.flush()
     saved = os.dup(1)
-    try:
-        os.dup2(2, 1)
-        yield
-    finally:
-        os.dup2(saved, 1)
-        os.close(saved)
+    with tempfile.TemporaryFile() as sink:
+        try:
+            os.dup2(sink.fileno(), 1)
+            yield
+        finally:
+            os.dup2(saved, 1)
+            os.close(saved)
+            sink.seek(0)
+            into.extend(sink.read().decode(errors="replace").splitlines())
 
 
 @contextlib.contextmanager
@@ -163,11 +169,14 @@ def _tetgen(plc: PLC, options: dict[str, Any]) -> TetMesh:
         tg.add_hole(h)
     for r in plc.regions:
         tg.add_region(int(r[3]), r[:3])
+    printed: list[str] = []
     try:
-        with _stdout_to_stderr():
+        with _captured_stdout(printed):
             node, elem, attr, markers = tg.tetrahedralize(switches=switches)
     except RuntimeError as e:
-        raise InvalidInputError(f"TetGen failed on {plc.source} with switches {switches!r}: {e}") from None
+        said = [line.strip() for line in printed if line.strip() and line.strip() not in TETGEN_CHATTER]
+        raise InvalidInputError(f"TetGen failed on {plc.source} with switches {switches!r}: {e}"
+                                + (f" (TetGen said: {' '.join(said[-5:])})" if said else "")) from None
     n = len(plc.points)
     if len(node) < n or not np.array_equal(node[:n], plc.points):
         raise InvalidInputError(f"TetGen merged or moved input points of {plc.source} (duplicate vertices?)")
