@@ -2,6 +2,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -89,16 +90,21 @@ void bind_refine2d(py::module_& m) {
   m.def(
       "refine",
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,
-         bool convex_hull_boundary, const std::string& strategy, long long max_steiner, int threads) {
+         bool convex_hull_boundary, const std::string& strategy, long long max_steiner, int threads,
+         const std::optional<std::shared_ptr<Triangulation2>>& triangulation) {
         Domain2 d = domain_from_arrays(points, segments, holes, regions, convex_hull_boundary);
         Refine2DOptions options{strategy_from(strategy), max_steiner, threads};
+        Triangulation2 taken =  // under the GIL: taken once
+            triangulation && *triangulation ? (*triangulation)->take() : Triangulation2();
         py::gil_scoped_release release;
-        return refine(d, options);
+        return refine(d, options, &taken);
       },
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("regions"), py::arg("convex_hull_boundary"),
       py::arg("strategy") = "greedy", py::arg("max_steiner") = -1, py::arg("threads") = 2,
+      py::arg("triangulation") = py::none(),
       "Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0:\n"
-      "default_steiner_budget(n). Returns a Refine2DResult.");
+      "default_steiner_budget(n). triangulation: inspect_domain's (DomainCoverage.triangulation), taken over\n"
+      "when it triangulates this domain, empty afterwards. Returns a Refine2DResult.");
   m.def(
       "conforming_gabriel_steiner_points",
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,

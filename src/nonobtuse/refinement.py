@@ -11,7 +11,7 @@ from typing import Any, overload
 import numpy as np
 
 from nonobtuse import _core
-from nonobtuse.domain import Domain
+from nonobtuse.domain import Domain, kept_triangulation
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh import Mesh
 from nonobtuse.triangulation import mesh_of_core
@@ -161,6 +161,7 @@ def refine(
         strategy,
         -1 if max_steiner is None else int(max_steiner),
         min(int(threads), 2),
+        kept_triangulation(domain),
     )
     stats: dict[str, Any] = {
         "status": r.status,
