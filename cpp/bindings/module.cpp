@@ -15,6 +15,7 @@ void bind_refine2d(py::module_& m);
 void bind_gabriel3d(py::module_& m);
 void bind_plc(py::module_& m);
 void bind_control_volumes3d(py::module_& m);
+void bind_numeric_rows(py::module_& m);
 }
 
 PYBIND11_MODULE(_core, m) {
@@ -37,4 +38,5 @@ PYBIND11_MODULE(_core, m) {
   nonobtuse::bindings::bind_gabriel3d(m);
   nonobtuse::bindings::bind_plc(m);
   nonobtuse::bindings::bind_control_volumes3d(m);
+  nonobtuse::bindings::bind_numeric_rows(m);
 }

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'Junction', 'Mesh2D', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'check_gabriel', 'classify_edges', 'conforming_gabriel_steiner_points', 'coupling_signs', 'default_steiner_budget', 'delaunay_restricted_to_plc', 'delaunay_tetrahedra', 'dual_area_signs', 'find_segment_intersections', 'inspect_domain', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'refine', 'refine_gabriel', 'triangulate']
+__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'Junction', 'Mesh2D', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'Triangulation2', 'check_gabriel', 'classify_edges', 'conforming_gabriel_steiner_points', 'coupling_signs', 'default_steiner_budget', 'delaunay_restricted_to_plc', 'delaunay_tetrahedra', 'dual_area_signs', 'find_segment_intersections', 'inspect_domain', 'parse_numeric_rows', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'refine', 'refine_gabriel', 'triangulate']
 class Mesh2D:
     """
     A triangulated 2D domain (read-only; each array attribute is a new array on each access).
@@ -95,6 +95,15 @@ class SegmentIntersections:
         """
         (p, s): point p strictly inside segment s
         """
+class Triangulation2:
+    """
+    Opaque: the constrained Delaunay triangulation inspect_domain built, for refine to take over (once).
+    """
+    @property
+    def empty(self) -> bool:
+        """
+        True once refine took it
+        """
 class DomainCoverage:
     """
     What a domain's constrained Delaunay triangulation covers.
@@ -123,6 +132,11 @@ class DomainCoverage:
     def segments_outside(self) -> numpy.typing.NDArray[numpy.int32]:
         """
         int32: segments with no domain triangle on either side
+        """
+    @property
+    def triangulation(self) -> Triangulation2:
+        """
+        the triangulation when kept (keep_triangulation=True and a triangle), else None
         """
 class Junction:
     """
@@ -490,10 +504,16 @@ def find_segment_intersections(points: typing.Annotated[numpy.typing.ArrayLike, 
     Exact segment intersections. points (n,2) float64 finite and pairwise distinct; segments (m,2) int64 of
     distinct points. Returns a SegmentIntersections.
     """
-def inspect_domain(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool) -> DomainCoverage:
+def inspect_domain(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool, keep_triangulation: bool = False) -> DomainCoverage:
     """
     What the domain covers (its constrained Delaunay triangulation). Inputs as for triangulate, validated
-    (no crossings, no points inside segments). Returns a DomainCoverage.
+    (no crossings, no points inside segments). Returns a DomainCoverage; with keep_triangulation its
+    triangulation is kept for refine.
+    """
+def parse_numeric_rows(text: bytes, rows: typing.SupportsInt | typing.SupportsIndex, width: typing.SupportsInt | typing.SupportsIndex, integer_columns: collections.abc.Sequence[typing.SupportsInt | typing.SupportsIndex]) -> numpy.typing.NDArray[numpy.float64] | None:
+    """
+    ASCII text of `rows` lines of exactly `width` plain decimal numbers as a (rows, width) float64 array
+    (integer_columns: integer literals, |x| <= 2^53), or None for anything else (numeric_rows.h).
     """
 def plc_collinear(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triples: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> numpy.typing.NDArray[numpy.int8]:
     """
@@ -508,10 +528,11 @@ def plc_self_intersections(points: typing.Annotated[numpy.typing.ArrayLike, nump
     Pairs (k, 2) int64 (i < j) of triangles intersecting beyond shared vertices/edges (exact);
     triangles must be non-degenerate and distinct. At most max_pairs rows.
     """
-def refine(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool, strategy: str = 'greedy', max_steiner: typing.SupportsInt | typing.SupportsIndex = -1, threads: typing.SupportsInt | typing.SupportsIndex = 2) -> Refine2DResult:
+def refine(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool, strategy: str = 'greedy', max_steiner: typing.SupportsInt | typing.SupportsIndex = -1, threads: typing.SupportsInt | typing.SupportsIndex = 2, triangulation: Triangulation2 | None = None) -> Refine2DResult:
     """
     Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0:
-    default_steiner_budget(n). Returns a Refine2DResult.
+    default_steiner_budget(n). triangulation: inspect_domain's (DomainCoverage.triangulation), taken over
+    when it triangulates this domain, empty afterwards. Returns a Refine2DResult.
     """
 def refine_gabriel(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], facet_ids: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_steiner: typing.SupportsInt | typing.SupportsIndex, min_length: typing.SupportsFloat | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex, split: str, protected_fallback: bool, progress_every: typing.SupportsInt | typing.SupportsIndex, progress: collections.abc.Callable[[int, int, int, float], None] | None) -> Refine3DResult:
     """
