@@ -26,7 +26,7 @@ from nonobtuse.io import surfaces, tetgen
 from nonobtuse.io.raw3d import Facet, RawInput
 from nonobtuse.mesh3d.gabriel import power_of_two_exponent
 from nonobtuse.mesh3d.plc import PLC
-from nonobtuse.mesh3d.validate3d import edge_faces, manifold_face_pairs, validate_plc
+from nonobtuse.mesh3d.validate3d import edge_faces, manifold_face_pairs, unique_rows, validate_plc
 
 SURFACE_SUFFIXES = surfaces.SUFFIXES
 PLC_SUFFIXES = tetgen.SUFFIXES
@@ -165,7 +165,7 @@ def build_plc(raw: RawInput, *, surface: bool) -> PLC:
         plc = merge_coplanar_facets(plc)
     segs = facet_boundary_segments(plc.triangles, plc.facet_ids)
     if len(dangling):
-        segs = np.unique(np.concatenate([segs, np.sort(dangling, axis=1)]), axis=0)
+        segs = unique_rows(np.concatenate([segs, np.sort(dangling, axis=1)]))
     return replace(plc, segments=segs)
 
 
