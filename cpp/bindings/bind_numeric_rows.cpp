@@ -33,7 +33,7 @@ void bind_numeric_rows(py::module_& m) {
       },
       py::arg("text"), py::arg("rows"), py::arg("width"), py::arg("integer_columns"),
       "ASCII text of `rows` lines of exactly `width` plain decimal numbers as a (rows, width) float64 array\n"
-      "(integer_columns: integer literals, |x| <= 2^53), or None for anything else (numeric_rows.h).");
+      "(integer_columns: integer literals, |x| < 2^53), or None for anything else (numeric_rows.h).");
 }
 
 }  // namespace nonobtuse::bindings

@@ -7,7 +7,9 @@
 namespace nonobtuse {
 namespace {
 
-constexpr double kExactInteger = 9007199254740992.0;  // 2^53
+// 2^53: a literal below it rounds to itself; one at or above it may not (2^53 + 1 rounds to 2^53), and rounding is
+// monotonic, so a value below 2^53 came from exactly that integer.
+constexpr double kExactInteger = 9007199254740992.0;
 
 bool is_space(char c) { return c == ' ' || c == '\t'; }
 
@@ -53,7 +55,7 @@ std::optional<std::vector<double>> parse_numeric_rows(std::string_view text, std
       double x;
       bool integer;
       if (column == width || !parse_token(q, t, x, integer)) return std::nullopt;
-      if (integral[column] && (!integer || std::abs(x) > kExactInteger)) return std::nullopt;
+      if (integral[column] && (!integer || std::abs(x) >= kExactInteger)) return std::nullopt;
       values.push_back(x);
       ++column;
       q = t;

@@ -513,7 +513,7 @@ def inspect_domain(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float6
 def parse_numeric_rows(text: bytes, rows: typing.SupportsInt | typing.SupportsIndex, width: typing.SupportsInt | typing.SupportsIndex, integer_columns: collections.abc.Sequence[typing.SupportsInt | typing.SupportsIndex]) -> numpy.typing.NDArray[numpy.float64] | None:
     """
     ASCII text of `rows` lines of exactly `width` plain decimal numbers as a (rows, width) float64 array
-    (integer_columns: integer literals, |x| <= 2^53), or None for anything else (numeric_rows.h).
+    (integer_columns: integer literals, |x| < 2^53), or None for anything else (numeric_rows.h).
     """
 def plc_collinear(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triples: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> numpy.typing.NDArray[numpy.int8]:
     """

@@ -11,7 +11,7 @@ namespace nonobtuse {
 
 // The values, row after row, when `text` is `rows` lines (separated by '\n') each holding exactly `width`
 // whitespace-separated (' ', '\t') plain decimal numbers, and every token of the columns `integer_columns` is an
-// integer literal (no '.', 'e' or 'E') of magnitude at most 2^53 (exact in a double). A number is an optional sign,
+// integer literal (no '.', 'e' or 'E') of magnitude below 2^53 (so read exactly). A number is an optional sign,
 // digits with at most one '.', and an optional exponent; it is rounded correctly (std::from_chars), as Python's
 // float() rounds it. nullopt for anything else (a comment, a blank or ragged row, any other character, nan, inf,
 // a token that is not one whole number), for the caller's line reader to accept or to name.

@@ -139,7 +139,7 @@ _CHUNK_ROWS = 1 << 16
 def numeric_rows(rows: list[str], width: int, integers: tuple[int, ...] = ()) -> np.ndarray | None:
     """``rows`` as an (len(rows), width) float64 array when every row holds exactly ``width`` whitespace
     separated plain decimal numbers (``float()`` gives the same values: both round correctly) and the columns
-    ``integers`` hold integer literals (no ``.``/``e``) of magnitude <= 2**53 (so exact in float64); None for
+    ``integers`` hold integer literals (no ``.``/``e``) of magnitude < 2**53 (so read exactly); None for
     anything else (comments, blank rows, nan/inf, underscores, non-ASCII, ragged rows, a number that does not
     parse or overflows), for the caller's line-by-line reader to accept or name. Parsed in C++
     (:func:`nonobtuse._core.parse_numeric_rows`, ``cpp/include/nonobtuse/numeric_rows.h``). Cost: one pass
