@@ -5,8 +5,9 @@ Inputs: a disk of ``h = min(4000, n / 2)`` boundary vertices (a closed loop, 1-b
 marker columns) with ``n - h`` random interior points, coordinates random float64 in shortest round-trip form,
 at n = 1e4, 1e5, 1e6 (seed 0), written once to ``OUT/cache/``.
 
-- ours: :func:`nonobtuse.io.triangle.read_poly`, the validation of :func:`nonobtuse.io.load_domain`,
-  :func:`nonobtuse.refine.refine` (greedy), :func:`nonobtuse.io.write_mesh` to .vtu and to .json.
+- ours: :func:`nonobtuse.io.triangle.read_poly`, the validation of :func:`nonobtuse.io.load_domain`
+  (:func:`nonobtuse.validate.validate_domain`, which marks the domain validated), :func:`nonobtuse.refine`
+  (greedy), :func:`nonobtuse.io.write_mesh` to .vtu and to .json.
 - Triangle: the reader a user would write (``triangle.load``), ``triangle.triangulate(..., "pDQ")``, meshio
   for the .vtu (its defaults), ``json.dump`` of the arrays' ``tolist()`` for the .json.
 
@@ -63,15 +64,14 @@ def write_disk_poly(path: Path, n: int, seed: int = 0) -> None:
 
 
 def run_ours(path: Path, out: Path) -> dict[str, float]:
-    from nonobtuse.refine import refine
-
     from nonobtuse.io import triangle, write_mesh
-    from nonobtuse.validate import check_coverage, validate_graph
+    from nonobtuse.refinement import refine
+    from nonobtuse.validate import validate_domain
 
     clock = _Clock()
     domain = triangle.read_poly(path)
     clock.lap("read")
-    domain = check_coverage(validate_graph(domain), require_closed=True, decide_convex_hull=True)
+    domain = validate_domain(domain, decide_convex_hull=True)  # as load_domain: refine takes it as it is
     clock.lap("validate")
     mesh = refine(domain).mesh
     clock.lap("refine")

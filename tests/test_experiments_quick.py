@@ -176,3 +176,23 @@ def test_steiner_study_2d_quick_writes_csv_and_png(tmp_path):
     assert list(read_csv(tmp_path / "steiner_scaling_exponents_quick.csv")[0]) == study.EXPONENT_COLUMNS
     for png in ("steiner_study_2d_quick.png", "steiner_scaling_quick.png"):
         assert (tmp_path / png).stat().st_size > 0
+
+
+def test_bench_scaling_families_are_valid_and_a_tiny_run_writes_its_outputs(tmp_path):
+    pytest.importorskip("triangle")
+    from experiments import bench_scaling
+
+    from nonobtuse.validate import validate_domain
+
+    for family in bench_scaling.FAMILIES:
+        d = validate_domain(bench_scaling.domain_of(family, 400, seed=1), decide_convex_hull=False)
+        assert 300 <= len(d.points) <= 400 and d.repairs == []
+    assert bench_scaling.main(["--quick", "--out", str(tmp_path), "--sizes", "300,600",
+                               "--families", "star,point_set", "--workers", "2"]) == 0
+    rows = read_csv(tmp_path / "bench_scaling_quick.csv")
+    assert list(rows[0]) == bench_scaling.COLUMNS and len(rows) == 8
+    assert all(r["status"] == "ok" and float(r["seconds"]) > 0 and float(r["peak_mb"]) > 0 for r in rows)
+    fits = read_csv(tmp_path / "bench_scaling_exponents_quick.csv")
+    assert {(f["family"], f["tool"]) for f in fits} == {(f, t) for f in ("star", "point_set")
+                                                        for t in bench_scaling.TOOLS}
+    assert (tmp_path / "bench_scaling_quick.png").stat().st_size > 0

@@ -237,3 +237,34 @@ def test_manifold_smesh_is_oriented_outward(tmp_path):
     (tmp_path / "t.smesh").write_text("4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n"
                                       "4 0\n3 0 1 2\n3 0 1 3\n3 0 3 2\n3 3 2 1\n0\n0\n")
     assert load_plc(tmp_path / "t.smesh").triangles.tolist() == [[2, 1, 0], [0, 1, 3], [0, 3, 2], [1, 2, 3]]
+
+
+@pytest.mark.parametrize("case", ["cube", "bad index", "negative index", "nan"])
+def test_triangle_surfaces_take_the_vectorised_path_with_the_same_result(monkeypatch, case):
+    # A surface of one-triangle facets is triangulated without a Python step per facet: the same triangles,
+    # facet ids and segments, or the same message, as the loop over facets.
+    from mesh3d_shapes import CUBE_POINTS, CUBE_TRIANGLES
+    from nonobtuse.io.raw3d import Facet, RawInput
+    from nonobtuse.mesh3d import load
+
+    points, triangles = np.array(CUBE_POINTS, dtype=float), np.array(CUBE_TRIANGLES)
+    if case == "bad index":
+        triangles[5, 1] = 8
+    if case == "negative index":
+        triangles[7, 2] = -1
+    if case == "nan":
+        points[3, 2] = np.nan
+    facets = [Facet([t], where=f"x.off:{k + 3}") for k, t in enumerate(triangles)]
+    raw = RawInput(points, facets, source="x.off")
+
+    def result():
+        try:
+            return [a.tolist() for a in load.triangulate_facets(raw)]
+        except InvalidInputError as e:
+            return str(e)
+
+    fast = result()
+    assert case != "cube" or load._triangle_facets(raw) is not None  # the fast path was taken
+    monkeypatch.setattr(load, "_triangle_facets", lambda raw: None)
+    assert fast == result()
+    assert isinstance(fast, list) == (case == "cube")

@@ -20,7 +20,7 @@ from mesh3d_shapes import (
 )
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import PLC, load_plc, validate_plc
-from nonobtuse.mesh3d.validate3d import edge_faces
+from nonobtuse.mesh3d.validate3d import edge_faces, unique_rows
 
 
 def load_off(tmp_path, points, faces, **kw):
@@ -220,3 +220,16 @@ def test_any_orientation_of_two_cubes_sharing_an_edge_is_restored(flips):
         assert fixed.warnings[0].startswith(f"inconsistent orientation: {reversed_faces} faces")
     else:
         assert fixed.warnings == ()
+
+
+@settings(max_examples=60, deadline=2000, derandomize=True)
+@given(st.integers(1, 3), st.integers(0, 40), st.integers(1, 2**21), st.integers(0, 2**32 - 1))
+def test_unique_rows_is_numpy_unique_of_the_rows(width, k, top, seed):
+    # Small and large index ranges (the key path, and the fallback once top**width no longer fits in int64).
+    rows = np.random.default_rng(seed).integers(0, top, (k, width))
+    options = {"return_index": True, "return_inverse": True, "return_counts": True}
+    expected, got = np.unique(rows, axis=0, **options), unique_rows(rows, **options)
+    assert got[0].tolist() == expected[0].tolist() and got[0].shape == expected[0].shape
+    for a, b in zip(got[1:], expected[1:]):
+        assert a.ravel().tolist() == b.ravel().tolist()
+    assert unique_rows(rows).tolist() == np.unique(rows, axis=0).tolist()

@@ -4,7 +4,9 @@ argument. Validator runs are counted at the two exact C++ validators every valid
 
 from __future__ import annotations
 
+import copy
 import dataclasses
+import pickle
 
 import numpy as np
 import pytest
@@ -12,6 +14,7 @@ import pytest
 import nonobtuse
 from nonobtuse import Domain, _core
 from nonobtuse.cli import main
+from nonobtuse.domain import kept_triangulation
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import load_domain
 from nonobtuse.validate import check_coverage, ensure_validated, validate_domain
@@ -31,9 +34,9 @@ def validator_runs(monkeypatch):
     for name in runs:
         real = getattr(_core, name)
 
-        def counted(*args, _real=real, _name=name):
+        def counted(*args, _real=real, _name=name, **kwargs):
             runs[_name] += 1
-            return _real(*args)
+            return _real(*args, **kwargs)
 
         monkeypatch.setattr(_core, name, counted)
     return runs
@@ -138,3 +141,58 @@ def test_only_the_validator_marks_and_any_change_unmarks():
     d.holes = np.zeros((0, 2))
     assert not d.validated
     assert not validate_domain(square(), require_closed=False).validated  # a partial check does not mark
+
+
+def holed_square_with_regions() -> Domain:
+    """A square with a square hole, an interface across it and two region seeds."""
+    pts = [[0, 0], [6, 0], [6, 6], [0, 6], [2, 2], [4, 2], [4, 4], [2, 4], [3, 0], [3, 2], [1.1, 5.2]]
+    segs = [[0, 8], [8, 1], [1, 2], [2, 3], [3, 0], [4, 5], [5, 6], [6, 7], [7, 4], [8, 9]]
+    return Domain(pts, segs, holes=[[3, 3]], regions=[[1, 1, 1.0], [5, 1, 2.0]])
+
+
+KEPT_TRIANGULATION_CASES = {
+    "holed square with regions": holed_square_with_regions,
+    "point set": lambda: Domain(np.random.default_rng(3).uniform(0, 1, (200, 2)), convex_hull=True),
+    "square": square,
+}
+
+
+def refined(domain: Domain) -> tuple[dict, dict]:
+    r = nonobtuse.refine(domain)
+    arrays = {k: getattr(r.mesh, k) for k in ("points", "triangles", "segments", "regions")}
+    return arrays, {k: v for k, v in r.stats.items() if k != "seconds"}
+
+
+@pytest.mark.parametrize("case", KEPT_TRIANGULATION_CASES)
+def test_refine_takes_over_the_triangulation_of_validation(case):
+    # The validated domain carries validation's triangulation; refine takes it (it is empty afterwards) and
+    # the result equals a refine that triangulates on its own (a copy carries no triangulation).
+    domain = validate_domain(KEPT_TRIANGULATION_CASES[case]())
+    kept = kept_triangulation(domain)
+    assert kept is not None and not kept.empty
+    assert kept_triangulation(copy.deepcopy(domain)) is None and copy.deepcopy(domain).validated
+    alone = refined(copy.deepcopy(domain))
+    taken = refined(domain)
+    assert kept.empty
+    assert same(taken[0], alone[0]) and taken[1] == alone[1]
+    assert same(refined(domain)[0], alone[0])  # once taken, refine triangulates again
+
+
+def test_a_kept_triangulation_of_another_domain_is_not_used():
+    # Editing a validated domain's arrays in place is not detected by the Domain; the core compares the
+    # domain it is given with the one the kept triangulation was built of, and triangulates again.
+    domain = validate_domain(holed_square_with_regions())
+    domain.points[10] = [1.3, 5.1]  # the interior point, still inside
+    kept = kept_triangulation(domain)
+    edited = refined(domain)
+    assert kept.empty  # taken, and dropped
+    assert edited[0]["points"][10].tolist() == [1.3, 5.1]  # the kept one has the point at (1.1, 5.2)
+    assert same(edited[0], refined(validate_domain(dataclasses.replace(domain)))[0])
+
+
+def test_assigning_a_field_drops_the_kept_triangulation():
+    domain = validate_domain(square())
+    assert kept_triangulation(domain) is not None
+    domain.regions = np.zeros((0, 3))
+    assert kept_triangulation(domain) is None
+    assert kept_triangulation(pickle.loads(pickle.dumps(validate_domain(square())))) is None

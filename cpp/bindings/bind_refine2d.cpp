@@ -2,6 +2,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -91,18 +92,22 @@ void bind_refine2d(py::module_& m) {
       "refine",
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,
          bool convex_hull_boundary, const std::string& strategy, long long max_steiner, int threads,
-         const Quality2DOptions& quality) {
+         const Quality2DOptions& quality, const std::optional<std::shared_ptr<Triangulation2>>& triangulation) {
         Domain2 d = domain_from_arrays(points, segments, holes, regions, convex_hull_boundary);
         Refine2DOptions options{strategy_from(strategy), max_steiner, threads};
         options.quality = quality;
+        Triangulation2 taken =  // under the GIL: taken once
+            triangulation && *triangulation ? (*triangulation)->take() : Triangulation2();
         py::gil_scoped_release release;
-        return refine(d, options);
+        return refine(d, options, &taken);
       },
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("regions"), py::arg("convex_hull_boundary"),
       py::arg("strategy") = "greedy", py::arg("max_steiner") = -1, py::arg("threads") = 2,
-      py::arg_v("quality", Quality2DOptions{}, "Quality2DOptions()"),
+      py::arg_v("quality", Quality2DOptions{}, "Quality2DOptions()"), py::arg("triangulation") = py::none(),
       "Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0:\n"
-      "default_steiner_budget(n); quality: interior refinement (off by default). Returns a Refine2DResult.");
+      "default_steiner_budget(n); quality: interior refinement (off by default). triangulation: inspect_domain's\n"
+      "(DomainCoverage.triangulation), taken over when it triangulates this domain, empty afterwards. Returns a\n"
+      "Refine2DResult.");
   m.def(
       "conforming_gabriel_steiner_points",
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions,

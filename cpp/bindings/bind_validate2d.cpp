@@ -1,6 +1,7 @@
 // 2D domain validation: exact segment intersections and domain coverage (conversion only).
 #include <pybind11/pybind11.h>
 
+#include <memory>
 #include <string>
 
 #include "bind_mesh2d.h"
@@ -34,6 +35,10 @@ void bind_validate2d(py::module_& m) {
                " points_on_segments=" + std::to_string(r.points_on_segments.size()) +
                " overlaps=" + std::to_string(r.overlaps.size()) + ">";
       });
+  py::class_<Triangulation2, std::shared_ptr<Triangulation2>>(
+      m, "Triangulation2",
+      "Opaque: the constrained Delaunay triangulation inspect_domain built, for refine to take over (once).")
+      .def_property_readonly("empty", &Triangulation2::empty, "True once refine took it");
   py::class_<DomainCoverage>(m, "DomainCoverage", "What a domain's constrained Delaunay triangulation covers.")
       .def_readonly("encloses_area", &DomainCoverage::encloses_area,
                     "some triangle is enclosed by segments (holes ignored)")
@@ -44,6 +49,8 @@ void bind_validate2d(py::module_& m) {
                              "int8 per hole seed: 0 inside, 1 outside, 2 on a point or segment")
       .def_property_readonly("regions", [](const DomainCoverage& c) { return seed_places(c.regions); },
                              "int8 per region seed, likewise")
+      .def_readonly("triangulation", &DomainCoverage::triangulation,
+                    "the triangulation when kept (keep_triangulation=True and a triangle), else None")
       .def("__repr__", [](const DomainCoverage& c) {
         return "<DomainCoverage domain_triangles=" + std::to_string(c.domain_triangles) +
                " segments_outside=" + std::to_string(c.segments_outside.size()) + ">";
@@ -62,15 +69,16 @@ void bind_validate2d(py::module_& m) {
   m.def(
       "inspect_domain",
       [](const DoubleArray& points, const IndexArray& segments, const DoubleArray& holes,
-         const DoubleArray& regions, bool convex_hull_boundary) {
+         const DoubleArray& regions, bool convex_hull_boundary, bool keep_triangulation) {
         Domain2 dom = domain_from_arrays(points, segments, holes, regions, convex_hull_boundary);
         py::gil_scoped_release release;
-        return inspect_domain(dom);
+        return inspect_domain(dom, keep_triangulation);
       },
       py::arg("points"), py::arg("segments"), py::arg("holes"), py::arg("regions"),
-      py::arg("convex_hull_boundary"),
+      py::arg("convex_hull_boundary"), py::arg("keep_triangulation") = false,
       "What the domain covers (its constrained Delaunay triangulation). Inputs as for triangulate, validated\n"
-      "(no crossings, no points inside segments). Returns a DomainCoverage.");
+      "(no crossings, no points inside segments). Returns a DomainCoverage; with keep_triangulation its\n"
+      "triangulation is kept for refine.");
 }
 
 }  // namespace nonobtuse::bindings

@@ -17,6 +17,7 @@ void bind_gabriel3d(py::module_& m);
 void bind_plc(py::module_& m);
 void bind_control_volumes3d(py::module_& m);
 void bind_quality3d(py::module_& m);
+void bind_numeric_rows(py::module_& m);
 }
 
 PYBIND11_MODULE(_core, m) {
@@ -41,4 +42,5 @@ PYBIND11_MODULE(_core, m) {
   nonobtuse::bindings::bind_plc(m);
   nonobtuse::bindings::bind_control_volumes3d(m);
   nonobtuse::bindings::bind_quality3d(m);
+  nonobtuse::bindings::bind_numeric_rows(m);
 }

@@ -179,6 +179,17 @@ std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain) {
   return vh;
 }
 
+bool same_domain(const Domain2& a, const Domain2& b) {
+  auto same = [](const Point2& p, const Point2& q) { return p.x == q.x && p.y == q.y; };
+  auto same_region = [&](const RegionSeed& r, const RegionSeed& t) {
+    return same(r.at, t.at) && r.attribute == t.attribute;
+  };
+  return a.convex_hull_boundary == b.convex_hull_boundary && a.segments == b.segments &&
+         std::equal(a.points.begin(), a.points.end(), b.points.begin(), b.points.end(), same) &&
+         std::equal(a.holes.begin(), a.holes.end(), b.holes.begin(), b.holes.end(), same) &&
+         std::equal(a.regions.begin(), a.regions.end(), b.regions.begin(), b.regions.end(), same_region);
+}
+
 void mark_domain(CDT& cdt, const Domain2& domain) {
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = FaceInfo{};
   cdt.region_attribute.assign(1, 0.0);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "nonobtuse/types.h"
+#include "nonobtuse/validate2d.h"
 
 namespace nonobtuse::cdt {
 
@@ -35,6 +36,10 @@ using Itag = CGAL::No_constraint_intersection_requiring_constructions_tag;
 // The triangulation with the region attribute of each domain component (mark_domain).
 struct CDT : CGAL::Constrained_Delaunay_triangulation_2<K, Tds, Itag> {
   std::vector<double> region_attribute;
+  void swap(CDT& other) {  // O(1): the data structures trade places (the constraints are marks on its faces)
+    CGAL::Triangulation_2<K, Tds>::swap(other);
+    region_attribute.swap(other.region_attribute);
+  }
   double region(Face_handle f) const { return region_attribute[f->info().component]; }  // f in the domain
 };
 using Vertex_handle = CDT::Vertex_handle;
@@ -59,8 +64,17 @@ std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain);
 // inserting points.
 void mark_domain(CDT& cdt, const Domain2& domain);
 
+// The domains a and b are the same: equal coordinates, segments, seeds and flag (exact comparison). O(n).
+bool same_domain(const Domain2& a, const Domain2& b);
 // Domain triangles, every constrained subsegment bordering the domain, points indexed by vertex info. Points and
 // triangles on two threads for large triangulations unless threads is 1 (the same mesh).
 Mesh2 to_mesh(const CDT& cdt, int threads = 2);
 
 }  // namespace nonobtuse::cdt
+
+namespace nonobtuse {
+struct Triangulation2::Built {
+  Domain2 domain;
+  cdt::CDT cdt;  // cdt::build(cdt, domain), marked by cdt::mark_domain(cdt, domain)
+};
+}  // namespace nonobtuse

@@ -49,10 +49,10 @@ const char* to_string(RefineStrategy s) {
   return "?";
 }
 
-Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options) {
+Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options, Triangulation2* triangulation) {
   auto start = std::chrono::steady_clock::now();
   long long budget = options.max_steiner < 0 ? default_steiner_budget(domain.points.size()) : options.max_steiner;
-  State st(domain, budget);
+  State st(domain, budget, triangulation);
   st.set_check_every_split(options.check_every_split || State::kCheckEverySplit);
 
   refine2d::lower_bound_per_edge(st, options.threads);

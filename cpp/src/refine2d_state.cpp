@@ -40,8 +40,13 @@ bool find_edge(const CDT& cdt, Vertex_handle a, Vertex_handle b, Face_handle& f,
 
 }  // namespace
 
-State::State(const Domain2& d, long long b) : domain_(d), n_input_(static_cast<int>(d.points.size())), budget_(b) {
-  cdt::build(cdt_, domain_);
+State::State(const Domain2& d, long long b, Triangulation2* prebuilt)
+    : domain_(d), n_input_(static_cast<int>(d.points.size())), budget_(b) {
+  Triangulation2 taken = prebuilt != nullptr ? prebuilt->take() : Triangulation2();
+  if (!taken.empty() && cdt::same_domain(taken.built()->domain, domain_))
+    cdt_.swap(taken.built()->cdt);  // what cdt::build(cdt_, domain_) would make, without making it again
+  else
+    cdt::build(cdt_, domain_);
   if (std::none_of(cdt_.finite_faces_begin(), cdt_.finite_faces_end(), [](const auto& f) { return f.info().in_domain(); }))
     throw InvalidInput("the domain contains no triangle (are all points collinear, or is everything a hole?)");
   const std::vector<Side> sides = boundary_sides();

@@ -27,8 +27,10 @@ struct WalkLane {
 
 class State {
  public:
-  // Triangulates the domain (cdt::build). Throws InvalidInput when the domain holds no triangle.
-  State(const Domain2& domain, long long budget);
+  // Triangulates the domain (cdt::build), or takes over `prebuilt`'s triangulation when it holds one of this very
+  // domain (cdt::same_domain; `prebuilt` is empty afterwards either way). Throws InvalidInput when the domain holds
+  // no triangle.
+  State(const Domain2& domain, long long budget, Triangulation2* prebuilt = nullptr);
 
   const CDT& cdt() const { return cdt_; }
   const Domain2& domain() const { return domain_; }

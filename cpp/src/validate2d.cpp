@@ -6,7 +6,9 @@
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
+#include <memory>
 #include <string>
+#include <utility>
 
 #include "cdt.h"
 
@@ -113,9 +115,17 @@ SeedPlace place_of(const cdt::CDT& t, const Point2& at, Inside inside) {
 
 }  // namespace
 
-DomainCoverage inspect_domain(const Domain2& domain) {
+Triangulation2::Triangulation2() = default;
+Triangulation2::Triangulation2(std::unique_ptr<Built> built) : built_(std::move(built)) {}
+Triangulation2::Triangulation2(Triangulation2&&) noexcept = default;
+Triangulation2& Triangulation2::operator=(Triangulation2&&) noexcept = default;
+Triangulation2::~Triangulation2() = default;
+Triangulation2 Triangulation2::take() { return Triangulation2(std::move(built_)); }
+
+DomainCoverage inspect_domain(const Domain2& domain, bool keep_triangulation) {
   check_indices(domain.points.size(), domain.segments);
-  cdt::CDT t;
+  auto built = std::make_unique<Triangulation2::Built>();
+  cdt::CDT& t = built->cdt;
   Domain2 without_holes = domain;  // cdt::mark_domain cannot place hole seeds in a 1D triangulation
   without_holes.holes.clear();
   const std::vector<cdt::Vertex_handle> vh = cdt::build(t, without_holes);
@@ -144,6 +154,11 @@ DomainCoverage inspect_domain(const Domain2& domain) {
     cov.holes.push_back(place_of(t, h, [](cdt::Face_handle f) { return f->info().component != -2; }));
   for (const auto& r : domain.regions)
     cov.regions.push_back(place_of(t, r.at, [](cdt::Face_handle f) { return f->info().in_domain(); }));
+  // t is now what cdt::build(t, domain) makes: the same insertions in the same order, marked with the holes.
+  if (keep_triangulation && cov.domain_triangles > 0) {
+    built->domain = domain;
+    cov.triangulation = std::make_shared<Triangulation2>(std::move(built));
+  }
   return cov;
 }
 

@@ -33,6 +33,44 @@ TEST(Refine2d, BudgetExhaustedReturnsPartialMesh) {
   EXPECT_STREQ(to_string(RefineStrategy::ProjectFlip), "project-flip");
 }
 
+// Points, triangles, constrained subsegments and regions of two meshes are the same, in the same order.
+void expect_same_mesh(const Mesh2& a, const Mesh2& b) {
+  ASSERT_EQ(a.points.size(), b.points.size());
+  for (std::size_t i = 0; i < a.points.size(); ++i) {
+    EXPECT_EQ(a.points[i].x, b.points[i].x);
+    EXPECT_EQ(a.points[i].y, b.points[i].y);
+  }
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.segments, b.segments);
+  EXPECT_EQ(a.triangle_region, b.triangle_region);
+}
+
+TEST(Refine2d, TakesOverTheTriangulationInspectDomainKept) {
+  // A half disk with obtuse apexes, a triangular hole and region seeds: refine on the kept triangulation gives
+  // the mesh refine makes alone, and empties it.
+  Domain2 d = half_disk({{17, 15}, {39, 30.7}, {22, 8}, {28, 8}, {25, 12}});
+  const int n = static_cast<int>(d.points.size());
+  d.segments.insert(d.segments.end(), {{n - 3, n - 2}, {n - 2, n - 1}, {n - 1, n - 3}});
+  d.holes = {{25, 9}};
+  d.regions = {{{10, 5}, 1.0}, {{40, 5}, 2.0}};
+  DomainCoverage cov = inspect_domain(d, true);
+  ASSERT_NE(cov.triangulation, nullptr);
+  EXPECT_EQ(inspect_domain(d).triangulation, nullptr);  // kept only when asked
+  const Refine2DResult alone = refine(d);
+  const Refine2DResult taken = refine(d, {}, cov.triangulation.get());
+  EXPECT_TRUE(cov.triangulation->empty());
+  EXPECT_GT(alone.steiner_points, 0);
+  EXPECT_EQ(taken.steiner_points, alone.steiner_points);
+  expect_same_mesh(taken.mesh, alone.mesh);
+
+  // Kept for another domain (a point moved): refine triangulates the one it is given.
+  Domain2 moved = d;
+  moved.points[n - 4] = {17, 16};
+  cov = inspect_domain(d, true);
+  expect_same_mesh(refine(moved, {}, cov.triangulation.get()).mesh, refine(moved).mesh);
+  EXPECT_TRUE(cov.triangulation->empty());
+}
+
 std::string read_text(const std::string& path) {
   std::ifstream in(path);
   std::stringstream buffer;

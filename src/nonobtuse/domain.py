@@ -5,6 +5,12 @@ A :class:`Domain` is *validated* when :mod:`nonobtuse.validate` returned it (``l
 assigning any field makes it unvalidated again (editing its arrays in place is not detected: don't). The API
 entry points (``triangulate``, ``check``, ``refine``) validate an unvalidated domain once and never validate a
 validated one again.
+
+A validated domain also carries the constrained Delaunay triangulation validation built (an opaque C++
+object, :func:`kept_triangulation`): the first :func:`nonobtuse.refine` of it takes that triangulation over
+instead of building the same one again (the core compares the domain it triangulates with the one it is given,
+exactly). It goes with the validated mark: assigning a field drops it, copies and pickles do not carry it
+(refine then triangulates).
 """
 
 from __future__ import annotations
@@ -88,7 +94,12 @@ class Domain:
 
     def __setattr__(self, name: str, value: Any) -> None:
         object.__setattr__(self, "_validated", False)  # any change voids the validator's word
+        object.__setattr__(self, "_triangulation", None)  # and what it built
         object.__setattr__(self, name, value)
+
+    def __getstate__(self) -> dict[str, Any]:
+        """copy, deepcopy and pickle: everything but the kept triangulation (a C++ object)."""
+        return {**self.__dict__, "_triangulation": None}
 
     @property
     def validated(self) -> bool:
@@ -124,10 +135,11 @@ def marker_array(a: Any, n: int, name: str) -> np.ndarray | None:
     return np.ascontiguousarray(arr, dtype=np.int64)
 
 
-def mark_validated(domain: Domain) -> Domain:
+def mark_validated(domain: Domain, triangulation: Any = None) -> Domain:
     """Set ``domain.validated``; only :mod:`nonobtuse.validate` calls this, on a domain it made and checked.
     The arrays and ``repairs`` become copies, so that edits of the caller's arrays cannot change what was
     checked (they stay writable: third-party code, e.g. Triangle's bindings, refuses read-only arrays).
+    triangulation: the ``_core.Triangulation2`` validation built of this domain (kept for refine), or None.
     Returns ``domain``. Cost: one copy of each array."""
     for f in fields(domain):
         value = getattr(domain, f.name)
@@ -135,4 +147,11 @@ def mark_validated(domain: Domain) -> Domain:
             object.__setattr__(domain, f.name, np.array(value))
     object.__setattr__(domain, "repairs", list(domain.repairs))
     object.__setattr__(domain, "_validated", True)
+    object.__setattr__(domain, "_triangulation", triangulation)
     return domain
+
+
+def kept_triangulation(domain: Domain) -> Any:
+    """The ``_core.Triangulation2`` validation built of ``domain`` (refine takes it over: it is empty once
+    taken), or None when ``domain`` is not validated, was copied, or validation kept none."""
+    return getattr(domain, "_triangulation", None) if domain.validated else None

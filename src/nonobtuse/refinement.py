@@ -13,7 +13,7 @@ from typing import Any, Union, overload
 import numpy as np
 
 from nonobtuse import _core
-from nonobtuse.domain import Domain
+from nonobtuse.domain import Domain, kept_triangulation
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh import Mesh
 from nonobtuse.triangulation import mesh_of_core
@@ -286,6 +286,7 @@ def refine(
         -1 if max_steiner is None else int(max_steiner),
         min(int(threads), 2),
         quality,
+        kept_triangulation(domain),
     )
     require_points_in_domain(domain, r.mesh.triangles)
     stats: dict[str, Any] = {

@@ -8,6 +8,7 @@
 #include "nonobtuse/quality2d.h"
 #include "nonobtuse/refine2d_diagnosis.h"
 #include "nonobtuse/types.h"
+#include "nonobtuse/validate2d.h"
 
 namespace nonobtuse {
 
@@ -84,7 +85,11 @@ long long default_steiner_budget(std::size_t n_points);
 // Throws InvalidInput when the domain cannot be triangulated (crossing constraints, no triangle).
 // Cost: O(n log n) to triangulate, plus per Steiner point the walk over the triangles meeting the diametral
 // disk of the refined subsegment.
-Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options = {});
+// triangulation: the one inspect_domain kept while validating; when it triangulates this very domain (compared
+// exactly, O(n)) refine takes it over instead of triangulating again (the result is the same, the cost of the
+// triangulation saved). Empty afterwards in any case.
+Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options = {},
+                      Triangulation2* triangulation = nullptr);
 
 // Benchmark peer: the Steiner points CGAL::make_conforming_Gabriel_2 adds to the domain's constrained Delaunay
 // triangulation (every constrained edge Gabriel on both sides, outside the domain included).

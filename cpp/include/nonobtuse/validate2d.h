@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "nonobtuse/types.h"
@@ -37,6 +38,26 @@ enum class SeedPlace : std::int8_t {
   OnBoundary = 2,  // exactly on an input point or on a segment: ambiguous, which side is meant?
 };
 
+// The constrained Delaunay triangulation of a domain as inspect_domain built and marked it, held so that refine
+// (nonobtuse/refine2d.h) takes it over instead of triangulating the same domain again. Opaque: CGAL stays in
+// cpp/src. Holds a copy of the domain it triangulates, so that refine can tell it belongs to the domain it is given.
+// Move-only; empty once taken.
+class Triangulation2 {
+ public:
+  struct Built;  // the domain and its CGAL triangulation (cpp/src/cdt.h)
+  Triangulation2();
+  explicit Triangulation2(std::unique_ptr<Built> built);
+  Triangulation2(Triangulation2&&) noexcept;
+  Triangulation2& operator=(Triangulation2&&) noexcept;
+  ~Triangulation2();
+  bool empty() const { return !built_; }
+  Triangulation2 take();                         // the triangulation moved out: *this is empty afterwards
+  Built* built() const { return built_.get(); }  // null when empty; Built is defined in cpp/src
+
+ private:
+  std::unique_ptr<Built> built_;
+};
+
 // What the constrained Delaunay triangulation of the domain (cdt::build: segments, convex hull edges when
 // domain.convex_hull_boundary, exterior and holes removed by flood fill across unconstrained edges) covers.
 struct DomainCoverage {
@@ -51,11 +72,14 @@ struct DomainCoverage {
   std::vector<SeedPlace> holes;
   // Region seeds: Outside means not in a domain triangle (exterior or hole).
   std::vector<SeedPlace> regions;
+  // The triangulation itself when inspect_domain was asked to keep it and the domain has a triangle; else null.
+  std::shared_ptr<Triangulation2> triangulation;
 };
 
 // Preconditions: as for find_segment_intersections, and no crossings, points inside segments or overlaps
 // (each segment is then one edge of the triangulation). Throws InvalidInput when a segment is not an edge of the
-// triangulation (the preconditions were not met). Cost: O(n log n) expected.
-DomainCoverage inspect_domain(const Domain2& domain);
+// triangulation (the preconditions were not met). Cost: O(n log n) expected; keep_triangulation keeps the
+// triangulation (memory: about 200 bytes per point) and a copy of the domain in the result.
+DomainCoverage inspect_domain(const Domain2& domain, bool keep_triangulation = false);
 
 }  // namespace nonobtuse

@@ -36,13 +36,26 @@ def read_off(path: Path) -> RawInput:
         pts = fast[0]
     else:
         pts = [floats(lines.next(f"vertex {i}"), 0, 3, f"vertex {i}") for i in range(nv)]
-    facets = []
-    for j in range(nf):
-        line = lines.next(f"face {j}")
-        n = line.count(0, f"the vertex count of face {j}")
-        facets.append(Facet([np.array(ints(line, 1, n, f"face {j}"), dtype=np.int64)],
-                            where=f"{line.file}:{line.number}"))
+    facets = _off_triangles(lines, nf)
+    if facets is None:
+        facets = []
+        for j in range(nf):
+            line = lines.next(f"face {j}")
+            n = line.count(0, f"the vertex count of face {j}")
+            facets.append(Facet([np.array(ints(line, 1, n, f"face {j}"), dtype=np.int64)],
+                                where=f"{line.file}:{line.number}"))
     return RawInput(points_array(pts), facets, source=str(path))
+
+
+def _off_triangles(lines: Lines, nf: int) -> list[Facet] | None:
+    """The next ``nf`` faces when every one is a triangle on a plain numeric line (``3 i j k``: the fast
+    path, :meth:`Lines.numbers`), else None and nothing consumed (the line reader names any problem)."""
+    fast = lines.numbers(nf, 4, (0, 1, 2, 3))
+    if fast is None or not np.all(fast[0][:, 0] == 3):
+        return None
+    lines.skip(nf)
+    corners = fast[0][:, 1:].astype(np.int64)
+    return [Facet([c], where=f"{lines.file}:{n}") for c, n in zip(corners, fast[1].tolist())]
 
 
 def read_obj(path: Path) -> RawInput:

@@ -26,7 +26,7 @@ from nonobtuse.io import surfaces, tetgen
 from nonobtuse.io.raw3d import Facet, RawInput
 from nonobtuse.mesh3d.gabriel import power_of_two_exponent
 from nonobtuse.mesh3d.plc import PLC
-from nonobtuse.mesh3d.validate3d import edge_faces, manifold_face_pairs, validate_plc
+from nonobtuse.mesh3d.validate3d import edge_faces, manifold_face_pairs, unique_rows, validate_plc
 
 SURFACE_SUFFIXES = surfaces.SUFFIXES
 PLC_SUFFIXES = tetgen.SUFFIXES
@@ -38,14 +38,19 @@ READERS = {".off": surfaces.read_off, ".obj": surfaces.read_obj, ".ply": surface
 # Facets -> triangles
 
 
-def _check_points_and_indices(raw: RawInput) -> None:
-    """Finite coordinates (before any arithmetic on them) and facet indices in range."""
+def _check_finite(raw: RawInput) -> None:
+    """Finite coordinates (before any arithmetic on them)."""
     bad = np.flatnonzero(~np.isfinite(raw.points).all(axis=1))
     if len(bad):
         v = int(bad[0])
         raise InvalidInputError(f"vertex {v} has a NaN or infinite coordinate {raw.points[v].tolist()} "
                                 f"in {raw.source} (a number too large for float64, such as 1e400, reads as "
                                 "infinity)")
+
+
+def _check_points_and_indices(raw: RawInput) -> None:
+    """Finite coordinates (before any arithmetic on them) and facet indices in range."""
+    _check_finite(raw)
     n = len(raw.points)
     for j, f in enumerate(raw.facets):
         for loop in f.loops:
@@ -104,8 +109,30 @@ def _check_planar(points: np.ndarray, local: np.ndarray, ref: np.ndarray, j: int
                                 f"off the plane of its vertices {a}, {b}, {c}")
 
 
+def _triangle_facets(raw: RawInput) -> np.ndarray | None:
+    """The facets as triangles (m, 3) when every facet is one triangle without holes (a triangle surface),
+    checked as :func:`_check_points_and_indices` checks them, with the same messages, but in numpy rather than
+    a Python step per facet; None for any other input."""
+    facets = raw.facets
+    if not facets or any(len(f.loops) != 1 or len(f.loops[0]) != 3 or len(f.holes) for f in facets):
+        return None
+    _check_finite(raw)
+    t = np.array([f.loops[0] for f in facets], dtype=np.int64).reshape(-1, 3)
+    n = len(raw.points)
+    out = (t < 0) | (t >= n)
+    rows = np.flatnonzero(out.any(axis=1))
+    if len(rows):
+        j = int(rows[0])
+        raise InvalidInputError(f"facet {j} ({facets[j].where or raw.source}) refers to vertex "
+                                f"{t[j][out[j]][0]}, but there are {n} vertices")
+    return t
+
+
 def triangulate_facets(raw: RawInput) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(triangles (m, 3), facet_ids (m,), dangling segments (k, 2)) of all facets."""
+    triangles = _triangle_facets(raw)
+    if triangles is not None:  # what the loop below makes of one-triangle facets
+        return triangles, np.arange(len(triangles), dtype=np.int64), np.zeros((0, 2), dtype=np.int64)
     _check_points_and_indices(raw)
     tris, ids, dangling = [], [], []
     for j, f in enumerate(raw.facets):
@@ -165,7 +192,7 @@ def build_plc(raw: RawInput, *, surface: bool) -> PLC:
         plc = merge_coplanar_facets(plc)
     segs = facet_boundary_segments(plc.triangles, plc.facet_ids)
     if len(dangling):
-        segs = np.unique(np.concatenate([segs, np.sort(dangling, axis=1)]), axis=0)
+        segs = unique_rows(np.concatenate([segs, np.sort(dangling, axis=1)]))
     return replace(plc, segments=segs)
 
 

@@ -8,6 +8,7 @@ core (CGAL exact-predicates kernel); the rest is combinatorics on the triangle l
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import Any
 
 import numpy as np
 from scipy.sparse import coo_matrix
@@ -42,10 +43,32 @@ def directed_edges(triangles: np.ndarray) -> np.ndarray:
     return np.stack([t, np.roll(t, -1, axis=1)], axis=2).reshape(-1, 2)
 
 
+def unique_rows(rows: np.ndarray, **options: Any) -> Any:
+    """``np.unique(rows, axis=0, **options)`` for (k, w) int64 rows of indices >= 0 (the same rows, order,
+    first indices, inverse (k,) and counts), sorting one int64 key per row (``r0 * base + r1 ...``) when
+    ``base ** w`` fits: numpy sorts rows as bytes, ten times slower on a million rows. Cost: O(k log k)."""
+    rows = np.asarray(rows, dtype=np.int64)
+    width = rows.shape[1]
+    base = int(rows.max()) + 1 if rows.size else 0
+    if not rows.size or int(rows.min()) < 0 or base**width >= 2**62:
+        return np.unique(rows, axis=0, **options)
+    key = rows[:, 0]
+    for c in range(1, width):
+        key = key * base + rows[:, c]
+    out = np.unique(key, **options)
+    keys, rest = (out[0], out[1:]) if isinstance(out, tuple) else (out, ())
+    columns = []
+    for _ in range(width):
+        keys, column = np.divmod(keys, base)
+        columns.append(column)
+    unique = np.column_stack(columns[::-1])
+    return (unique, *rest) if rest else unique
+
+
 def edge_faces(triangles: np.ndarray) -> EdgeFaces:
     """Undirected edge table of `triangles` (m, 3). Cost: O(m log m)."""
     d = directed_edges(triangles)
-    edges, of_corner, count = np.unique(np.sort(d, axis=1), axis=0, return_inverse=True, return_counts=True)
+    edges, of_corner, count = unique_rows(np.sort(d, axis=1), return_inverse=True, return_counts=True)
     return EdgeFaces(edges.reshape(-1, 2), count, of_corner.ravel())
 
 
@@ -90,7 +113,7 @@ def check_faces(plc: PLC) -> None:
         raise InvalidInputError(f"degenerate face {f} {t[f].tolist()}: its vertices are exactly collinear "
                                 f"(zero area){_where(plc)}")
     key = np.sort(t, axis=1)
-    _, first, inv = np.unique(key, axis=0, return_index=True, return_inverse=True)
+    _, first, inv = unique_rows(key, return_index=True, return_inverse=True)
     dup = np.flatnonzero(first[inv.ravel()] != np.arange(len(t)))
     if len(dup):
         g = dup[0]
