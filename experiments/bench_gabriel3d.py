@@ -16,10 +16,10 @@ diametral sphere) is run on the mesh produced:
 Columns: input, method, status, strategy (ours: the strategy of the returned mesh, e.g. "shells+protected"
 after a fallback), points, boundary_steiner (boundary-face vertices that are not input points), steiner (all
 output points that are not input points), boundary_faces, encroached_facets, encroached_segments ("n/a" for
-fTetWild, whose output does not mark segments), seconds. CSV to
-experiments/results/bench_gabriel3d.csv, and a table on stdout.
+fTetWild, whose output does not mark segments), seconds. CSV to bench_gabriel3d.csv (bench_gabriel3d_quick.csv
+with --quick) in --out DIR (default experiments/results), and a table on stdout.
 
-Run: ``PYTHONPATH=src .venv/bin/python -m experiments.bench_gabriel3d [--quick] [files...]``
+Run: ``PYTHONPATH=src .venv/bin/python -m experiments bench_gabriel3d [--quick] [--out DIR] [files...]``
 (default: our refinement limited to 60 s and its default budget, 10 n + 10,000 points; --quick: inputs
 up to 500 triangles, our refinement limited to 20 s and 2,000 points, about 1 min).
 """
@@ -27,7 +27,6 @@ up to 500 triangles, our refinement limited to 20 s and 2,000 points, about 1 mi
 from __future__ import annotations
 
 import argparse
-import csv
 import sys
 import time
 from pathlib import Path
@@ -35,13 +34,14 @@ from typing import Any
 
 import numpy as np
 
+from experiments.outputs import add_out_option, out_dir
+from experiments.sweep import output_stem, write_csv
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import check_gabriel, load_plc, refine_gabriel, tetrahedralize
 from nonobtuse.mesh3d.load import PLC_SUFFIXES, SURFACE_SUFFIXES
 
 ROOT = Path(__file__).resolve().parents[1]
 DATA3D = ROOT / ".." / "shared" / "data" / "3d"
-RESULTS = ROOT / "experiments" / "results"
 COLUMNS = ["input", "method", "status", "strategy", "points", "boundary_steiner", "steiner", "boundary_faces",
            "encroached_facets", "encroached_segments", "seconds"]
 
@@ -111,7 +111,7 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("inputs", nargs="*", type=Path, help="default: every file of ../shared/data/3d")
     ap.add_argument("--quick", action="store_true")
-    ap.add_argument("--out", type=Path, default=RESULTS / "bench_gabriel3d.csv")
+    add_out_option(ap, "bench_gabriel3d.csv")
     args = ap.parse_args(argv)
     quick = args.quick
     args.max_triangles = 500 if quick else 10**9
@@ -126,13 +126,10 @@ def main(argv: list[str] | None = None) -> int:
     for path in inputs:
         print(f"bench_gabriel3d: {path.name}", file=sys.stderr)
         rows += bench_one(path, args)
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    with open(args.out, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=COLUMNS)
-        w.writeheader()
-        w.writerows(rows)
+    path = out_dir(args) / f"{output_stem('bench_gabriel3d', quick)}.csv"
+    write_csv(path, rows, COLUMNS)
     print_table(rows)
-    print(f"\nwrote {args.out}", file=sys.stderr)
+    print(f"\nwrote {path}", file=sys.stderr)
     return 0
 
 

@@ -193,6 +193,14 @@ def test_refine3d_cli_without_tetgen_start(tmp_path, capsys):
     summary = json.loads(capsys.readouterr().out)
     _, volumes = radius_edge_and_volume(read_tetmesh_json(out))
     assert summary["start"] == "boundary" and "tetgen" not in summary and volumes.max() <= 0.05
+    # the text: aligned lines with the bounds against what the mesh reaches, and the exact verdict
+    assert main(["refine3d", str(cube), "-o", str(tmp_path / "t.json"), "--region-max-volume", "1=0.05",
+                 "--quality-start", "boundary"]) == EXIT_OK
+    text = capsys.readouterr().out
+    assert f"{summary['interior_points']:,} interior" in text and "{'" not in text
+    assert f"worst radius-edge       {summary['worst_radius_edge']:.4g} (bound n/a)" in text
+    verdict = "OK:" if summary["encroached_facets"] == summary["encroached_segments"] == 0 else "NOT OK:"
+    assert text.splitlines()[-1].strip().startswith(verdict)
 
 
 @needs_tetgen

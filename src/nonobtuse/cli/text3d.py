@@ -99,7 +99,9 @@ def _places(diagnosis: dict[str, Any]) -> list[tuple[str, str]]:
 
 def refine3d_text(stats: dict[str, Any], input_path: str, output_path: str) -> str:
     """The lines ``refine3d`` prints for ``refine_gabriel``'s stats (encroached counts may be the strings
-    of a certificate the time limit cut short)."""
+    of a certificate the time limit cut short), or for ``refine_quality3d``'s (with interior points)."""
+    if "interior_points" in stats:
+        return _quality3d_text(stats, input_path, output_path)
     diagnosis = stats.get("diagnosis", {})
     other = stats.get("other_attempt") or ""
     pairs = [
@@ -121,5 +123,32 @@ def refine3d_text(stats: dict[str, Any], input_path: str, output_path: str) -> s
     pairs += [("warning", w) for w in stats.get("warnings", [])]
     head = (f"{Path(input_path).name} -> {output_path}: {stats['status']}, {stats['steiner_points']:,} "
             "Steiner points")
+    return "\n".join([head] + aligned(pairs) + ["  " + _verdict(stats["encroached_facets"],
+                                                                stats["encroached_segments"])])
+
+
+def _quality3d_text(stats: dict[str, Any], input_path: str, output_path: str) -> str:
+    """The lines of ``refine3d --radius-edge/--max-volume``: points by kind, the bounds against what the mesh
+    reaches, the certificate's counts (``boundary_repair`` and the rest only in --json)."""
+    bound = stats.get("max_volume_bound")
+    pairs = [
+        ("status", f"{stats['status']}: {stats.get('last_repair', '')}".rstrip(": ")),
+        ("points added", f"{stats['steiner_points']:,} ({stats['boundary_points']:,} on the boundary, "
+                         f"{stats['interior_points']:,} interior)"),
+        ("tets", f"{_number(stats['tets'])} ({_number(stats['bad_tets'])} over a bound, "
+                 f"{_number(stats['rounds'])} rounds)"),
+        ("worst radius-edge", f"{_number(stats['worst_radius_edge'])} "
+                              f"(bound {_number(stats['radius_edge'])})"),
+        ("largest volume", f"{_number(stats['max_volume'])} (bound "
+                           f"{_number(bound) if not isinstance(bound, dict) else 'per region'}; length units "
+                           "cubed)"),
+        ("encroached faces", _number(stats["encroached_facets"])),
+        ("encroached subsegments", _number(stats["encroached_segments"])),
+        ("negative couplings", f"{_number(stats['negative_couplings'])} (floating point)"),
+        ("seconds", f"{stats['seconds']:.2f} s"),
+    ]
+    pairs += [("warning", w) for w in stats.get("warnings", [])]
+    head = (f"{Path(input_path).name} -> {output_path}: {stats['status']}, "
+            f"{stats['interior_points']:,} interior and {stats['boundary_points']:,} boundary points")
     return "\n".join([head] + aligned(pairs) + ["  " + _verdict(stats["encroached_facets"],
                                                                 stats["encroached_segments"])])
