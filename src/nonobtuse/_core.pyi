@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'Junction', 'Mesh2D', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'Triangulation2', 'check_gabriel', 'classify_edges', 'conforming_gabriel_steiner_points', 'coupling_signs', 'default_steiner_budget', 'delaunay_restricted_to_plc', 'delaunay_tetrahedra', 'dual_area_signs', 'find_segment_intersections', 'inspect_domain', 'parse_numeric_rows', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'refine', 'refine_gabriel', 'triangulate']
+__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'Junction', 'Mesh2D', 'Quality2DOptions', 'Quality2DStats', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'Triangulation2', 'check_gabriel', 'classify_edges', 'closed_diametral_sphere_hits', 'conforming_gabriel_steiner_points', 'coupling_signs', 'default_interior_budget', 'default_steiner_budget', 'delaunay_restricted_to_plc', 'delaunay_tetrahedra', 'dual_area_signs', 'find_segment_intersections', 'inspect_domain', 'parse_numeric_rows', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'refine', 'refine_gabriel', 'triangulate']
 class Mesh2D:
     """
     A triangulated 2D domain (read-only; each array attribute is a new array on each access).
@@ -138,6 +138,81 @@ class DomainCoverage:
         """
         the triangulation when kept (keep_triangulation=True and a triangle), else None
         """
+class Quality2DOptions:
+    """
+    What makes a triangle bad for refine (see nonobtuse.refine).
+    """
+    def __init__(self) -> None:
+        ...
+    def enabled(self) -> bool:
+        """
+        whether any criterion is set
+        """
+    def set_max_area_at(self, size: collections.abc.Callable[[float, float], typing.SupportsFloat | typing.SupportsIndex]) -> None:
+        """
+        size(x, y) -> the largest area of a triangle whose centroid is (x, y)
+        """
+    @property
+    def max_area(self) -> float:
+        """
+        <= 0: none
+        """
+    @max_area.setter
+    def max_area(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def max_interior(self) -> int:
+        """
+        < 0: default_interior_budget
+        """
+    @max_interior.setter
+    def max_interior(self, arg0: typing.SupportsInt | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def min_angle_degrees(self) -> float:
+        ...
+    @min_angle_degrees.setter
+    def min_angle_degrees(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
+        ...
+    @property
+    def region_max_area(self) -> list[tuple[float, float]]:
+        """
+        [(attribute, area), ...]
+        """
+    @region_max_area.setter
+    def region_max_area(self, arg0: collections.abc.Sequence[tuple[typing.SupportsFloat | typing.SupportsIndex, typing.SupportsFloat | typing.SupportsIndex]]) -> None:
+        ...
+class Quality2DStats:
+    """
+    What the interior refinement did and left (read-only).
+    """
+    @property
+    def bad_triangles(self) -> int:
+        ...
+    @property
+    def boundary_splits(self) -> int:
+        ...
+    @property
+    def interior_budget(self) -> int:
+        ...
+    @property
+    def interior_points(self) -> int:
+        ...
+    @property
+    def max_area(self) -> float:
+        ...
+    @property
+    def min_angle_degrees(self) -> float:
+        ...
+    @property
+    def min_angle_outside_small_angles_degrees(self) -> float:
+        ...
+    @property
+    def small_angle_triangles(self) -> int:
+        ...
+    @property
+    def triangles(self) -> int:
+        ...
 class Junction:
     """
     An input vertex where at least two input constraints meet.
@@ -255,6 +330,11 @@ class Refine2DResult:
     def optimal(self) -> bool | None:
         """
         True when certainly optimal, None when unknown
+        """
+    @property
+    def quality(self) -> Quality2DStats:
+        """
+        the interior refinement (Quality2DStats)
         """
     @property
     def seconds(self) -> float:
@@ -468,6 +548,11 @@ def classify_edges(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float6
     Exact classification of every edge of a ccw triangle mesh (an EdgeClassification).
     triangle_region: (m,) float64 or empty.
     """
+def closed_diametral_sphere_hits(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], candidates: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> tuple[numpy.typing.NDArray[numpy.int32], numpy.typing.NDArray[numpy.int32]]:
+    """
+    For each candidate (c,3): the first face (f,3) and the first segment (k,2) of points (n,3) whose closed
+    diametral sphere holds it (exact), -1 where none. Returns (face (c,) int32, segment (c,) int32).
+    """
 def conforming_gabriel_steiner_points(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool) -> int:
     """
     Benchmark peer: Steiner points added by CGAL::make_conforming_Gabriel_2 to the domain's CDT.
@@ -476,6 +561,10 @@ def coupling_signs(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float6
     """
     classify_edges with sign (E,) int8: the exact sign (-1, 0, +1) of each edge's control-volume coupling
     coefficient sum_t k_t cot(apex_t) / 2. conductivity: (m,) float64 > 0 per triangle, or empty for k = 1.
+    """
+def default_interior_budget(n_points: typing.SupportsInt | typing.SupportsIndex, domain_area: typing.SupportsFloat | typing.SupportsIndex, smallest_area_limit: typing.SupportsFloat | typing.SupportsIndex) -> int:
+    """
+    The interior budget refine uses when max_interior < 0 (quality2d.h).
     """
 def default_steiner_budget(n_points: typing.SupportsInt | typing.SupportsIndex) -> int:
     """
@@ -528,11 +617,12 @@ def plc_self_intersections(points: typing.Annotated[numpy.typing.ArrayLike, nump
     Pairs (k, 2) int64 (i < j) of triangles intersecting beyond shared vertices/edges (exact);
     triangles must be non-degenerate and distinct. At most max_pairs rows.
     """
-def refine(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool, strategy: str = 'greedy', max_steiner: typing.SupportsInt | typing.SupportsIndex = -1, threads: typing.SupportsInt | typing.SupportsIndex = 2, triangulation: Triangulation2 | None = None) -> Refine2DResult:
+def refine(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool, strategy: str = 'greedy', max_steiner: typing.SupportsInt | typing.SupportsIndex = -1, threads: typing.SupportsInt | typing.SupportsIndex = 2, quality: Quality2DOptions = ..., triangulation: Triangulation2 | None = None) -> Refine2DResult:
     """
     Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0:
-    default_steiner_budget(n). triangulation: inspect_domain's (DomainCoverage.triangulation), taken over
-    when it triangulates this domain, empty afterwards. Returns a Refine2DResult.
+    default_steiner_budget(n); quality: interior refinement (off by default). triangulation: inspect_domain's
+    (DomainCoverage.triangulation), taken over when it triangulates this domain, empty afterwards. Returns a
+    Refine2DResult.
     """
 def refine_gabriel(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], facet_ids: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_steiner: typing.SupportsInt | typing.SupportsIndex, min_length: typing.SupportsFloat | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex, split: str, protected_fallback: bool, progress_every: typing.SupportsInt | typing.SupportsIndex, progress: collections.abc.Callable[[int, int, int, float], None] | None) -> Refine3DResult:
     """
