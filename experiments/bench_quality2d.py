@@ -33,6 +33,7 @@ from experiments.outputs import add_out_option, out_dir  # noqa: E402
 from nonobtuse import Domain, InvalidInputError  # noqa: E402
 from nonobtuse.demo import cross_section  # noqa: E402
 from nonobtuse.io import load_domain  # noqa: E402
+from nonobtuse.peers import triangle_quality  # noqa: E402
 from nonobtuse.validate import ensure_validated  # noqa: E402
 from refine_helpers import SHARED  # noqa: E402
 
@@ -54,33 +55,10 @@ def min_input_angle(d: Domain) -> float:
     return best
 
 
-def smallest_angle(points: np.ndarray, triangles: np.ndarray) -> float:
-    p = points[triangles]
-    best = 180.0
-    for i in range(3):
-        u, w = p[:, (i + 1) % 3] - p[:, i], p[:, (i + 2) % 3] - p[:, i]
-        cross = np.abs(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0])
-        best = min(best, float(np.degrees(np.arctan2(cross, np.einsum("ij,ij->i", u, w))).min()))
-    return best
-
-
 def triangle_q(d: Domain, degrees: float) -> dict:
-    import triangle
-
-    data = {"vertices": d.points}
-    if len(d.segments):
-        data["segments"] = d.segments
-    if len(d.holes):
-        data["holes"] = d.holes
-    flags = f"p{'c' if d.convex_hull else ''}q{degrees:g}DQ"
-    t0 = time.perf_counter()
-    out = triangle.triangulate(data, flags)
-    seconds = time.perf_counter() - t0
-    on_segments = np.unique(out["segments"]) if "segments" in out else np.zeros(0, int)
-    return {"tri_vertices": len(out["vertices"]),
-            "tri_boundary_steiner": int(np.count_nonzero(on_segments >= len(d.points))),
-            "tri_min_angle": round(smallest_angle(out["vertices"], out["triangles"]), 3),
-            "tri_seconds": round(seconds, 4)}
+    t = triangle_quality(d, degrees)
+    return {"tri_vertices": t["vertices"], "tri_boundary_steiner": t["boundary_steiner"],
+            "tri_min_angle": round(t["min_angle"], 3), "tri_seconds": round(t["seconds"], 4)}
 
 
 def ours(d: Domain, degrees: float) -> dict:
