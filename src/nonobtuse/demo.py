@@ -6,7 +6,9 @@ with its own region attribute and conductivity. Every curve is sampled at its ow
 horizons are, so the constrained Delaunay triangulation is full of flat triangles: obtuse angles on the
 boundary and on the interfaces, hence wrong-sign control-volume coefficients. The refinement step extends
 :func:`run` then refines the boundary and the interfaces with the fewest Steiner points it can and reports the
-same figures again, beside the lower bound and Triangle -pD's count for the same domain.
+same figures again, beside the lower bound and Triangle -pD's count for the same domain. The quality mode
+(:func:`run_quality`: ``refine(min_angle=25)``, every triangle at least 25 degrees, the boundary still
+certified) follows, beside Triangle -pq25D.
 
 The 3D part (:func:`run_part`) is CGAL's ``joint`` CAD part (446 triangles, genus 2; bundled as package data,
 CC0, see ``data/SOURCES.md``): tetrahedralized by TetGen (``-pq1.414Y``: the boundary as given) when the
@@ -29,7 +31,7 @@ from nonobtuse.domain import Domain
 from nonobtuse.mesh import Mesh
 from nonobtuse.mesh3d import GabrielReport, TetMesh, check_gabriel, load_plc, refine_gabriel
 from nonobtuse.mesh3d.gabriel import control_volume_summary
-from nonobtuse.refinement import refine
+from nonobtuse.refinement import RefineResult, refine
 from nonobtuse.triangulation import triangulate
 
 LENGTH_M = 4000.0
@@ -44,6 +46,7 @@ CURVES = (
 EXAGGERATION = 20.0  # vertical exaggeration of the demo's picture: 4 km by 42 m is a line at true scale
 # Region attribute (layer number, bottom = 1) -> conductivity (e.g. m/day): shale, sand, silt, gravel.
 CONDUCTIVITY = {1.0: 1e-3, 2.0: 5.0, 3.0: 0.1, 4.0: 20.0}
+QUALITY_MIN_ANGLE = 25.0  # degrees: the demo's quality mode, Triangle's -q25
 PART = Path(__file__).parent / "data" / "joint.off"  # the 3D part: CGAL's joint.off (CC0; data/SOURCES.md)
 
 
@@ -92,8 +95,9 @@ def stage_report(title: str, mesh: Mesh, conductivity: dict[float, float] = COND
 
 
 def run(out: Callable[[str], None] = print, plot: str | Path | None = None) -> int:
-    """Build the cross-section, triangulate it, refine it, report; with ``plot``, also write the
-    before/after picture there (vertical exaggeration ``EXAGGERATION``, labelled; close-ups at true scale).
+    """Build the cross-section, triangulate it, refine it (the minimal mode, then the quality mode:
+    :func:`run_quality`), report; with ``plot``, also write the before / after / quality picture there
+    (vertical exaggeration ``EXAGGERATION``, labelled; close-ups at true scale).
     Then the 3D part (:func:`run_part`; its picture at :func:`part_picture_path` of ``plot``).
     Returns the exit code (0)."""
     domain = cross_section()
@@ -106,15 +110,32 @@ def run(out: Callable[[str], None] = print, plot: str | Path | None = None) -> i
     out(stage_report(f"after: refine (greedy, {s['status']} in {s['seconds']:.2f} s)", result.mesh))
     out(f"  Steiner points: {s['steiner_points']} (lower bound {s['lower_bound']})")
     out(f"  Triangle -pD on the same domain: {_triangle_pd_summary(domain)}")
+    quality = run_quality(domain, out)
     if plot is not None:
         from nonobtuse.plot import plot_stages  # matplotlib only when asked
 
-        plot_stages([("before", before, check_mesh(before)), ("after refine", result.mesh,
-                                                               check_mesh(result.mesh))],
+        plot_stages([(label, mesh, check_mesh(mesh)) for label, mesh in (
+                        ("before", before), ("after refine", result.mesh),
+                        (f"after refine(min_angle={QUALITY_MIN_ANGLE:g})", quality.mesh))],
                     plot, vertical_exaggeration=EXAGGERATION, title=domain.source, unit="m")
         out(f"picture -> {plot}")
     run_part(out, None if plot is None else part_picture_path(plot))
     return 0
+
+
+def run_quality(domain: Domain, out: Callable[[str], None] = print) -> RefineResult:
+    """The quality mode on the demo domain: ``refine(domain, min_angle=QUALITY_MIN_ANGLE)``, reported in three
+    lines (points on constraints and inside; smallest angle and the exact boundary certificate; Triangle
+    ``-pq25D``'s counts). Returns the result. Cost: a fraction of a second."""
+    r = refine(domain, min_angle=QUALITY_MIN_ANGLE)
+    s, q = r.stats, r.stats["quality"]
+    out(f"quality: refine(min_angle={QUALITY_MIN_ANGLE:g}) ({s['status']} in {s['seconds']:.2f} s): "
+        f"{len(r.mesh.points)} points ({s['steiner_points']} on boundary/interfaces, {s['interior_points']} "
+        f"inside), {len(r.mesh.triangles)} triangles")
+    out(f"  smallest angle {q['min_angle_degrees']:.2f} deg; obtuse angles opposite boundary/interface edges "
+        f"(exact): {s['obtuse_boundary_sides']}")
+    out(f"  Triangle -pq{QUALITY_MIN_ANGLE:g}D on the same domain: {_triangle_quality_summary(domain)}")
+    return r
 
 
 def part_picture_path(plot: str | Path) -> Path:
@@ -161,6 +182,17 @@ def run_part(out: Callable[[str], None] = print, plot: str | Path | None = None)
         plot_gabriel_stages([(f"before ({how.split(' (')[0]})", before, before_report),
                              ("after refine_gabriel", result.mesh, report)], plot, title=PART.name)
         out(f"picture -> {plot}")
+
+
+def _triangle_quality_summary(domain: Domain) -> str:
+    from nonobtuse.peers import triangle_quality
+
+    try:
+        t = triangle_quality(domain, QUALITY_MIN_ANGLE)
+    except ImportError:
+        return "not measured (the 'triangle' package is not installed; pip install 'nonobtuse[dev]')"
+    return (f"{t['vertices']} points ({t['boundary_steiner']} on boundary/interfaces), smallest angle "
+            f"{t['min_angle']:.2f} deg ({t['seconds']:.2f} s)")
 
 
 def _triangle_pd_summary(domain: Domain) -> str:
