@@ -12,15 +12,27 @@
 // leaves obtuse (Ruppert's encroachment splits; the greedy rule takes a side no such point fixes). Midpoints keep
 // the boundary spacing even: greedy repairs, optimal for the boundary alone, left short subsegments that the
 // interior refinement then had to match (measured: 1.8x Triangle's vertices on p2t_dude instead of 1.7x, 2.5x
-// instead of 1.8x on the demo cross-section). Each new interior vertex has all
+// instead of 1.8x on the demo cross-section).
+//
+// The boundary comes first, as in Triangle: run() starts by splitting every boundary side with an obtuse apex the
+// same way (a no-op when a strategy already made the boundary nonobtuse). With the greedy strategy refine2d.cpp
+// no longer runs the minimal greedy before this: its pieces are far shorter than the input's (0.066 m on the demo
+// cross-section, whose shortest input edge is 5.4 m; 0.18 on p2t_dude against Triangle's 0.5) and every one drew
+// a cascade of interior points. Measured on bench_quality2d (25 and 30 degrees): vertices against Triangle
+// -pq25D went from median 1.065x, max 2.70x to median 1.00x, max 1.70x (demo 1.76x -> 1.00x, p2t_dude 1.72x ->
+// 1.06x, la 1.49x -> 1.14x). Splitting at the foot of the obtuse apex (clamped to the middle half) instead of the
+// midpoint was measured too: max 1.28x (clusters) but the demo at 30 degrees 1.18x and more boundary points;
+// midpoints kept. Each new interior vertex has all
 // the constrained edges of its cavity outside its closed disk, so every triangle it makes on a subsegment has an
 // acute apex: interior points never make a boundary side obtuse, and the certificate of refine2d.cpp still holds.
 //
 // Termination (Ruppert 1995, Shewchuk 1997/2002): with input angles of at least 60 degrees and a bound of at
 // most 20.7 degrees (arcsin(1 / (2 sqrt 2))), each new vertex is at least as far from every other vertex as a
 // constant times the local feature size, so finitely many fit. Off-centers keep that argument and in practice
-// terminate up to about 33 degrees (Ungor; Triangle). Here the greedy repairs after a subsegment split add
-// boundary points that are not midpoints, which the proof does not cover: the budgets are the hard stop.
+// terminate up to about 33 degrees (Ungor; Triangle). The boundary splits are midpoints and shells, as in the proof
+// (the first pass splits sides whose open diametral disk holds their apex: Ruppert's encroachment by a vertex);
+// only the greedy repair of a side no midpoint or shell fixes adds points the proof does not cover, and the
+// strategies other than greedy leave their own boundary points before: the budgets are the hard stop.
 //
 // Small input angles (two input constraints meeting at less than 60 degrees) defeat every such bound: a
 // triangle in the wedge is skinny whatever is inserted. As Triangle does, such triangles are left alone: (1) a
@@ -134,6 +146,8 @@ class QualityRefiner {
 
   Quality2DStats run() {
     const long long placed_before = st_.placed();
+    st_.enqueue_all();  // the boundary first (a no-op after a strategy left it nonobtuse), as Triangle does
+    repair_boundary();
     for (bool more = true; more;) {  // a full scan after the queue drains catches faces changed out of sight
       more = scan() > 0;
       while (!queue_.empty() && st_.budget_left() && st_.interior_points() < budget_) refine_next();

@@ -64,11 +64,15 @@ Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options, Tri
       case RefineStrategy::Projection: refine2d::projection_refine(st); break;
     }
   };
-  run();
+  // With a quality option the greedy strategy's boundary is left to the quality refinement (Ruppert's midpoint
+  // splits, greedy only where they fail; quality2d.cpp says why): the minimal boundary's short pieces would
+  // force the interior to match them.
+  const bool boundary_by_quality = options.quality.enabled() && options.strategy == RefineStrategy::Greedy;
+  if (!boundary_by_quality) run();
   // Rescue: a side can be left violated when no double point near the strategy's choice passes its exact checks
   // (greedy: every candidate lands in a subsegment's disk; any strategy: the point coincides with a vertex).
   // Split such sides near their midpoint and run the strategy again; at most 3 rounds.
-  for (int round = 0; round < 3 && st.budget_left(); ++round) {
+  for (int round = 0; round < 3 && st.budget_left() && !boundary_by_quality; ++round) {
     std::vector<Side> stuck;
     for (const Side& side : st.boundary_sides())
       if (st.is_violated(side)) stuck.push_back(side);

@@ -101,7 +101,8 @@ def _diagnosis(g: _core.Refine2DDiagnosis) -> dict[str, Any]:
 
 def _quality_stats(q: _core.Quality2DStats, min_angle: float | None) -> dict[str, Any]:
     """``stats["quality"]``: ``min_angle`` (the bound asked, degrees, or None), ``interior_points``,
-    ``interior_budget``, ``boundary_splits`` (boundary Steiner points the interior refinement caused),
+    ``interior_budget``, ``boundary_splits`` (boundary Steiner points the quality refinement placed: with the
+    greedy strategy all of them, since it then also refines the boundary),
     ``triangles``, ``bad_triangles`` (left bad outside small-input-angle regions: 0 when converged),
     ``small_angle_triangles`` (skinny triangles left alone near input angles below 60 degrees),
     ``min_angle_degrees`` (every triangle) and ``min_angle_outside_small_angles_degrees`` (floats, computed in
@@ -227,7 +228,12 @@ def refine(
     threads:     1, or 2 and more: the passes over the whole mesh of large inputs (the lower bound, the
                  certificate) run on two threads. The result is the same for any value.
     min_angle, max_area, size, max_interior: interior quality, off by default (Triangle's ``-q``/``-a``).
-                 After the boundary refinement, Delaunay refinement (Ruppert, Chew; Triangle's off-centers)
+                 With the greedy strategy the boundary is then refined as Triangle does rather than
+                 minimally: every side with an obtuse apex split at its midpoint (a power-of-two shell at an
+                 acute input angle; the greedy rule only where no such point passes the exact checks), since
+                 the minimal boundary's short pieces would force the interior to match them (the other
+                 strategies refine the boundary their way first). Then Delaunay refinement (Ruppert, Chew;
+                 Triangle's off-centers)
                  inserts interior points into triangles with an angle below ``min_angle`` degrees (at most
                  40; Ruppert's proof covers 20.7, off-centers terminate in practice up to about 34) or an area
                  above ``max_area``, above ``size[attribute]`` in a region (``size`` a mapping: region
