@@ -19,8 +19,9 @@
 // no longer runs the minimal greedy before this: its pieces are far shorter than the input's (0.066 m on the demo
 // cross-section, whose shortest input edge is 5.4 m; 0.18 on p2t_dude against Triangle's 0.5) and every one drew
 // a cascade of interior points. Measured on bench_quality2d (25 and 30 degrees): vertices against Triangle
-// -pq25D went from median 1.065x, max 2.70x to median 1.00x, max 1.70x (demo 1.76x -> 1.00x, p2t_dude 1.72x ->
-// 1.06x, la 1.49x -> 1.14x). Splitting at the foot of the obtuse apex (clamped to the middle half) instead of the
+// -pq25D went from median 1.065x, max 2.70x to median 1.00x, max 1.69x (demo 1.76x -> 1.00x, p2t_dude 1.72x ->
+// 1.03x, la 1.49x -> 1.02x). Sides on input edges with an input angle below 60 degrees at an end are left to the
+// greedy rule in that first pass (midpoints and shells spent the whole budget at p2t_deadly_quad's 0.17 degrees). Splitting at the foot of the obtuse apex (clamped to the middle half) instead of the
 // midpoint was measured too: max 1.28x (clusters) but the demo at 30 degrees 1.18x and more boundary points;
 // midpoints kept. Each new interior vertex has all
 // the constrained edges of its cavity outside its closed disk, so every triangle it makes on a subsegment has an
@@ -31,7 +32,8 @@
 // constant times the local feature size, so finitely many fit. Off-centers keep that argument and in practice
 // terminate up to about 33 degrees (Ungor; Triangle). The boundary splits are midpoints and shells, as in the proof
 // (the first pass splits sides whose open diametral disk holds their apex: Ruppert's encroachment by a vertex);
-// only the greedy repair of a side no midpoint or shell fixes adds points the proof does not cover, and the
+// only the greedy repair (of a side no midpoint or shell fixes, or one near a small input angle in the first
+// pass, where the proof's premise fails anyway) adds points the proof does not cover, and the
 // strategies other than greedy leave their own boundary points before: the budgets are the hard stop.
 //
 // Small input angles (two input constraints meeting at less than 60 degrees) defeat every such bound: a
