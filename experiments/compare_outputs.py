@@ -42,8 +42,8 @@ def inputs(quick: bool):
 
 
 def corpus_domain(path: Path):
-    """The corpus file as the command reads it, closed by the convex hull when its boundary is open (box.poly);
-    None when validation refuses it either way (cdt_cdt.poly's zero-length segments)."""
+    """The corpus file as the command reads it, closed by the convex hull when its boundary is open
+    (box.poly); None when validation refuses it either way (cdt_cdt.poly's zero-length segments)."""
     from nonobtuse import InvalidInputError
     from nonobtuse.io import load_domain
 
@@ -60,13 +60,15 @@ def outcome(domain) -> dict[str, np.ndarray]:
     from nonobtuse import refine
 
     r = refine(domain)
-    return {"points": r.mesh.points, "status": np.array(r.status), "steiner_points": np.array(r.stats["steiner_points"]),
+    return {"points": r.mesh.points, "status": np.array(r.status),
+            "steiner_points": np.array(r.stats["steiner_points"]),
             "lower_bound": np.array(r.stats["lower_bound"])}
 
 
 def differences(saved: dict[str, np.ndarray], now: dict[str, np.ndarray]) -> list[str]:
     """What differs between two outcomes (empty when identical bit for bit)."""
-    out = [f"{k}: {saved[k]} -> {now[k]}" for k in ("status", "steiner_points", "lower_bound") if saved[k] != now[k]]
+    keys = ("status", "steiner_points", "lower_bound")
+    out = [f"{k}: {saved[k]} -> {now[k]}" for k in keys if saved[k] != now[k]]
     a, b = saved["points"], now["points"]
     if a.shape != b.shape:
         out.append(f"points: shape {a.shape} -> {b.shape}")
@@ -79,7 +81,8 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("mode", choices=("save", "compare"))
     parser.add_argument("dir", type=Path, help="folder of the saved outcomes (outside the repository)")
-    parser.add_argument("--quick", action="store_true", help="only the inputs under 1e4 vertices and the corpus")
+    parser.add_argument("--quick", action="store_true",
+                        help="only the inputs under 1e4 vertices and the corpus")
     args = parser.parse_args(argv)
     args.dir.mkdir(parents=True, exist_ok=True)
     failed = 0
@@ -101,7 +104,8 @@ def main(argv: list[str] | None = None) -> int:
         with np.load(path) as f:
             diff = differences(dict(f), now)
         failed += bool(diff)
-        print(f"{name}: {'; '.join(diff) if diff else 'identical'} ({int(now['steiner_points'])} Steiner points)")
+        verdict = "; ".join(diff) if diff else "identical"
+        print(f"{name}: {verdict} ({int(now['steiner_points'])} Steiner points)")
     if args.mode == "compare":
         print(f"{failed} differ" if failed else "all identical")
     return 1 if failed else 0
