@@ -49,7 +49,7 @@ inline bool encroaches(const Point& s, const Point& e, const Point& q) {
 // lists come from walk_diametral_disk, which only collects vertices on domain sides, so for a boundary edge this
 // is `encroaches`, and for an interface it treats both sides at once (t* = min over both sides' encroachers).
 inline bool inside_diametral_disk(const Point& s, const Point& e, const Point& q) {
-  return CGAL::orientation(s, e, q) != CGAL::COLLINEAR && obtuse(s, q, e);
+  return obtuse(s, q, e) && CGAL::orientation(s, e, q) != CGAL::COLLINEAR;  // the cheap, selective test first
 }
 
 }  // namespace nonobtuse::refine2d

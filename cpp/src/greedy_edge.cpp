@@ -17,15 +17,21 @@ double greedy_parameter(const State& st, const Side& start, const Point& s, cons
     double den = wx * dx + wy * dy;  // > |w|^2 > 0 for an encroacher: (q - s).(e - s) = |q - s|^2 - (s - q).(e - q)
     if (den > 0) order.emplace_back((wx * wx + wy * wy) / den, v);
   }
-  std::sort(order.begin(), order.end(),
-            [](const auto& a, const auto& b) { return std::make_pair(a.first, a.second->info()) <
-                                                      std::make_pair(b.first, b.second->info()); });
+  // Candidates in increasing (t, index), popped from a heap: usually the first one decides, and a point set's
+  // hull edge has a large part of the input in its disk, which a full sort per step would order every time.
+  auto later = [](const auto& a, const auto& b) {
+    return std::make_pair(a.first, a.second->info()) > std::make_pair(b.first, b.second->info());
+  };
+  std::make_heap(order.begin(), order.end(), later);
   // q blocks at the first t >= t_q where [s, s + t d] sees it (paper 4.4: only visible vertices encroach).
   // Subsegments and their disks grow with t, so seeing (either sight) is monotone in t: bisect when q is hidden at
   // t_q (behind a reflex spike, it may come into view later).
   auto seen = [&](double t, Vertex_handle v) { return sees(st, start, s, Point(s.x() + t * dx, s.y() + t * dy), v, sight); };
   double best = 1.0;
-  for (const auto& [tq, v] : order) {
+  while (!order.empty()) {
+    std::pop_heap(order.begin(), order.end(), later);
+    const auto [tq, v] = order.back();
+    order.pop_back();
     if (tq >= best) break;
     double t = tq;
     if (!seen(tq, v)) {

@@ -15,6 +15,11 @@ DiskWalk walk_diametral_disk(const State& st, const Side& side, int lane) {
   WalkLane& scratch = st.lane(lane);
   const unsigned stamp = ++scratch.vertex_lists;
   std::vector<unsigned>& listed = scratch.vertex_stamp;
+  // Obstacles only where they come near the disk (the walk's own pruning test): a sight line from a point of the
+  // edge to a vertex in the disk lies in the closed disk, and covered_from only uses obstacles that meet the
+  // triangle (v, a, b) inside it or end at a or b; the faces reached reach far beyond the disk (a polygon's
+  // fans), and their far constrained edges would make every covered_from linear in them.
+  const DiskReach disk(s, e);
   walk_disk(st, st.domain_faces(side), s, e, [&](Face_handle f) {
     for (int i = 0; i < 3; ++i) {
       const auto index = static_cast<std::size_t>(f->vertex(i)->info());
@@ -24,7 +29,8 @@ DiskWalk walk_diametral_disk(const State& st, const Side& side, int lane) {
         reached.push_back(f->vertex(i));
       }
       Vertex_handle u = f->vertex(CDT::ccw(i)), w = f->vertex(CDT::cw(i));
-      if (f->is_constrained(i) && !((u == side.s && w == side.e) || (u == side.e && w == side.s)))
+      if (f->is_constrained(i) && !((u == side.s && w == side.e) || (u == side.e && w == side.s)) &&
+          disk.near(u->point(), w->point()))
         out.obstacles.emplace_back(u->point(), w->point());
     }
     return false;
@@ -44,6 +50,20 @@ bool sees(const State& st, const Side& start, const Point& a, const Point& b, Ve
   return found;
 }
 
+// Exact: the closed segment [c1, c2] (c1 != c2) meets the closed triangle (p, q, r) (not degenerate). Two
+// disjoint compact convex sets are strictly separated by a line parallel to an edge of one of them (separating
+// axes), so they are disjoint iff both ends lie strictly beyond one edge's line, or the three corners strictly on
+// one side of the segment's line. Orientations only: filtered predicates, no constructions (CGAL's do_intersect
+// constructs line intersections, exactly in rationals whenever an end lies on a side's line).
+bool segment_meets_triangle(const Point& c1, const Point& c2, const Point& p, const Point& q, const Point& r) {
+  for (const auto& [u, w, x] : {std::tie(p, q, r), std::tie(q, r, p), std::tie(r, p, q)}) {
+    const auto outside = -CGAL::orientation(u, w, x);
+    if (CGAL::orientation(u, w, c1) == outside && CGAL::orientation(u, w, c2) == outside) return false;
+  }
+  const auto o = CGAL::orientation(c1, c2, p);
+  return o == CGAL::COLLINEAR || CGAL::orientation(c1, c2, q) != o || CGAL::orientation(c1, c2, r) != o;
+}
+
 // The closed angular intervals the obstacles shade, seen from v, cover the open wedge from a to b. An obstacle
 // shades the directions of its part in front of (a, b), inside the triangle (v, a, b): a constraint meets the line
 // ab inside [a, b] at most at a or b (constraints do not cross the edge; a or b may be its vertices), so one ending
@@ -55,18 +75,12 @@ bool covered_from(const Point& v, const Point& a, const Point& b, const std::vec
   // Counter-clockwise order of directions from v; valid for directions less than 180 degrees apart, which holds
   // for every pair compared below (each obstacle kept meets the wedge and spans less than 180 degrees).
   auto before = [&v](const Point& p, const Point& q) { return CGAL::orientation(v, p, q) == CGAL::LEFT_TURN; };
-  const K::Triangle_2 tri(v, a, b);
   std::vector<Segment2> shades;
   const auto v_side = CGAL::orientation(a, b, v);
   auto in_front = [&](const Point& c1, const Point& c2) {
     if (c1 == a || c1 == b) return CGAL::orientation(a, b, c2) == v_side;
     if (c2 == a || c2 == b) return CGAL::orientation(a, b, c1) == v_side;
-    // Both ends strictly beyond one side's line: it misses the triangle (a cheap exact test first).
-    for (const auto& [p, q, r] : {std::tie(v, a, b), std::tie(a, b, v), std::tie(b, v, a)}) {
-      const auto inside = CGAL::orientation(p, q, r);
-      if (CGAL::orientation(p, q, c1) == -inside && CGAL::orientation(p, q, c2) == -inside) return false;
-    }
-    return CGAL::do_intersect(K::Segment_2(c1, c2), tri);
+    return segment_meets_triangle(c1, c2, v, a, b);
   };
   for (const auto& [c1, c2] : obstacles) {
     auto o = CGAL::orientation(v, c1, c2);

@@ -10,7 +10,8 @@ namespace nonobtuse::refine2d {
 // What the walk over the diametral disk of a side found.
 struct DiskWalk {
   std::vector<Vertex_handle> encroachers;  // vertices strictly inside the open half-disk, reachable from the side
-  std::vector<Segment2> obstacles;         // the constrained edges of the faces reached, other than the side's own
+  std::vector<Segment2> obstacles;         // the constrained edges of the faces reached that come near the disk
+                                           // (DiskReach), other than the side's own
 };
 
 // How a vertex strictly inside the open diametral disk of a subsegment [a, b] of an edge counts as its encroacher.
@@ -25,6 +26,10 @@ struct DiskWalk {
 struct Sight {
   const std::vector<Segment2>* obstacles = nullptr;
 };
+
+// Exact: the closed segment [c1, c2] (c1 != c2) meets the closed triangle (p, q, r) (not degenerate). Orientation
+// predicates only.
+bool segment_meets_triangle(const Point& c1, const Point& c2, const Point& p, const Point& q, const Point& r);
 
 // Exact: the closed segments `obstacles` block every sight line from v to the open segment (a, b) (v off its line;
 // obstacles ending at v are ignored).
@@ -74,18 +79,24 @@ void walk(const State& st, const std::vector<Face_handle>& start, Crosses&& cros
   }
 }
 
+// The closed diametral disk of [a, b] in doubles, for pruning: near(u, w) when the segment [u, w] comes within
+// the radius (with slack: a little too far rather than too little).
+struct DiskReach {
+  double cx, cy, reach;
+  DiskReach(const Point& a, const Point& b)
+      : cx(0.5 * (a.x() + b.x())), cy(0.5 * (a.y() + b.y())),
+        reach(0.25 * CGAL::to_double(CGAL::squared_distance(a, b)) * (1 + 1e-9) + 1e-300) {}
+  bool near(const Point& u, const Point& w) const { return distance2_to_segment(cx, cy, u, w) <= reach; }
+};
+
 // walk into the faces meeting the closed diametral disk of [a, b] (float pruning with slack: a little too far).
 template <class Visit>
 void walk_disk(const State& st, const std::vector<Face_handle>& start, const Point& a, const Point& b, Visit&& visit,
                int lane = 0) {
-  double cx = 0.5 * (a.x() + b.x()), cy = 0.5 * (a.y() + b.y());
-  double r2 = 0.25 * CGAL::to_double(CGAL::squared_distance(a, b));
-  double reach = r2 * (1 + 1e-9) + 1e-300;  // pruning slack: walk a little too far rather than too little
+  const DiskReach disk(a, b);
   // The union of (face ∩ disk) along the walk stays connected: consecutive faces share a piece of the crossed
   // edge inside the disk.
-  walk(
-      st, start, [&](const Point& u, const Point& w) { return distance2_to_segment(cx, cy, u, w) <= reach; }, visit,
-      lane);
+  walk(st, start, [&](const Point& u, const Point& w) { return disk.near(u, w); }, visit, lane);
 }
 
 }  // namespace nonobtuse::refine2d

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <vector>
 
 #include "refine2d_fixtures.h"
@@ -26,6 +27,27 @@ TEST(Visibility, CoveredFromShadesOnlyInFront) {
   // Ending at the segment's end a: shades only when it enters v's side.
   EXPECT_FALSE(covered_from(v, a, b, {{a, Point(-1, -3)}, {Point(-0.5, 2), Point(3, 2)}}));
   EXPECT_TRUE(covered_from(v, a, b, {{a, Point(3, 3)}}));
+}
+
+// segment_meets_triangle against CGAL's do_intersect on every segment between points of a 5 x 5 grid and a few
+// triangles on it: ends on sides' lines, at corners, segments along sides, through a corner (the touching cases).
+TEST(Visibility, SegmentMeetsTriangleAgreesWithDoIntersect) {
+  std::vector<Point> grid;
+  for (int x = 0; x < 5; ++x)
+    for (int y = 0; y < 5; ++y) grid.emplace_back(x, y);
+  const std::vector<std::array<Point, 3>> triangles = {
+      {Point(1, 1), Point(3, 1), Point(1, 3)}, {Point(0, 0), Point(4, 2), Point(2, 4)}, {Point(1, 2), Point(3, 3), Point(2, 1)}};
+  int meets = 0, misses = 0;
+  for (const auto& [p, q, r] : triangles)
+    for (const Point& c1 : grid)
+      for (const Point& c2 : grid) {
+        if (c1 == c2) continue;
+        const bool expected = CGAL::do_intersect(K::Segment_2(c1, c2), K::Triangle_2(p, q, r));
+        ASSERT_EQ(segment_meets_triangle(c1, c2, p, q, r), expected) << c1 << " " << c2 << " / " << p << " " << q << " " << r;
+        ++(expected ? meets : misses);
+      }
+  EXPECT_GT(meets, 0);
+  EXPECT_GT(misses, 0);
 }
 
 // Figure 3 (greedy_refine_test.cpp): the walk over the disk of e = (0,0) -> (100,0) finds exactly the two inner

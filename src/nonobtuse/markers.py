@@ -40,8 +40,8 @@ def as_int32(markers: np.ndarray, where: str) -> np.ndarray:
 
 
 def _edge_keys(edges: np.ndarray, n: int) -> np.ndarray:
-    e = np.sort(np.asarray(edges, dtype=np.int64).reshape(-1, 2), axis=1)
-    return e[:, 0] * n + e[:, 1]
+    e = np.asarray(edges, dtype=np.int64).reshape(-1, 2)
+    return np.minimum(e[:, 0], e[:, 1]) * n + np.maximum(e[:, 0], e[:, 1])
 
 
 def segment_parents(segments: np.ndarray, n_input: int, input_segments: np.ndarray) -> np.ndarray:
@@ -88,7 +88,8 @@ def segment_parents(segments: np.ndarray, n_input: int, input_segments: np.ndarr
 def on_boundary(segments: np.ndarray, triangles: np.ndarray, n: int) -> np.ndarray:
     """(k,) bool: which ``segments`` (k, 2) have a triangle of ``triangles`` (m, 3) on one side only. Only
     triangle edges between two segment vertices are counted (every boundary edge of a constrained
-    triangulation is a segment), so the cost is O(m) plus a sort of those few edges."""
+    triangulation is a segment), so the cost is O(m) plus a sort of those edges (every edge of a polygon
+    without interior points) and a binary search per segment."""
     segments = np.asarray(segments, dtype=np.int64).reshape(-1, 2)
     t = np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
     on_segment = np.zeros(n, dtype=bool)
@@ -98,8 +99,10 @@ def on_boundary(segments: np.ndarray, triangles: np.ndarray, n: int) -> np.ndarr
     for i, j in ((0, 1), (1, 2), (2, 0)):
         near = np.flatnonzero(corner_on_segment[:, i] & corner_on_segment[:, j])
         keys.append(_edge_keys(np.column_stack([t[near, i], t[near, j]]), n))
-    unique, count = np.unique(np.concatenate(keys), return_counts=True)
-    return np.isin(_edge_keys(segments, n), unique[count == 1])
+    edges = np.sort(np.concatenate(keys))
+    segment_keys = _edge_keys(segments, n)
+    sides = np.searchsorted(edges, segment_keys, side="right") - np.searchsorted(edges, segment_keys)
+    return sides == 1
 
 
 def segment_markers(
@@ -144,8 +147,9 @@ def point_markers(
     if input_point_markers is not None:
         own = np.flatnonzero(input_point_markers != 0)
         out[own] = input_point_markers[own]
-    corners = np.unique(np.asarray(segments, dtype=np.int64).reshape(-1, 2)[boundary])
-    out[corners[out[corners] == 0]] = 1
+    corner = np.zeros(n, dtype=bool)
+    corner[np.asarray(segments, dtype=np.int64).reshape(-1, 2)[boundary].ravel()] = True
+    out[corner & (out == 0)] = 1
     return out
 
 
