@@ -37,7 +37,7 @@ def assert_certified(res, plc: PLC) -> None:
 @pytest.mark.parametrize(("family", "theta"), [("segment_facet", 5.0), ("segment_facet", 1.0)])
 def test_protected_strategy_converges_on_small_segment_facet_angles(family, theta):
     plc = make_plc(family, theta)
-    res = refine_gabriel(plc, split="protected", time_limit=30)
+    res = refine_gabriel(plc, split="protected")
     assert_certified(res, plc)
     assert res.stats["strategy"] == "protected"
     assert res.stats["protecting_balls"] == 1  # the foot; the box's edges lie in its facets
@@ -47,7 +47,7 @@ def test_protected_strategy_converges_on_small_segment_facet_angles(family, thet
                                                            ("segment_facet", 5.0, "shells+protected")])
 def test_default_strategy_converges_on_small_angle_families(family, theta, strategy):
     plc = make_plc(family, theta)
-    res = refine_gabriel(plc, time_limit=30)
+    res = refine_gabriel(plc)
     assert_certified(res, plc)
     assert res.stats["strategy"] == strategy
 
@@ -79,7 +79,7 @@ def test_schonhardt_with_orientation_fixed_reports_both_attempts():
     if not path.exists():
         pytest.skip("../shared/data not present")
     plc = load_plc(path)  # load_plc orients it (orientation is never refused)
-    res = refine_gabriel(plc, max_steiner=2_000, time_limit=20)
+    res = refine_gabriel(plc, max_steiner=2_000)
     assert (res.status == "converged") == check_gabriel(res.mesh).ok
     if res.status != "converged":
         assert res.stats["strategy"] == "shells"
@@ -93,7 +93,7 @@ def test_generated_schonhardt_converges_through_the_fallback():
     # The generated Schönhardt prism (twisted 30 degrees): shells alone run down to min_length at its
     # segment-facet angles; the protected rerun converges with a few dozen points.
     plc = load_plc(CORPUS / "schonhardt.off")
-    res = refine_gabriel(plc, time_limit=30)
+    res = refine_gabriel(plc)
     assert_certified(res, plc)
     assert res.stats["strategy"] == "shells+protected"
     assert res.stats["other_attempt"].startswith("shells: min_length_reached")
@@ -112,6 +112,6 @@ def test_gyroid_converges_past_cospherical_circumcenters():
     # pair whose circumcenter (already inserted) is 2e-16 from it. That circumcenter is refused instead of
     # ending the run at min_length; the mesh converges and keeps no edge of rounding length.
     plc = load_plc(CORPUS / "mc_gyroid.off")
-    res = refine_gabriel(plc, split="protected", time_limit=120)
+    res = refine_gabriel(plc, split="protected")
     assert_certified(res, plc)
     assert closest_pair(res.mesh.points) >= res.stats["min_length"]

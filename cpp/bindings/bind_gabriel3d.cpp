@@ -79,6 +79,8 @@ void bind_result_classes(py::module_& m) {
                              "'converged', 'budget_exhausted', 'min_length_reached' or 'stalled'")
       .def_readonly("max_steiner", &Result::max_steiner, "the Steiner budget used (its default resolved)")
       .def_readonly("min_length", &Result::min_length, "the minimum length used (its default resolved)")
+      .def_readonly("max_work", &Result::max_work, "the work budget of each strategy pass (its default resolved)")
+      .def_readonly("work", &Result::work, "the work units spent by every attempt together")
       .def_readonly("steiner_on_segments", &Result::steiner_on_segments)
       .def_readonly("greedy_splits", &Result::greedy_splits)
       .def_readonly("strategy", &Result::strategy,
@@ -117,7 +119,7 @@ void bind_gabriel3d(py::module_& m) {
       "refine_gabriel",
       [](const DoubleArray& points, const IndexArray& triangles, const IndexArray& facet_ids,
          const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions, long max_steiner,
-         double min_length, double time_limit, const std::string& split, bool protected_fallback,
+         double min_length, long max_work, double time_limit, const std::string& split, bool protected_fallback,
          long progress_every,
          const std::optional<std::function<void(long, long, long, double)>>& progress) {
         PLC3 plc = to_plc3(points, triangles, facet_ids, segments, holes, regions);
@@ -131,6 +133,7 @@ void bind_gabriel3d(py::module_& m) {
         Refine3DOptions o;
         o.max_steiner = max_steiner;
         o.min_length = min_length;
+        o.max_work = max_work;
         o.time_limit = time_limit;
         o.split = rules.at(split);
         o.protected_fallback = protected_fallback;
@@ -144,9 +147,9 @@ void bind_gabriel3d(py::module_& m) {
         return refine_gabriel(plc, o);
       },
       py::arg("points"), py::arg("triangles"), py::arg("facet_ids"), py::arg("segments"), py::arg("holes"),
-      py::arg("regions"), py::arg("max_steiner"), py::arg("min_length"), py::arg("time_limit"), py::arg("split"),
+      py::arg("regions"), py::arg("max_steiner"), py::arg("min_length"), py::arg("max_work"), py::arg("time_limit"), py::arg("split"),
       py::arg("protected_fallback"), py::arg("progress_every"), py::arg("progress"),
-      "Gabriel refinement of a PLC. max_steiner < 0, min_length < 0: the defaults of Refine3DOptions (gabriel3d.h).\n"
+      "Gabriel refinement of a PLC. max_steiner < 0, min_length < 0, max_work < 0: the defaults of Refine3DOptions (gabriel3d.h).\n"
       "progress: None or f(steiner, encroached_segments, encroached_facets, seconds).\n"
       "Returns a Refine3DResult.");
 }

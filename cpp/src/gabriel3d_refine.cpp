@@ -8,6 +8,7 @@
 #include <string>
 
 #include "gabriel3d_protect.h"
+#include "gabriel3d_refine.h"
 
 namespace nonobtuse::gabriel3d {
 namespace {
@@ -56,6 +57,9 @@ class Refiner {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }
   bool out_of_time() const { return seconds() > o_.time_limit; }
+  // Work units (Refine3DOptions::max_work): counted by every exact encroachment query, and by add_work.
+  long work() const { return work_; }
+  void add_work(std::size_t units) { work_ += static_cast<long>(units); }
   long steiner_on_segments = 0, steiner_on_facets = 0, greedy_splits = 0;
 
  private:
@@ -63,6 +67,7 @@ class Refiner {
   std::vector<Key> encroached_subsegments() const;
   std::vector<SubfacetRef> encroached_subfacets() const;
   bool encroached(int a, int b, int c) const {
+    ++work_;
     return deepest_encroacher(s_.points, index_, a, b, c).vertex >= 0;
   }
   // A subfacet (a, b, c) of facet f encroached in 3D, not counting points of f that the facet's triangulation
@@ -72,6 +77,7 @@ class Refiner {
   // of f inside the 2D circumcircle lie behind a subsegment and do count. The exact check of the final mesh is
   // authoritative either way; repair() fixes what it finds.
   bool subfacet_encroached(int f, int a, int b, int c) const {
+    ++work_;
     const Facet& facet = *s_.facets[f];
     const Q2 &pa = facet.vertex.at(a)->point(), &pb = facet.vertex.at(b)->point(), &pc = facet.vertex.at(c)->point();
     auto artifact = [&](int t) {
@@ -101,12 +107,15 @@ class Refiner {
   PointIndex index_;
   std::chrono::steady_clock::time_point start_;
   long last_encroached_segments_ = 0, last_encroached_facets_ = 0;
+  mutable long work_ = 0;  // counted in const queries: the count is the cost, not part of the state
   std::vector<bool> acute_;  // per input vertex: two input segments meet there at an acute angle
 };
 
 std::optional<Stop> Refiner::budget_left() const {
   if (steiner_on_segments + steiner_on_facets >= o_.max_steiner)
     return Stop{RefineStatus::BudgetExhausted, "max_steiner (" + std::to_string(o_.max_steiner) + ") reached"};
+  if (work_ >= o_.max_work)
+    return Stop{RefineStatus::BudgetExhausted, "max_work (" + std::to_string(o_.max_work) + " work units) reached"};
   if (out_of_time())
     return Stop{RefineStatus::BudgetExhausted, "time_limit (" + std::to_string(o_.time_limit) + " s) reached"};
   return std::nullopt;
@@ -448,29 +457,10 @@ double smallest_subsegment(const PlcState& s) {
 }  // namespace
 }  // namespace nonobtuse::gabriel3d
 
-namespace nonobtuse {
-
-namespace {
-
-// The options with the defaults of Refine3DOptions resolved for `plc` (the field comments state them).
-Refine3DOptions with_defaults(const PLC3& plc, Refine3DOptions o) {
-  if (o.max_steiner < 0) o.max_steiner = 10 * static_cast<long>(plc.points.size()) + 10000;
-  if (o.min_length < 0) {
-    double d2 = 0;
-    for (auto c : {&Point3::x, &Point3::y, &Point3::z}) {
-      auto [lo, hi] = std::minmax_element(plc.points.begin(), plc.points.end(),
-                                          [c](const Point3& a, const Point3& b) { return a.*c < b.*c; });
-      const double extent = plc.points.empty() ? 0.0 : (*hi).*c - (*lo).*c;
-      d2 += extent * extent;
-    }
-    o.min_length = 1e-6 * std::sqrt(d2);
-  }
-  return o;
-}
+namespace nonobtuse::gabriel3d {
 
 Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool ignore_frame_artifacts,
                           bool protect) {
-  using namespace gabriel3d;
   PlcState s = build_plc_state(plc);
   Refine3DResult out;
   out.diagnosis.smallest_angles = smallest_input_angles(s);
@@ -491,6 +481,7 @@ Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool
   for (;;) {
     if (!stop) stop = refiner.run();
     mesh = restrict_delaunay(s, plc);
+    refiner.add_work(s.points.size());
     out.points.clear();
     for (const auto& p : s.points) out.points.push_back(from_cgal(p));
     segments.clear();
@@ -517,6 +508,7 @@ Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool
     // The check stops at time_limit too: a certificate with unchecked rows is never clean.
     out.certificate = check_gabriel_until(s.points, mesh.boundary_faces, out.segments,
                                           [&] { return refiner.out_of_time(); });
+    refiner.add_work(mesh.boundary_faces.size() + out.segments.size());
     if (options.progress)  // each round rebuilds the Delaunay mesh and checks it: seconds on big inputs
       options.progress({refiner.steiner_on_segments + refiner.steiner_on_facets,
                         static_cast<long>(out.certificate.segments.size()),
@@ -549,71 +541,8 @@ Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool
     out.diagnosis.stop_reason = stop->reason;
   }
   out.seconds = refiner.seconds();
+  out.work = refiner.work();
   return out;
 }
 
-const char* rule_name(SplitRule rule) {
-  switch (rule) {
-    case SplitRule::Midpoint: return "midpoint";
-    case SplitRule::Shells: return "shells";
-    case SplitRule::Greedy: return "greedy";
-    case SplitRule::Protected: return "protected";
-  }
-  return "shells";
-}
-
-// First without the frame-rounding encroachers (fewest Steiner points). When that stalls (the Delaunay faces
-// that cover a facet then sit on rounding-level slivers whose circumcenters coincide with existing vertices),
-// once more from the input counting them: their extra points usually break the near-cospherical ties.
-// The second attempt only runs while time_limit has time left (else it would return the bare input).
-Refine3DResult refine_with(const PLC3& plc, const Refine3DOptions& options, bool protect) {
-  Refine3DResult first = refine_once(plc, options, true, protect);
-  first.max_steiner = options.max_steiner;
-  first.min_length = options.min_length;
-  if (first.status != RefineStatus::Stalled || first.seconds >= options.time_limit) return first;
-  Refine3DOptions rest = options;
-  rest.time_limit = std::max(0.0, options.time_limit - first.seconds);
-  Refine3DResult second = refine_once(plc, rest, false, protect);
-  second.seconds += first.seconds;
-  second.diagnosis.stop_reason += " (second attempt; the first stalled: " + first.diagnosis.stop_reason + ")";
-  second.max_steiner = options.max_steiner;
-  second.min_length = options.min_length;
-  return second;
-}
-
-}  // namespace
-
-// The fast first pass with the requested rule; where it does not converge, the protected strategy from the input
-// (with the same Steiner budget and the time left), whose result is returned if it converged; else the first
-// pass's, which costs no more points than before the fallback existed. split == Protected runs only that strategy.
-Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& given) {
-  const Refine3DOptions options = with_defaults(plc, given);
-  const bool protect_first = options.split == SplitRule::Protected;
-  Refine3DOptions first_options = options;
-  if (protect_first) first_options.split = SplitRule::Shells;
-  Refine3DResult first = refine_with(plc, first_options, protect_first);
-  first.strategy = rule_name(options.split);
-  if (protect_first || !options.protected_fallback || first.status == RefineStatus::Converged ||
-      first.seconds >= options.time_limit)
-    return first;
-  Refine3DOptions rest = options;
-  rest.split = SplitRule::Shells;
-  rest.time_limit = std::max(0.0, options.time_limit - first.seconds);
-  Refine3DResult second = refine_with(plc, rest, true);
-  const double seconds = first.seconds + second.seconds;
-  auto summary = [](const Refine3DResult& r) {
-    return r.strategy + ": " + to_string(r.status) + " (" + r.diagnosis.stop_reason + ")";
-  };
-  second.strategy = "protected";
-  if (second.status != RefineStatus::Converged) {
-    first.other_attempt = summary(second);
-    first.seconds = seconds;
-    return first;
-  }
-  second.other_attempt = summary(first);
-  second.strategy = std::string(rule_name(options.split)) + "+protected";
-  second.seconds = seconds;
-  return second;
-}
-
-}  // namespace nonobtuse
+}  // namespace nonobtuse::gabriel3d

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -73,7 +74,15 @@ struct Refine3DOptions {
   // subsegments are >= 8e-5 of it; runs caught in a small-angle cascade end at it with MinLengthReached instead
   // of spinning down to 1e-17 subsegments until the budget or a stall).
   double min_length = -1.0;
-  double time_limit = 60.0;  // seconds
+  // Wall-clock seconds for everything (both strategies and the exact checks); infinity (the default) sets none, so
+  // that the outcome does not depend on the machine's speed or load. An explicit limit is reported as such.
+  double time_limit = std::numeric_limits<double>::infinity();
+  // The deterministic work budget of each strategy pass (the first pass and the protected rerun get one each, so the
+  // rerun never inherits what the first pass spent): one unit per exact encroachment query of a subsegment or a
+  // subfacet in the repair's scans and splits, per row of each exact check of the Delaunay mesh and per point of
+  // each Delaunay rebuild. Work is proportional to time on one machine and the same on every machine. < 0 selects
+  // 2000 (n + t + s) + 2 10^7 for n PLC points, t triangles and s segments (see with_defaults).
+  long max_work = -1;
   SplitRule split = SplitRule::Shells;
   bool protected_fallback = true;  // run the protected strategy when the split rule's pass does not converge
   long progress_every = 1000;  // insertions between progress calls; one more after each exact check of the mesh
@@ -110,6 +119,8 @@ struct Refine3DResult {
   RefineStatus status = RefineStatus::Stalled;
   long max_steiner = 0;     // the limits the run used (options' defaults resolved)
   double min_length = 0.0;
+  long max_work = 0;
+  long work = 0;  // the work units spent, by every attempt together (see Refine3DOptions::max_work)
   // The strategy that produced this result: the split rule's name ("shells", "greedy", "midpoint", "protected"),
   // or "<rule>+protected" when the rule's pass did not converge and the protected strategy, run from the input,
   // did. other_attempt: "" when one strategy ran, else the status and stop reason of the attempt not returned.
@@ -132,19 +143,20 @@ struct Refine3DResult {
 // encroached subfacets (at their circumcenter, or the subsegment that point encroaches or lies beyond) until every
 // subsegment and subfacet has an empty open diametral sphere, then returns the Delaunay tetrahedralization of all
 // vertices restricted to the PLC's interior (flood fill from outside across boundary faces; hole seeds removed).
-// Steiner points lie on segments and facets (up to rounding of their coordinates). Stops at max_steiner, min_length,
-// time_limit, or when no progress is possible (stalled). time_limit also bounds the exact check of the result (rows
+// Steiner points lie on segments and facets (up to rounding of their coordinates). Stops at max_steiner, max_work,
+// min_length, time_limit (none by default), or when no progress is possible (stalled). time_limit also bounds the exact check of the result (rows
 // it did not reach: certificate.unchecked_*); only the final Delaunay tetrahedralization, O(n log n), runs past it.
 // A stopped run whose tetrahedralization does not conform to every facet returns the subfacets and no tets
 // (volume_mesh says so). status == Converged iff the exact check of the returned mesh passes. The facets' boundary
 // edges count as segments (their subsegments are returned and checked).
 // Strategy: the pass with options.split first; when it ends without converging (and time is left, and
 // protected_fallback is set), the protected strategy (SplitRule::Protected) runs from the input with the same
-// max_steiner and the rest of time_limit; its result is returned if it converged, else the first pass's
+// max_steiner, its own max_work and the rest of time_limit; its result is returned if it converged, else the first pass's
 // (strategy and other_attempt say which). Protecting balls keep the split points of a
 // segment and a facet meeting at a small angle off the apex, which ends the cascade there (the termination argument
 // and what it does not cover are at arc_split_point in gabriel3d_protect.cpp).
-// Deterministic. Throws InvalidInput on malformed input (index out of range, duplicate points, degenerate
+// Deterministic: without a time_limit, the same input and options give the same result on every machine.
+// Throws InvalidInput on malformed input (index out of range, duplicate points, degenerate
 // triangles, facet edges crossing or passing through a vertex, facet vertices coinciding in the facet's plane).
 Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& options);
 

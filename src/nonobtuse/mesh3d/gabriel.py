@@ -94,14 +94,17 @@ class Gabriel3DResult:
             facet ids and face_markers = those facets' markers; tet_regions = the region attribute of every
             tet when the PLC has regions; segments = the subsegments of the PLC segments and of the facets'
             boundary edges).
-    status: "converged" (the exact check of mesh passes), "budget_exhausted" (max_steiner or time_limit),
+    status: "converged" (the exact check of mesh passes), "budget_exhausted" (max_steiner, max_work or
+            time_limit),
             "min_length_reached" or "stalled" (no split could make progress).
     stats:  steiner_points, steiner_on_segments, steiner_on_facets, encroached_facets, encroached_segments
             (the certificate of mesh as returned), unchecked_faces, unchecked_segments (rows the certificate
             did not reach before time_limit; the status is then "budget_exhausted" or the earlier stop's),
             volume_mesh ("built", or why mesh.tets is empty: a stop left the Delaunay mesh not conforming to
             some facet; boundary_faces are then the subfacets, oriented like the input triangles),
-            smallest_subsegment, max_steiner and min_length (the values used), seconds (wall time from
+            smallest_subsegment, max_steiner, min_length and max_work (the values used; max_work bounds
+            each strategy pass), time_limit (as given; None: none), work (units spent by every attempt
+            together), seconds (wall time from
             refine_gabriel's ``started``), diagnosis (smallest input angles with kind/degrees/vertices/facets,
             Steiner points per input vertex and per input segment, stop_reason), warnings (the PLC's, from
             validation), negative_couplings (edges of mesh whose control-volume coupling is negative,
@@ -224,12 +227,13 @@ def refine_gabriel(
     plc: PLC,
     max_steiner: int | None = None,
     min_length: float | None = None,
-    time_limit: float = 60.0,
+    time_limit: float | None = None,
     split: Literal["shells", "midpoint", "greedy", "protected"] = "shells",
     protected_fallback: bool = True,
     progress: Callable[[int, int, int, float], None] | bool | None = None,
     progress_every: int = 1000,
     started: float | None = None,
+    max_work: int | None = None,
 ) -> Gabriel3DResult:
     """Add Steiner points on the PLC's segments and facets until every subfacet and subsegment is Gabriel.
 
@@ -252,9 +256,14 @@ def refine_gabriel(
     "shells+protected" after a fallback), stats["other_attempt"] the status and stop reason of the attempt not
     returned ("" when one ran), stats["protecting_balls"] the apices protected. The facets' boundary edges
     count as segments. Stops at max_steiner (None: the core's default, ``Refine3DOptions::max_steiner`` in
-    ``gabriel3d.h``, linear in the number of input points), time_limit (seconds), min_length (no split may
+    ``gabriel3d.h``, linear in the number of input points), max_work (a deterministic work budget of each
+    strategy pass, the first and the protected rerun one each: exact encroachment queries plus rows of the
+    exact checks plus points of the Delaunay rebuilds; None: the core's default, linear in the input size),
+    time_limit (seconds; None, the default: no wall-clock limit, so the outcome does not depend on the
+    machine), min_length (no split may
     create a shorter edge; None: the core's default, a small fraction of the bounding box diagonal; 0 turns it
-    off) or when stalled; the status says which, and stats["max_steiner"] / ["min_length"] the limits used.
+    off) or when stalled; the status says which, stats["max_steiner"] / ["min_length"] / ["max_work"] /
+    ["time_limit"] the limits used and stats["work"] the work units spent by every attempt together.
     time_limit bounds the refinement and the exact check of the result (not the final Delaunay
     tetrahedralization, O(n log n)); rows the check did not reach are counted in
     stats["unchecked_faces"] / ["unchecked_segments"].
@@ -270,7 +279,7 @@ def refine_gabriel(
     """
     started = time.perf_counter() if started is None else started
     callback = _print_progress if progress is True else (progress or None)
-    _check_limits(max_steiner, min_length, time_limit)
+    _check_limits(max_steiner, min_length, time_limit, max_work)
     points = np.ascontiguousarray(np.asarray(plc.points, dtype=np.float64).reshape(-1, 3))
     e = power_of_two_exponent(points)  # the core works on points * 2^-e, exactly
     regions = np.ascontiguousarray(np.asarray(plc.regions, dtype=np.float64).reshape(-1, 4))
@@ -284,7 +293,8 @@ def refine_gabriel(
         regions,
         -1 if max_steiner is None else int(max_steiner),
         -1.0 if min_length is None else float(np.ldexp(min_length, -e)),
-        max(0.0, float(time_limit) - (time.perf_counter() - started)),
+        -1 if max_work is None else int(max_work),
+        math.inf if time_limit is None else max(0.0, float(time_limit) - (time.perf_counter() - started)),
         split,
         bool(protected_fallback),
         int(progress_every),
@@ -313,6 +323,9 @@ def refine_gabriel(
         "smallest_subsegment": float(np.ldexp(r.smallest_subsegment, e)),
         "max_steiner": r.max_steiner,
         "min_length": float(np.ldexp(r.min_length, e)),
+        "max_work": r.max_work,
+        "work": r.work,
+        "time_limit": time_limit,
         "volume_mesh": r.volume_mesh,
         "seconds": None,  # set last, below
         "diagnosis": _diagnosis(r.diagnosis),
@@ -339,16 +352,16 @@ def refine_gabriel(
     return Gabriel3DResult(mesh=mesh, status=cast(Status, status), stats=stats, report=report)
 
 
-def _check_limits(max_steiner: Any, min_length: Any, time_limit: Any) -> None:
-    """InvalidInputError unless max_steiner is None or an integer in [0, 2^62), min_length is None or finite
-    and >= 0, and time_limit is finite and >= 0 (negative values would select the core's defaults)."""
-    if max_steiner is not None and (
-        isinstance(max_steiner, bool) or not isinstance(max_steiner, (int, np.integer))
-        or not 0 <= max_steiner < 2**62
-    ):
-        raise InvalidInputError(f"max_steiner must be an integer in [0, 2^62), got {max_steiner!r}")
+def _check_limits(max_steiner: Any, min_length: Any, time_limit: Any, max_work: Any = None) -> None:
+    """InvalidInputError unless max_steiner and max_work are None or integers in [0, 2^62), and min_length and
+    time_limit are None or finite and >= 0 (negative values would select the core's defaults)."""
+    for name, count in (("max_steiner", max_steiner), ("max_work", max_work)):
+        if count is not None and (
+            isinstance(count, bool) or not isinstance(count, (int, np.integer)) or not 0 <= count < 2**62
+        ):
+            raise InvalidInputError(f"{name} must be an integer in [0, 2^62), got {count!r}")
     for name, value in (("min_length", min_length), ("time_limit", time_limit)):
-        if value is None and name == "min_length":
+        if value is None:
             continue
         if isinstance(value, bool) or not isinstance(value, (int, float, np.number)) or not (
             math.isfinite(value) and value >= 0

@@ -1,0 +1,17 @@
+// Internal: one pass of the Gabriel refinement of a PLC (gabriel3d_refine.cpp); the strategy that chooses and
+// combines passes is in gabriel3d_strategy.cpp.
+#pragma once
+#include "nonobtuse/gabriel3d.h"
+
+namespace nonobtuse::gabriel3d {
+
+// One pass from the input with `options` (defaults resolved) and options.split's rule for the subsegments: refine the
+// subfacets, restrict the Delaunay tetrahedralization, check it exactly, repair what the check finds, until clean or
+// a stop (max_steiner, max_work, min_length, time_limit, stalled). ignore_frame_artifacts: do not count points of a
+// facet that its 2D triangulation sees outside a subfacet's circumcircle as encroaching it (see
+// Refiner::subfacet_encroached). protect: protecting balls at the apex vertices (gabriel3d_protect.h).
+// Fills everything of the result but strategy, other_attempt, max_steiner, min_length and max_work.
+Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool ignore_frame_artifacts,
+                           bool protect);
+
+}  // namespace nonobtuse::gabriel3d

@@ -1,0 +1,106 @@
+// The strategy of the Gabriel refinement: the fast first pass with the requested split rule, then, where it does not
+// converge, the protected strategy from the input; each pass within its own deterministic work budget.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "gabriel3d_refine.h"
+
+namespace nonobtuse {
+
+namespace {
+
+// The options with the defaults of Refine3DOptions resolved for `plc` (the field comments state them).
+// max_work: 2000 units per input element (point, triangle, segment) plus 2e7, about 100-200 s of one core at the
+// 5-10 us per unit measured. The converging inputs of tests/data/3d spend at most 6.3e6 units for both strategies
+// together (mc_two_spheres: 1172 per element, shells then protected; mc_gyroid 5.6e6), so the default leaves them a
+// margin of about 5; the small ones (<= 1000 elements) spend under 1.2e5 (Schonhardt, through the protected rerun).
+Refine3DOptions with_defaults(const PLC3& plc, Refine3DOptions o) {
+  if (o.max_steiner < 0) o.max_steiner = 10 * static_cast<long>(plc.points.size()) + 10000;
+  if (o.max_work < 0)
+    o.max_work = 2000 * static_cast<long>(plc.points.size() + plc.triangles.size() + plc.segments.size()) + 20000000;
+  if (o.min_length < 0) {
+    double d2 = 0;
+    for (auto c : {&Point3::x, &Point3::y, &Point3::z}) {
+      auto [lo, hi] = std::minmax_element(plc.points.begin(), plc.points.end(),
+                                          [c](const Point3& a, const Point3& b) { return a.*c < b.*c; });
+      const double extent = plc.points.empty() ? 0.0 : (*hi).*c - (*lo).*c;
+      d2 += extent * extent;
+    }
+    o.min_length = 1e-6 * std::sqrt(d2);
+  }
+  return o;
+}
+
+const char* rule_name(SplitRule rule) {
+  switch (rule) {
+    case SplitRule::Midpoint: return "midpoint";
+    case SplitRule::Shells: return "shells";
+    case SplitRule::Greedy: return "greedy";
+    case SplitRule::Protected: return "protected";
+  }
+  return "shells";
+}
+
+void set_limits(Refine3DResult& r, const Refine3DOptions& options) {
+  r.max_steiner = options.max_steiner;
+  r.min_length = options.min_length;
+  r.max_work = options.max_work;
+}
+
+// First without the frame-rounding encroachers (fewest Steiner points). When that stalls (the Delaunay faces
+// that cover a facet then sit on rounding-level slivers whose circumcenters coincide with existing vertices),
+// once more from the input counting them: their extra points usually break the near-cospherical ties.
+// The second attempt gets the work (and time) the first left; it runs only when some is left (else it would return
+// the bare input).
+Refine3DResult refine_with(const PLC3& plc, const Refine3DOptions& options, bool protect) {
+  Refine3DResult first = gabriel3d::refine_once(plc, options, true, protect);
+  set_limits(first, options);
+  if (first.status != RefineStatus::Stalled || first.seconds >= options.time_limit || first.work >= options.max_work)
+    return first;
+  Refine3DOptions rest = options;
+  rest.time_limit = std::max(0.0, options.time_limit - first.seconds);
+  rest.max_work = options.max_work - first.work;
+  Refine3DResult second = gabriel3d::refine_once(plc, rest, false, protect);
+  second.seconds += first.seconds;
+  second.work += first.work;
+  second.diagnosis.stop_reason += " (second attempt; the first stalled: " + first.diagnosis.stop_reason + ")";
+  set_limits(second, options);
+  return second;
+}
+
+}  // namespace
+
+// The fast first pass with the requested rule; where it does not converge, the protected strategy from the input
+// (with the same Steiner budget, a work budget of its own and the time left), whose result is returned if it
+// converged; else the first pass's, which costs no more points than before the fallback existed. split == Protected
+// runs only that strategy.
+Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& given) {
+  const Refine3DOptions options = with_defaults(plc, given);
+  const bool protect_first = options.split == SplitRule::Protected;
+  Refine3DOptions first_options = options;
+  if (protect_first) first_options.split = SplitRule::Shells;
+  Refine3DResult first = refine_with(plc, first_options, protect_first);
+  first.strategy = rule_name(options.split);
+  if (protect_first || !options.protected_fallback || first.status == RefineStatus::Converged ||
+      first.seconds >= options.time_limit)
+    return first;
+  Refine3DOptions rest = options;
+  rest.split = SplitRule::Shells;
+  rest.time_limit = std::max(0.0, options.time_limit - first.seconds);
+  Refine3DResult second = refine_with(plc, rest, true);
+  const double seconds = first.seconds + second.seconds;
+  const long work = first.work + second.work;
+  auto summary = [](const Refine3DResult& r) {
+    return r.strategy + ": " + to_string(r.status) + " (" + r.diagnosis.stop_reason + ")";
+  };
+  second.strategy = "protected";
+  Refine3DResult& returned = second.status == RefineStatus::Converged ? second : first;
+  returned.other_attempt = summary(&returned == &second ? first : second);
+  if (&returned == &second) second.strategy = std::string(rule_name(options.split)) + "+protected";
+  returned.seconds = seconds;
+  returned.work = work;
+  return std::move(returned);
+}
+
+}  // namespace nonobtuse
