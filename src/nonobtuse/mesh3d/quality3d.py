@@ -23,6 +23,7 @@ from scipy.spatial import cKDTree
 
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
+from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes, tet_circumcenters
 from nonobtuse.mesh3d.gabriel import GabrielReport, check_gabriel, control_volume_summary, refine_gabriel
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
@@ -62,16 +63,14 @@ class Quality3DResult:
 
 
 def tet_circumspheres(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Circumcenters (t, 3), circumradii (t,) and volumes (t,) of tets (t, 4) int64 over points (n, 3) float64
-    (positively oriented tets give positive volumes). Floating point; a flat tet gives inf or NaN."""
-    a = points[tets[:, 0]]
-    b, c, d = (points[tets[:, k]] - a for k in (1, 2, 3))
-    cd, db, bc = np.cross(c, d), np.cross(d, b), np.cross(b, c)
-    six_volume = np.einsum("ij,ij->i", b, cd)
-    offset = ((b * b).sum(1)[:, None] * cd + (c * c).sum(1)[:, None] * db + (d * d).sum(1)[:, None] * bc)
+    """Circumcenters (t, 3) (:func:`~nonobtuse.mesh3d.control_volumes3d.tet_circumcenters`), circumradii (t,)
+    and volumes (t,) of tets (t, 4) int64 over points (n, 3) float64 (positively oriented tets give positive
+    volumes). Floating point; a flat tet gives inf or NaN."""
+    p = points[tets]
     with np.errstate(divide="ignore", invalid="ignore"):
-        offset = offset / (2.0 * six_volume)[:, None]
-    return a + offset, np.sqrt((offset * offset).sum(1)), six_volume / 6.0
+        centers = tet_circumcenters(p[:, 0], p[:, 1], p[:, 2], p[:, 3])
+        radius = np.sqrt(((centers - p[:, 0]) ** 2).sum(1))
+    return centers, radius, signed_tet_volumes(points, tets)
 
 
 def shortest_edges(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
