@@ -15,7 +15,7 @@ import math
 import sys
 import time
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Literal, cast
 
 import numpy as np
@@ -106,6 +106,7 @@ def refine_quality3d(
     max_points: int | None = None,
     time_limit: float = 120.0,
     start: Start = "tetgen",
+    region_volumes: bool = False,
     progress: Callable[[int, int, int, int, float], None] | bool | None = None,
     started: float | None = None,
     **gabriel_options: Any,
@@ -117,15 +118,18 @@ def refine_quality3d(
 
     plc: as for refine_gabriel. max_volume: a volume bound for every tet, or a mapping {region attribute:
     bound} (regions not listed are free; the attributes are those of plc.regions, or 1, 2, ... without seeds),
-    or None. radius_edge: a bound > 1 on circumradius / shortest edge (TetGen's -q; 2 is its default), or
-    None. max_points: interior point budget (None: 10^6). time_limit: seconds for everything, checked between
-    rounds and passed on to each boundary repair. start: "tetgen" lets TetGen (-pq R -a V, the 3d extra) split
-    the facets for the bounds before the Gabriel repair and takes its -Y interior points on the repaired
-    boundary as the first interior points (it falls back to "boundary" when TetGen is missing or fails);
-    "boundary" starts from the input boundary and its repair alone (also taken when the repair of TetGen's
-    surface does not converge within half the time). progress: True prints a line per round to
-    stderr; a callable gets (round, interior_points, bad_tets, blocked_tets, seconds). started:
-    time.perf_counter() at which the caller's work began (time_limit counts from it).
+    or None. region_volumes: True makes the volume constraints of plc's region list hold as well (the fifth
+    number of a TetGen .poly region line, :attr:`PLC.region_volumes`; TetGen's -a without a number), in the
+    regions of their attributes: a tet's bound is then the smallest that applies. radius_edge: a bound > 1 on
+    circumradius / shortest edge (TetGen's -q; 2 is its default), or None. max_points: interior point budget
+    (None: 10^6). time_limit: seconds for everything, checked between rounds and passed on to each boundary
+    repair. start: "tetgen" lets TetGen (-pq R -a V, the 3d extra) split the facets for the bounds before the
+    Gabriel repair and takes its -Y interior points on the repaired boundary as the first interior points (it
+    falls back to "boundary" when TetGen is missing or fails); "boundary" starts from the input boundary and
+    its repair alone (also taken when the repair of TetGen's surface does not converge within half the time).
+    progress: True prints a line per round to stderr; a callable gets (round, interior_points, bad_tets,
+    blocked_tets, seconds). started: time.perf_counter() at which the caller's work began (time_limit counts
+    from it).
     Each round: the boundary repair (refine_gabriel on the current subfacets, subsegments and interior points:
     it splits every subfacet or subsegment an interior point encroaches, and builds the Delaunay
     tetrahedralization), then the circumcenters of the tets over a bound. Split rule (Ruppert, Shewchuk):
@@ -140,11 +144,17 @@ def refine_quality3d(
     Guarantee: report is the exact check_gabriel of the returned mesh; status "converged" needs it to pass and
     every tet within the bounds (measured in floating point). Deterministic.
     Cost: per round a boundary repair (O(n log n) when few splits) and floating-point tet measures.
-    Raises InvalidInputError for a malformed PLC or bounds (radius_edge <= 1, max_volume <= 0, not finite).
+    Raises InvalidInputError for a malformed PLC or bounds (radius_edge <= 1, max_volume <= 0, not finite), or
+    region_volumes without a volume constraint in plc's region list.
     """
     started = time.perf_counter() if started is None else started
     callback = _print_progress if progress is True else (progress or None)
     _check_bounds(max_volume, radius_edge, max_points)
+    if region_volumes:
+        if not region_volume_bounds(plc):
+            raise InvalidInputError(f"{plc.source}: region_volumes asked, but its region list has no volume "
+                                    f"constraint > 0 (the fifth number of a .poly region line)")
+        max_volume = _with_region_volumes(max_volume, region_volume_bounds(plc))
     switches = _tetgen_switches(max_volume, radius_edge)
     surface, surface_note = _tetgen_surface(plc, switches + "AQ") if start == "tetgen" else (plc, "input")
     refiner = _InteriorRefiner(plc, max_volume, radius_edge, time_limit, started, gabriel_options)
@@ -224,8 +234,8 @@ class _InteriorRefiner:
         """refine_gabriel of `surface` with `interior` (k, 3) as isolated points (after surface's points),
         within `share` of the time left."""
         points = np.concatenate([surface.points, np.asarray(interior, dtype=np.float64).reshape(-1, 3)])
-        plc = PLC(points, surface.triangles, surface.facet_ids, surface.segments, self.plc.holes,
-                  self.plc.regions, self.plc.source, self.plc.warnings, self.plc.facet_markers)
+        plc = replace(self.plc, points=points, triangles=surface.triangles, facet_ids=surface.facet_ids,
+                      segments=surface.segments)
         left = self.time_limit - (time.perf_counter() - self.started)
         return refine_gabriel(plc, time_limit=max(0.0, share * left), **self.gabriel_options)
 
@@ -240,9 +250,8 @@ class _InteriorRefiner:
         renumber = np.cumsum(on) - 1
         faces = renumber[np.asarray(mesh.boundary_faces, dtype=np.int64)]
         segments = renumber[np.asarray(mesh.segments, dtype=np.int64).reshape(-1, 2)]
-        surface = PLC(mesh.points[on], faces, np.asarray(mesh.face_facets, dtype=np.int64), segments,
-                      self.plc.holes, self.plc.regions, self.plc.source, self.plc.warnings,
-                      self.plc.facet_markers)
+        surface = replace(self.plc, points=mesh.points[on], triangles=faces,
+                          facet_ids=np.asarray(mesh.face_facets, dtype=np.int64), segments=segments)
         return surface, mesh.points[~on]
 
     @staticmethod
@@ -272,14 +281,17 @@ class _InteriorRefiner:
         return extra[keep]
 
     def volume_bounds(self, mesh: TetMesh) -> np.ndarray:
-        """The volume bound (t,) of each tet: inf where none."""
+        """The volume bound (t,) of each tet: inf where none. A mapping's key None is the bound everywhere."""
         t = len(mesh.tets)
         if self.max_volume is None:
             return np.full(t, np.inf)
-        if isinstance(self.max_volume, (int, float)):
+        if not isinstance(self.max_volume, Mapping):
             return np.full(t, float(self.max_volume))
+        everywhere = self.max_volume.get(None, math.inf)
         regions = np.ones(t) if mesh.tet_regions is None else np.asarray(mesh.tet_regions, dtype=np.float64)
-        return np.array([self.max_volume.get(r, math.inf) for r in regions.tolist()], dtype=np.float64)
+        attrs, inverse = np.unique(regions, return_inverse=True)
+        per_attr = np.array([min(everywhere, self.max_volume.get(a, math.inf)) for a in attrs.tolist()])
+        return per_attr[inverse.ravel()] if t else np.zeros(0)
 
     def bad_tets(self, mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
         """Rows of mesh.tets over a bound, most skewed first, and their circumcenters (floating point)."""
@@ -336,9 +348,10 @@ class _InteriorRefiner:
 
 
 def _tetgen_switches(max_volume: Any, radius_edge: float | None) -> str:
-    """TetGen's -p -q [-a] switches for the bounds (a mapping of region bounds is left to the rounds)."""
+    """TetGen's -p -q [-a] switches for the bounds (the bounds of regions are left to the rounds)."""
     switches = "pq" + (repr(float(radius_edge)) if radius_edge else "")
-    return switches + (f"a{float(max_volume)!r}" if isinstance(max_volume, (int, float)) else "")
+    everywhere = max_volume.get(None) if isinstance(max_volume, Mapping) else max_volume
+    return switches + (f"a{float(everywhere)!r}" if everywhere is not None else "")
 
 
 def _tetgen_surface(plc: PLC, switches: str) -> tuple[PLC, str]:
@@ -358,14 +371,36 @@ def _tetgen_surface(plc: PLC, switches: str) -> tuple[PLC, str]:
     renumber[keep] = np.arange(len(keep))
     faces = renumber[tm.boundary_faces]
     facets = np.asarray(tm.face_facets, dtype=np.int64)
-    surface = PLC(tm.points[keep], faces, facets, facet_boundary_segments(faces, facets), plc.holes,
-                  plc.regions, plc.source, plc.warnings, plc.facet_markers)
+    surface = replace(plc, points=tm.points[keep], triangles=faces, facet_ids=facets,
+                      segments=facet_boundary_segments(faces, facets))
     return surface, f"TetGen -{switches}: {len(keep) - len(plc.points)} boundary Steiner points"
+
+
+def region_volume_bounds(plc: PLC) -> dict[float, float]:
+    """{region attribute: volume constraint} from plc's region list (:attr:`PLC.region_volumes`): the rows
+    with a constraint > 0 (TetGen ignores the others), the smallest when seeds with one attribute differ."""
+    bounds: dict[float, float] = {}
+    volumes = np.asarray(plc.region_volumes, dtype=np.float64)
+    for row, volume in zip(np.asarray(plc.regions).reshape(-1, 4)[: len(volumes)], volumes.tolist()):
+        if volume > 0:
+            attr = float(row[3])
+            bounds[attr] = min(volume, bounds.get(attr, math.inf))
+    return bounds
+
+
+def _with_region_volumes(max_volume: Any, regions: dict[float, float]) -> dict[float | None, float]:
+    """One mapping for ``max_volume`` (None, a number or a mapping) and the region list's bounds: the smaller
+    bound where both give one; a number becomes the key None (every tet)."""
+    merged: dict[float | None, float] = {} if max_volume is None else (
+        dict(max_volume) if isinstance(max_volume, Mapping) else {None: float(max_volume)})
+    for attr, volume in regions.items():
+        merged[attr] = min(volume, merged.get(attr, math.inf))
+    return merged
 
 
 def _jsonable_bound(max_volume: Any) -> Any:
     if isinstance(max_volume, Mapping):
-        return {str(k): float(v) for k, v in max_volume.items()}
+        return {("every tet" if k is None else str(k)): float(v) for k, v in max_volume.items()}
     return max_volume
 
 
