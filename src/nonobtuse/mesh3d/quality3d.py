@@ -171,29 +171,35 @@ def refine_quality3d(
     if g.status == "converged" and start == "tetgen":
         surface, _ = refiner.split_mesh(g.mesh)
         g = refiner.repair(surface, refiner.tetgen_points(surface, switches + "YAQ", stats))
-    bad = blocked = np.zeros(0, dtype=np.int64)
-    status: str = g.status
+    mesh, status = g.mesh, g.status
     stop = g.stats["diagnosis"]["stop_reason"]
     budget = 10**6 if max_points is None else int(max_points)
+    on = np.zeros(0, dtype=bool)
     while status == "converged":
-        surface, interior = refiner.split_mesh(g.mesh)
-        bad, centers = refiner.bad_tets(g.mesh)
-        bad_of_accepted, accepted = refiner.independent_centers(g.mesh, bad, centers)
-        on_spheres = refiner.closed_hits(surface, np.concatenate([interior, accepted]))
-        blocked = np.flatnonzero(on_spheres[len(interior):])
+        surface, interior = refiner.split_mesh(mesh)
+        mesh, rows, centers, passed = refiner.interior_pass(mesh, budget - len(interior))
+        surface, interior = refiner.split_mesh(mesh)
+        on_interior = refiner.closed_hits(surface, interior)
+        if passed == "not_conforming":  # cospherical points: the round goes through the boundary repair
+            rows, centers = refiner.independent_centers(mesh, *refiner.bad_tets(mesh))
+        on = refiner.closed_hits(surface, centers)
         stats["rounds"] += 1
         seconds = time.perf_counter() - started
         if callback:
-            callback(stats["rounds"], len(interior), int(bad.size), len(blocked), seconds)
-        if not bad.size and not on_spheres.any():
+            callback(stats["rounds"], len(interior), len(rows), int(on.sum()), seconds)
+        if not len(rows) and not on_interior.any():
             break
-        if len(interior) >= budget or seconds > time_limit:
+        if passed == "budget_exhausted" or len(interior) >= budget or seconds > time_limit:
             status = "budget_exhausted"
             break
-        triggers, free = refiner.stand_ins(g.mesh, bad_of_accepted[blocked], accepted[blocked], surface)
-        keep = np.concatenate([np.concatenate([interior, accepted])[~on_spheres], free])[:budget]
+        # the centers the pass could not insert: stand-ins strictly inside their tets, which the boundary
+        # repair sees as encroaching points (Ruppert's rule) or inserts where they encroach nothing
+        direct = centers[~on] if passed == "not_conforming" else np.zeros((0, 3))
+        stand = on if passed == "not_conforming" else np.ones(len(rows), dtype=bool)
+        triggers, free = refiner.stand_ins(mesh, rows[stand], centers[stand], surface)
+        keep = np.concatenate([interior[~on_interior], direct, free])[:budget]
         grown = surface
-        if len(triggers):  # the repair splits what they encroach (Ruppert's rule); they are then dropped
+        if len(triggers):  # the repair splits what they encroach; they are then dropped
             split = refiner.repair(surface, np.concatenate([keep, triggers]))
             status, stop = split.status, split.stats["diagnosis"]["stop_reason"]
             if status != "converged":
@@ -206,14 +212,20 @@ def refine_quality3d(
         status, stop = repaired.status, repaired.stats["diagnosis"]["stop_reason"]
         if status == "converged":
             g = repaired
-    # g is the last converged repair when a later one stopped (its status is returned, with g's mesh)
-    mesh, report = g.mesh, check_gabriel(g.mesh)
+            mesh = g.mesh
+    bad = refiner.bad_tets(mesh)[0]
+    if status == "converged" and len(bad):  # the pass's measure and numpy's differ in the last ulp
+        status = "quality_blocked"
+    # mesh is the last interior pass's, on the last converged repair's boundary, when a later repair stopped
+    # (its status is returned with that mesh)
+    report = check_gabriel(mesh)
     if status == "converged" and not report.ok:  # the repair converged, so this cannot happen; checked anyway
         status = "stalled"
     interior_points = len(mesh.points) - len(refiner.split_mesh(mesh)[0].points)
     stats = {"status": status, "steiner_points": len(mesh.points) - len(plc.points),
              "boundary_points": len(mesh.points) - interior_points, "interior_points": interior_points,
-             **tet_quality(mesh), "bad_tets": int(bad.size), "blocked_centers": len(blocked),
+             **tet_quality(mesh), "bad_tets": int(bad.size), "blocked_centers": int(on.sum()),
+             "inserted_by_passes": refiner.inserted,
              "encroached_facets": len(report.faces), "encroached_segments": len(report.segments),
              "volume_mesh": g.stats.get("volume_mesh"), "last_repair": stop,
              "negative_couplings": control_volume_summary(mesh)["negative_couplings"], **stats,
@@ -229,6 +241,7 @@ class _InteriorRefiner:
                  started: float, gabriel_options: dict[str, Any]) -> None:
         self.plc, self.max_volume, self.radius_edge = plc, max_volume, radius_edge
         self.time_limit, self.started, self.gabriel_options = time_limit, started, gabriel_options
+        self.inserted = 0  # circumcenters the interior passes inserted
 
     def repair(self, surface: PLC, interior: np.ndarray, share: float = 1.0) -> Any:
         """refine_gabriel of `surface` with `interior` (k, 3) as isolated points (after surface's points),
@@ -280,18 +293,51 @@ class _InteriorRefiner:
         stats.update(tetgen=switches, tetgen_points=len(extra), tetgen_points_dropped=int((~keep).sum()))
         return extra[keep]
 
-    def volume_bounds(self, mesh: TetMesh) -> np.ndarray:
-        """The volume bound (t,) of each tet: inf where none. A mapping's key None is the bound everywhere."""
-        t = len(mesh.tets)
+    @staticmethod
+    def region_labels(mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
+        """The region attributes (a,) of mesh (1.0 for every tet without regions) and each tet's index (t,)
+        among them."""
+        regions = np.ones(len(mesh.tets)) if mesh.tet_regions is None else np.asarray(mesh.tet_regions)
+        attrs, labels = np.unique(np.asarray(regions, dtype=np.float64), return_inverse=True)
+        return attrs, labels.ravel().astype(np.int64)
+
+    def volume_bounds_of(self, attrs: np.ndarray) -> np.ndarray:
+        """The volume bound (a,) of each region attribute: inf where none. A mapping's key None is the bound
+        everywhere."""
         if self.max_volume is None:
-            return np.full(t, np.inf)
+            return np.full(len(attrs), np.inf)
         if not isinstance(self.max_volume, Mapping):
-            return np.full(t, float(self.max_volume))
+            return np.full(len(attrs), float(self.max_volume))
         everywhere = self.max_volume.get(None, math.inf)
-        regions = np.ones(t) if mesh.tet_regions is None else np.asarray(mesh.tet_regions, dtype=np.float64)
-        attrs, inverse = np.unique(regions, return_inverse=True)
-        per_attr = np.array([min(everywhere, self.max_volume.get(a, math.inf)) for a in attrs.tolist()])
-        return per_attr[inverse.ravel()] if t else np.zeros(0)
+        return np.array([min(everywhere, self.max_volume.get(a, math.inf)) for a in attrs.tolist()],
+                        dtype=np.float64).reshape(-1)
+
+    def volume_bounds(self, mesh: TetMesh) -> np.ndarray:
+        """The volume bound (t,) of each tet: inf where none."""
+        attrs, labels = self.region_labels(mesh)
+        return self.volume_bounds_of(attrs)[labels]
+
+    def interior_pass(self, mesh: TetMesh, budget: int) -> tuple[TetMesh, np.ndarray, np.ndarray, str]:
+        """Circumcenters of the tets of `mesh` (a Gabriel boundary) over a bound inserted into its Delaunay
+        tetrahedralization one by one, the boundary fixed (``_core.refine_interior``: each strictly outside
+        every closed diametral sphere, in the domain, exact), at most `budget` of them within the time left.
+        Returns the mesh, the rows (k,) of its tets still over a bound with their circumcenters (k, 3), and
+        the pass's status ("converged", "blocked", "budget_exhausted", or "not_conforming": a subfacet or
+        subsegment is no Delaunay face or edge, `mesh` returned unchanged with no rows)."""
+        attrs, labels = self.region_labels(mesh)
+        left = self.time_limit - (time.perf_counter() - self.started)
+        r = _core.refine_interior(
+            np.ascontiguousarray(mesh.points, dtype=np.float64),
+            np.ascontiguousarray(mesh.tets, dtype=np.int64), labels,
+            np.ascontiguousarray(mesh.boundary_faces, dtype=np.int64),
+            np.ascontiguousarray(mesh.segments, dtype=np.int64).reshape(-1, 2),
+            float(self.radius_edge or 0.0), self.volume_bounds_of(attrs), max(0, int(budget)), max(0.0, left))
+        self.inserted += r.inserted
+        if r.status == "not_conforming":
+            return mesh, np.zeros(0, dtype=np.int64), np.zeros((0, 3)), r.status
+        regions = None if mesh.tet_regions is None else attrs[r.tet_labels]
+        grown = replace(mesh, points=r.points, tets=np.asarray(r.tets, dtype=np.int64), tet_regions=regions)
+        return grown, np.asarray(r.blocked_rows, dtype=np.int64), np.asarray(r.blocked_centers), r.status
 
     def bad_tets(self, mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
         """Rows of mesh.tets over a bound, most skewed first, and their circumcenters (floating point)."""
@@ -331,6 +377,7 @@ class _InteriorRefiner:
         encroach; free: those in none, inserted instead of the center). Floating-point points, exact tests."""
         tets = np.asarray(mesh.tets, dtype=np.int64)[tets]
         centroid = mesh.points[tets].mean(axis=1)
+        centers = np.where(np.isfinite(centers).all(axis=1)[:, None], centers, centroid)  # a sliver's is inf
         found = np.zeros(len(tets), dtype=bool)
         out = np.zeros((len(tets), 3))
         faces = np.array([[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]])  # outward faces of a positive tet
