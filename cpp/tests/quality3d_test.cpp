@@ -46,3 +46,65 @@ TEST(ClosedDiametralSphereHits, ReportsTheFirstRowAndRejectsBadSimplices) {
 
 }  // namespace
 }  // namespace nonobtuse
+
+namespace nonobtuse {
+namespace {
+
+// The unit cube split into 6 tets around the diagonal (0,0,0)-(1,1,1), with its 12 boundary triangles and
+// 12 + 6 edges as segments: a fixed boundary and a coarse interior.
+InteriorMesh cube_mesh() {
+  InteriorMesh m;
+  for (int i = 0; i < 8; ++i) m.points.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+  m.tets = {{0, 1, 3, 7}, {0, 1, 7, 5}, {0, 2, 7, 3}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 7, 6}};
+  m.tet_labels.assign(m.tets.size(), 0);
+  m.faces = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+             {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 3, 7}, {1, 7, 5}};
+  return m;
+}
+
+TEST(RefineInterior, CospherialCubeIsNotConformingAndChangesNothing) {
+  // The cube's 8 corners are cospherical: the Delaunay tetrahedralization need not hold these face diagonals, and
+  // every tet's circumcenter (the cube's center) lies in the faces' diametral spheres anyway.
+  InteriorBounds bounds;
+  bounds.volume_bounds = {0.01};
+  auto r = refine_interior(cube_mesh(), bounds);
+  EXPECT_EQ(r.inserted, 0);
+  EXPECT_EQ(r.points.size(), 8u);
+  EXPECT_TRUE(r.status == "not_conforming" || r.status == "blocked") << r.status;
+}
+
+TEST(RefineInterior, CenterInAFacesSphereIsBlockedAndElsewhereInserted) {
+  // A regular tet of edge 2 sqrt 2: its circumcenter is its centroid (0,0,0), inside it, at distance 0.82 from each
+  // face's circumcenter, inside that face's diametral sphere (radius 1.63).
+  InteriorMesh m;
+  m.points = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  m.tets = {{0, 1, 2, 3}};
+  m.tet_labels = {0};
+  InteriorBounds bounds;
+  bounds.volume_bounds = {0.5};  // the tet's volume is 8/3, the four around its center 2/3 each
+  // Without boundary faces the center is inserted; the new tets' centers lie outside the domain: blocked.
+  auto free = refine_interior(m, bounds);
+  ASSERT_EQ(free.inserted, 1);
+  EXPECT_EQ(free.points.back().x, 0.0);
+  EXPECT_EQ(free.tets.size(), 4u);
+  EXPECT_EQ(free.status, "blocked");
+  EXPECT_EQ(free.blocked_rows.size(), 4u);
+  // With a face whose closed diametral sphere holds the center, nothing is inserted and the tet is blocked.
+  m.faces = {{1, 2, 3}};
+  auto blocked = refine_interior(m, bounds);
+  EXPECT_EQ(blocked.inserted, 0);
+  EXPECT_EQ(blocked.status, "blocked");
+  ASSERT_EQ(blocked.blocked_rows.size(), 1u);
+  EXPECT_NEAR(blocked.blocked_centers[0].x, 0.0, 1e-12);
+  bounds.max_points = 0;  // the budget is a status
+  EXPECT_EQ(refine_interior(m, bounds).status, "budget_exhausted");
+}
+
+TEST(RefineInterior, RejectsLabelsWithoutBounds) {
+  InteriorMesh m = cube_mesh();
+  InteriorBounds bounds;  // no volume bound for label 0
+  EXPECT_THROW(refine_interior(m, bounds), InvalidInput);
+}
+
+}  // namespace
+}  // namespace nonobtuse

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'Junction', 'Mesh2D', 'Quality2DOptions', 'Quality2DStats', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'Triangulation2', 'check_gabriel', 'classify_edges', 'closed_diametral_sphere_hits', 'conforming_gabriel_steiner_points', 'coupling_signs', 'default_interior_budget', 'default_steiner_budget', 'delaunay_restricted_to_plc', 'delaunay_tetrahedra', 'dual_area_signs', 'find_segment_intersections', 'inspect_domain', 'parse_numeric_rows', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'refine', 'refine_gabriel', 'triangulate']
+__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'InteriorRefinement', 'Junction', 'Mesh2D', 'Quality2DOptions', 'Quality2DStats', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'Triangulation2', 'check_gabriel', 'classify_edges', 'closed_diametral_sphere_hits', 'conforming_gabriel_steiner_points', 'coupling_signs', 'default_interior_budget', 'default_steiner_budget', 'delaunay_restricted_to_plc', 'delaunay_tetrahedra', 'dual_area_signs', 'find_segment_intersections', 'inspect_domain', 'parse_numeric_rows', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'refine', 'refine_gabriel', 'refine_interior', 'triangulate']
 class Mesh2D:
     """
     A triangulated 2D domain (read-only; each array attribute is a new array on each access).
@@ -477,11 +477,6 @@ class Refine3DResult:
         the Steiner budget used (its default resolved)
         """
     @property
-    def max_work(self) -> int:
-        """
-        the work budget of each strategy pass (its default resolved)
-        """
-    @property
     def min_length(self) -> float:
         """
         the minimum length used (its default resolved)
@@ -543,11 +538,31 @@ class Refine3DResult:
         """
         'built', or why tets is empty
         """
+class InteriorRefinement:
+    """
+    What refine_interior returns (read-only).
+    """
     @property
-    def work(self) -> int:
-        """
-        the work units spent by every attempt together
-        """
+    def blocked_centers(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+    @property
+    def blocked_rows(self) -> numpy.typing.NDArray[numpy.int32]:
+        ...
+    @property
+    def inserted(self) -> int:
+        ...
+    @property
+    def points(self) -> numpy.typing.NDArray[numpy.float64]:
+        ...
+    @property
+    def status(self) -> str:
+        ...
+    @property
+    def tet_labels(self) -> numpy.typing.NDArray[numpy.int32]:
+        ...
+    @property
+    def tets(self) -> numpy.typing.NDArray[numpy.int64]:
+        ...
 def check_gabriel(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> GabrielCertificate:
     """
     Exact diametral-sphere test of every face (f,3) and segment (k,2) against all points (n,3).
@@ -634,11 +649,17 @@ def refine(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segm
     (DomainCoverage.triangulation), taken over when it triangulates this domain, empty afterwards. Returns a
     Refine2DResult.
     """
-def refine_gabriel(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], facet_ids: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_steiner: typing.SupportsInt | typing.SupportsIndex, min_length: typing.SupportsFloat | typing.SupportsIndex, max_work: typing.SupportsInt | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex, split: str, protected_fallback: bool, progress_every: typing.SupportsInt | typing.SupportsIndex, progress: collections.abc.Callable[[int, int, int, float], None] | None) -> Refine3DResult:
+def refine_gabriel(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], facet_ids: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_steiner: typing.SupportsInt | typing.SupportsIndex, min_length: typing.SupportsFloat | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex, split: str, protected_fallback: bool, progress_every: typing.SupportsInt | typing.SupportsIndex, progress: collections.abc.Callable[[int, int, int, float], None] | None) -> Refine3DResult:
     """
-    Gabriel refinement of a PLC. max_steiner < 0, min_length < 0, max_work < 0: the defaults of Refine3DOptions (gabriel3d.h).
+    Gabriel refinement of a PLC. max_steiner < 0, min_length < 0: the defaults of Refine3DOptions (gabriel3d.h).
     progress: None or f(steiner, encroached_segments, encroached_facets, seconds).
     Returns a Refine3DResult.
+    """
+def refine_interior(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], tets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], tet_labels: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], radius_edge: typing.SupportsFloat | typing.SupportsIndex, volume_bounds: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_points: typing.SupportsInt | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex) -> InteriorRefinement:
+    """
+    Delaunay refinement of the interior of a mesh (n,3) points, (t,4) tets, (t,) labels with a Gabriel
+    boundary (f,3) faces, (k,2) segments: circumcenters of tets over radius_edge (<= 0: none) or
+    volume_bounds[label] inserted outside every closed diametral sphere (see quality3d.h).
     """
 def triangulate(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool) -> Mesh2D:
     """

@@ -2,6 +2,8 @@
 // A point outside every closed diametral sphere of the subfacets and subsegments can be added to a Gabriel
 // boundary without making any of them encroached (strictly) or cospherical with it (on the sphere).
 #pragma once
+#include <array>
+#include <string>
 #include <vector>
 
 #include "nonobtuse/types.h"
@@ -24,5 +26,49 @@ struct ClosedSphereHits {
 ClosedSphereHits closed_diametral_sphere_hits(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
                                               const std::vector<Segment>& segments,
                                               const std::vector<Point3>& candidates);
+
+// A tetrahedral mesh of a domain whose boundary is Gabriel: every subfacet and subsegment has an empty open
+// diametral sphere (refine_gabriel's converged output), so the subfacets are faces and the subsegments edges of the
+// Delaunay tetrahedralization of the points.
+struct InteriorMesh {
+  std::vector<Point3> points;
+  std::vector<std::array<int, 4>> tets;  // the domain's tets, positively oriented
+  std::vector<int> tet_labels;           // per tet, an index into InteriorBounds::volume_bounds
+  std::vector<Triangle> faces;           // the subfacets
+  std::vector<Segment> segments;         // the subsegments
+};
+
+struct InteriorBounds {
+  double radius_edge = 0.0;          // circumradius / shortest edge; <= 0: no bound
+  std::vector<double> volume_bounds;  // per label; +inf: none
+  long long max_points = 1000000;     // points to insert at most
+  double time_limit = 60.0;          // seconds (checked every 64 insertions)
+};
+
+// "converged": every tet within the bounds; "blocked": the tets over a bound left have circumcenters in a closed
+// diametral sphere of a subfacet or subsegment, on a mesh vertex or outside the domain (blocked_rows);
+// "budget_exhausted": max_points or time_limit; "not_conforming": a subfacet or subsegment is not a face or an edge
+// of the Delaunay tetrahedralization (cospherical points): nothing was inserted.
+struct InteriorRefinement {
+  std::vector<Point3> points;  // the input points in order, then the inserted circumcenters
+  std::vector<std::array<int, 4>> tets;
+  std::vector<int> tet_labels;
+  std::vector<int> blocked_rows;       // rows of tets over a bound whose circumcenters could not be inserted
+  std::vector<Point3> blocked_centers;  // their circumcenters (floating point)
+  std::string status;
+  long long inserted = 0;
+};
+
+// Delaunay refinement of the interior with the boundary fixed (Shewchuk's rule with the boundary split left to the
+// caller, Ruppert's rule): the tets over a bound, worst radius-edge ratio first, get their circumcenter inserted
+// (Bowyer-Watson, CGAL Delaunay_triangulation_3, the triangulation kept between insertions) when it lies strictly
+// outside every closed diametral sphere of a subfacet and subsegment (exact, on the rounded double), in the domain
+// (exact point location) and on no vertex; otherwise the tet is left for the caller (blocked_rows), which splits
+// the subfacets or subsegments the center encroaches. Such a point keeps every subfacet and subsegment Gabriel and
+// Delaunay, and its cavity crosses no subfacet (a tet beyond subfacet f whose circumsphere held it would have its
+// apex inside f's diametral sphere), so each new tet inherits the label of the tet holding the point.
+// Throws InvalidInput for indices out of range, labels without a bound, collinear faces or degenerate segments.
+// Cost: O(k log n) expected for k insertions into n points, plus O(log) sphere lookups per candidate.
+InteriorRefinement refine_interior(const InteriorMesh& mesh, const InteriorBounds& bounds);
 
 }  // namespace nonobtuse

@@ -52,6 +52,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "diametral sphere (see refine_quality3d)")
     p.add_argument("--region-max-volume", type=_region_volume, action="append", default=None,
                    metavar="ATTR=V", help="largest tet volume in the region with attribute ATTR (repeatable)")
+    p.add_argument("--region-volumes", action="store_true",
+                   help="the volume constraints of the .poly region list (the fifth number of a region line; "
+                        "TetGen's -a without a number) hold too; the smallest bound that applies wins")
     p.add_argument("--radius-edge", type=guards.positive, default=None,
                    help="largest circumradius / shortest edge of a tet, > 1 (TetGen's -q, e.g. 2.0)")
     p.add_argument("--quality-start", choices=("tetgen", "boundary"), default="tetgen",
@@ -169,12 +172,14 @@ def run_refine3d(args: argparse.Namespace) -> int:
     progress.start(f"refining {args.input}: {len(plc.points):,} points, {len(plc.triangles):,} triangles "
                    f"({', '.join(f'{k}={v}' for k, v in limits.items()) or 'default limits'})")
     # started=t0: --time-limit and stats["seconds"] cover loading too
-    if args.max_volume is not None or args.radius_edge is not None or args.region_max_volume:
+    if args.max_volume is not None or args.radius_edge is not None or args.region_max_volume or \
+            args.region_volumes:
         from nonobtuse.mesh3d.quality3d import refine_quality3d
 
         volume = dict(args.region_max_volume) if args.region_max_volume else args.max_volume
         result: Any = refine_quality3d(plc, max_volume=volume, radius_edge=args.radius_edge,
-                                       start=args.quality_start, split=args.split,
+                                       start=args.quality_start, region_volumes=args.region_volumes,
+                                       split=args.split,
                                        progress=progress.active or None, started=t0, **limits)
     else:
         result = refine_gabriel(plc, split=args.split, progress=progress.active or None, started=t0, **limits)

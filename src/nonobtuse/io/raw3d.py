@@ -24,7 +24,8 @@ class Facet:
 class RawInput:
     """A parsed file before triangulation and validation. facet_markers: (len(facets),) int64, the marker of
     each facet (TetGen's facet boundary marker, an OBJ group, a PLY face property), or None when the file
-    has none."""
+    has none. region_volumes: (len(regions),) float64, the volume constraint of each region (the fifth number
+    of a TetGen region line), NaN where none."""
 
     points: np.ndarray
     facets: list[Facet]
@@ -32,6 +33,7 @@ class RawInput:
     regions: np.ndarray = field(default_factory=lambda: np.zeros((0, 4)))
     source: str = "<memory>"
     facet_markers: np.ndarray | None = None
+    region_volumes: np.ndarray = field(default_factory=lambda: np.zeros(0))
 
 
 def floats(line: Line, start: int, n: int, what: str) -> list[float]:

@@ -35,9 +35,10 @@ def read_tetgen(path: Path) -> RawInput:
     read_facet = _smesh_facet if path.suffix == ".smesh" else _poly_facet
     rows = [read_facet(lines, base, j, bool(marked)) for j in range(n_facets)]
     holes = _point_list(lines, "hole", 3)
-    regions = _point_list(lines, "region", 4) if not lines.at_end() else np.zeros((0, 4))
+    regions, volumes = _region_list(lines) if not lines.at_end() else (np.zeros((0, 4)), np.zeros(0))
     markers = np.array([m for _, m in rows], dtype=np.int64) if marked else None
-    return RawInput(points, [f for f, _ in rows], holes, regions, source=str(path), facet_markers=markers)
+    return RawInput(points, [f for f, _ in rows], holes, regions, source=str(path), facet_markers=markers,
+                    region_volumes=volumes)
 
 
 def _node_width(head: Line) -> int:
@@ -91,6 +92,19 @@ def _poly_facet(lines: Lines, base: int, j: int, marked: bool) -> tuple[Facet, i
     holes = [floats(lines.next(f"facet {j} hole {k}"), 1, 3, f"facet {j} hole {k}") for k in range(n_holes)]
     where = f"{head.file}:{head.number}"
     return Facet(loops, np.array(holes, dtype=np.float64).reshape(-1, 3), where), marker
+
+
+def _region_list(lines: Lines) -> tuple[np.ndarray, np.ndarray]:
+    """``<index> x y z attribute [max volume]`` lines: the rows (r, 4) and the volume constraints (r,), NaN
+    where a line has none."""
+    n = lines.next("the region list").count(0, "the number of regions")
+    rows = [lines.next(f"region {k}") for k in range(n)]
+    regions = np.array([floats(r, 1, 4, f"region {k}") for k, r in enumerate(rows)], dtype=np.float64)
+    volumes = np.array([r.float(5, f"the volume constraint of region {k}") if len(r.tokens) > 5 else np.nan
+                        for k, r in enumerate(rows)], dtype=np.float64)
+    for k in np.flatnonzero(np.isinf(volumes)):
+        raise rows[k].error(f"the volume constraint of region {k} must be finite, found {volumes[k]}")
+    return regions.reshape(-1, 4), volumes
 
 
 def _point_list(lines: Lines, what: str, cols: int) -> np.ndarray:

@@ -186,7 +186,7 @@ def build_plc(raw: RawInput, *, surface: bool) -> PLC:
     """Triangulate, validate (and orient), merge coplanar facets (surfaces only) and collect segments."""
     tris, ids, dangling = triangulate_facets(raw)
     plc = PLC(raw.points, tris, ids, holes=raw.holes, regions=raw.regions, source=raw.source,
-              facet_markers=raw.facet_markers)
+              facet_markers=raw.facet_markers, region_volumes=raw.region_volumes)
     plc = validate_plc(plc, oriented_format=surface)
     if surface:
         plc = merge_coplanar_facets(plc)

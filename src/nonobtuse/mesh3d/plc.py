@@ -25,6 +25,8 @@ class PLC:
     warnings:   what validation accepted but a user should know (dangling faces, faces it reoriented).
     facet_markers: (F,) int64 the marker of each facet id (F = facet_ids.max() + 1): TetGen's facet boundary
                 marker, an OBJ group, a PLY face property; None when the input has none (every marker 0).
+    region_volumes: (r,) float64 the volume constraint of each row of regions (TetGen's region list), NaN
+                where none; empty when the input has no such list.
     """
 
     points: np.ndarray
@@ -36,6 +38,7 @@ class PLC:
     source: str = "<memory>"
     warnings: tuple[str, ...] = ()
     facet_markers: np.ndarray | None = None
+    region_volumes: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.float64))
 
     def markers_of_facets(self, facets: np.ndarray) -> np.ndarray:
         """The markers (k,) int64 of facet ids (k,): ``facet_markers[facets]``, 0 for every facet when the PLC

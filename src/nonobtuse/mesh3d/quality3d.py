@@ -15,7 +15,7 @@ import math
 import sys
 import time
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Callable, Literal, cast
 
 import numpy as np
@@ -23,6 +23,7 @@ from scipy.spatial import cKDTree
 
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
+from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes, tet_circumcenters
 from nonobtuse.mesh3d.gabriel import GabrielReport, check_gabriel, control_volume_summary, refine_gabriel
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
@@ -62,16 +63,14 @@ class Quality3DResult:
 
 
 def tet_circumspheres(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Circumcenters (t, 3), circumradii (t,) and volumes (t,) of tets (t, 4) int64 over points (n, 3) float64
-    (positively oriented tets give positive volumes). Floating point; a flat tet gives inf or NaN."""
-    a = points[tets[:, 0]]
-    b, c, d = (points[tets[:, k]] - a for k in (1, 2, 3))
-    cd, db, bc = np.cross(c, d), np.cross(d, b), np.cross(b, c)
-    six_volume = np.einsum("ij,ij->i", b, cd)
-    offset = ((b * b).sum(1)[:, None] * cd + (c * c).sum(1)[:, None] * db + (d * d).sum(1)[:, None] * bc)
+    """Circumcenters (t, 3) (:func:`~nonobtuse.mesh3d.control_volumes3d.tet_circumcenters`), circumradii (t,)
+    and volumes (t,) of tets (t, 4) int64 over points (n, 3) float64 (positively oriented tets give positive
+    volumes). Floating point; a flat tet gives inf or NaN."""
+    p = points[tets]
     with np.errstate(divide="ignore", invalid="ignore"):
-        offset = offset / (2.0 * six_volume)[:, None]
-    return a + offset, np.sqrt((offset * offset).sum(1)), six_volume / 6.0
+        centers = tet_circumcenters(p[:, 0], p[:, 1], p[:, 2], p[:, 3])
+        radius = np.sqrt(((centers - p[:, 0]) ** 2).sum(1))
+    return centers, radius, signed_tet_volumes(points, tets)
 
 
 def shortest_edges(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
@@ -107,6 +106,7 @@ def refine_quality3d(
     max_points: int | None = None,
     time_limit: float = 120.0,
     start: Start = "tetgen",
+    region_volumes: bool = False,
     progress: Callable[[int, int, int, int, float], None] | bool | None = None,
     started: float | None = None,
     **gabriel_options: Any,
@@ -118,15 +118,18 @@ def refine_quality3d(
 
     plc: as for refine_gabriel. max_volume: a volume bound for every tet, or a mapping {region attribute:
     bound} (regions not listed are free; the attributes are those of plc.regions, or 1, 2, ... without seeds),
-    or None. radius_edge: a bound > 1 on circumradius / shortest edge (TetGen's -q; 2 is its default), or
-    None. max_points: interior point budget (None: 10^6). time_limit: seconds for everything, checked between
-    rounds and passed on to each boundary repair. start: "tetgen" lets TetGen (-pq R -a V, the 3d extra) split
-    the facets for the bounds before the Gabriel repair and takes its -Y interior points on the repaired
-    boundary as the first interior points (it falls back to "boundary" when TetGen is missing or fails);
-    "boundary" starts from the input boundary and its repair alone (also taken when the repair of TetGen's
-    surface does not converge within half the time). progress: True prints a line per round to
-    stderr; a callable gets (round, interior_points, bad_tets, blocked_tets, seconds). started:
-    time.perf_counter() at which the caller's work began (time_limit counts from it).
+    or None. region_volumes: True makes the volume constraints of plc's region list hold as well (the fifth
+    number of a TetGen .poly region line, :attr:`PLC.region_volumes`; TetGen's -a without a number), in the
+    regions of their attributes: a tet's bound is then the smallest that applies. radius_edge: a bound > 1 on
+    circumradius / shortest edge (TetGen's -q; 2 is its default), or None. max_points: interior point budget
+    (None: 10^6). time_limit: seconds for everything, checked between rounds and passed on to each boundary
+    repair. start: "tetgen" lets TetGen (-pq R -a V, the 3d extra) split the facets for the bounds before the
+    Gabriel repair and takes its -Y interior points on the repaired boundary as the first interior points (it
+    falls back to "boundary" when TetGen is missing or fails); "boundary" starts from the input boundary and
+    its repair alone (also taken when the repair of TetGen's surface does not converge within half the time).
+    progress: True prints a line per round to stderr; a callable gets (round, interior_points, bad_tets,
+    blocked_tets, seconds). started: time.perf_counter() at which the caller's work began (time_limit counts
+    from it).
     Each round: the boundary repair (refine_gabriel on the current subfacets, subsegments and interior points:
     it splits every subfacet or subsegment an interior point encroaches, and builds the Delaunay
     tetrahedralization), then the circumcenters of the tets over a bound. Split rule (Ruppert, Shewchuk):
@@ -141,11 +144,17 @@ def refine_quality3d(
     Guarantee: report is the exact check_gabriel of the returned mesh; status "converged" needs it to pass and
     every tet within the bounds (measured in floating point). Deterministic.
     Cost: per round a boundary repair (O(n log n) when few splits) and floating-point tet measures.
-    Raises InvalidInputError for a malformed PLC or bounds (radius_edge <= 1, max_volume <= 0, not finite).
+    Raises InvalidInputError for a malformed PLC or bounds (radius_edge <= 1, max_volume <= 0, not finite), or
+    region_volumes without a volume constraint in plc's region list.
     """
     started = time.perf_counter() if started is None else started
     callback = _print_progress if progress is True else (progress or None)
     _check_bounds(max_volume, radius_edge, max_points)
+    if region_volumes:
+        if not region_volume_bounds(plc):
+            raise InvalidInputError(f"{plc.source}: region_volumes asked, but its region list has no volume "
+                                    f"constraint > 0 (the fifth number of a .poly region line)")
+        max_volume = _with_region_volumes(max_volume, region_volume_bounds(plc))
     switches = _tetgen_switches(max_volume, radius_edge)
     surface, surface_note = _tetgen_surface(plc, switches + "AQ") if start == "tetgen" else (plc, "input")
     refiner = _InteriorRefiner(plc, max_volume, radius_edge, time_limit, started, gabriel_options)
@@ -162,29 +171,35 @@ def refine_quality3d(
     if g.status == "converged" and start == "tetgen":
         surface, _ = refiner.split_mesh(g.mesh)
         g = refiner.repair(surface, refiner.tetgen_points(surface, switches + "YAQ", stats))
-    bad = blocked = np.zeros(0, dtype=np.int64)
-    status: str = g.status
+    mesh, status = g.mesh, g.status
     stop = g.stats["diagnosis"]["stop_reason"]
     budget = 10**6 if max_points is None else int(max_points)
+    on = np.zeros(0, dtype=bool)
     while status == "converged":
-        surface, interior = refiner.split_mesh(g.mesh)
-        bad, centers = refiner.bad_tets(g.mesh)
-        bad_of_accepted, accepted = refiner.independent_centers(g.mesh, bad, centers)
-        on_spheres = refiner.closed_hits(surface, np.concatenate([interior, accepted]))
-        blocked = np.flatnonzero(on_spheres[len(interior):])
+        surface, interior = refiner.split_mesh(mesh)
+        mesh, rows, centers, passed = refiner.interior_pass(mesh, budget - len(interior))
+        surface, interior = refiner.split_mesh(mesh)
+        on_interior = refiner.closed_hits(surface, interior)
+        if passed == "not_conforming":  # cospherical points: the round goes through the boundary repair
+            rows, centers = refiner.independent_centers(mesh, *refiner.bad_tets(mesh))
+        on = refiner.closed_hits(surface, centers)
         stats["rounds"] += 1
         seconds = time.perf_counter() - started
         if callback:
-            callback(stats["rounds"], len(interior), int(bad.size), len(blocked), seconds)
-        if not bad.size and not on_spheres.any():
+            callback(stats["rounds"], len(interior), len(rows), int(on.sum()), seconds)
+        if not len(rows) and not on_interior.any():
             break
-        if len(interior) >= budget or seconds > time_limit:
+        if passed == "budget_exhausted" or len(interior) >= budget or seconds > time_limit:
             status = "budget_exhausted"
             break
-        triggers, free = refiner.stand_ins(g.mesh, bad_of_accepted[blocked], accepted[blocked], surface)
-        keep = np.concatenate([np.concatenate([interior, accepted])[~on_spheres], free])[:budget]
+        # the centers the pass could not insert: stand-ins strictly inside their tets, which the boundary
+        # repair sees as encroaching points (Ruppert's rule) or inserts where they encroach nothing
+        direct = centers[~on] if passed == "not_conforming" else np.zeros((0, 3))
+        stand = on if passed == "not_conforming" else np.ones(len(rows), dtype=bool)
+        triggers, free = refiner.stand_ins(mesh, rows[stand], centers[stand], surface)
+        keep = np.concatenate([interior[~on_interior], direct, free])[:budget]
         grown = surface
-        if len(triggers):  # the repair splits what they encroach (Ruppert's rule); they are then dropped
+        if len(triggers):  # the repair splits what they encroach; they are then dropped
             split = refiner.repair(surface, np.concatenate([keep, triggers]))
             status, stop = split.status, split.stats["diagnosis"]["stop_reason"]
             if status != "converged":
@@ -197,14 +212,20 @@ def refine_quality3d(
         status, stop = repaired.status, repaired.stats["diagnosis"]["stop_reason"]
         if status == "converged":
             g = repaired
-    # g is the last converged repair when a later one stopped (its status is returned, with g's mesh)
-    mesh, report = g.mesh, check_gabriel(g.mesh)
+            mesh = g.mesh
+    bad = refiner.bad_tets(mesh)[0]
+    if status == "converged" and len(bad):  # the pass's measure and numpy's differ in the last ulp
+        status = "quality_blocked"
+    # mesh is the last interior pass's, on the last converged repair's boundary, when a later repair stopped
+    # (its status is returned with that mesh)
+    report = check_gabriel(mesh)
     if status == "converged" and not report.ok:  # the repair converged, so this cannot happen; checked anyway
         status = "stalled"
     interior_points = len(mesh.points) - len(refiner.split_mesh(mesh)[0].points)
     stats = {"status": status, "steiner_points": len(mesh.points) - len(plc.points),
              "boundary_points": len(mesh.points) - interior_points, "interior_points": interior_points,
-             **tet_quality(mesh), "bad_tets": int(bad.size), "blocked_centers": len(blocked),
+             **tet_quality(mesh), "bad_tets": int(bad.size), "blocked_centers": int(on.sum()),
+             "inserted_by_passes": refiner.inserted,
              "encroached_facets": len(report.faces), "encroached_segments": len(report.segments),
              "volume_mesh": g.stats.get("volume_mesh"), "last_repair": stop,
              "negative_couplings": control_volume_summary(mesh)["negative_couplings"], **stats,
@@ -220,13 +241,14 @@ class _InteriorRefiner:
                  started: float, gabriel_options: dict[str, Any]) -> None:
         self.plc, self.max_volume, self.radius_edge = plc, max_volume, radius_edge
         self.time_limit, self.started, self.gabriel_options = time_limit, started, gabriel_options
+        self.inserted = 0  # circumcenters the interior passes inserted
 
     def repair(self, surface: PLC, interior: np.ndarray, share: float = 1.0) -> Any:
         """refine_gabriel of `surface` with `interior` (k, 3) as isolated points (after surface's points),
         within `share` of the time left."""
         points = np.concatenate([surface.points, np.asarray(interior, dtype=np.float64).reshape(-1, 3)])
-        plc = PLC(points, surface.triangles, surface.facet_ids, surface.segments, self.plc.holes,
-                  self.plc.regions, self.plc.source, self.plc.warnings, self.plc.facet_markers)
+        plc = replace(self.plc, points=points, triangles=surface.triangles, facet_ids=surface.facet_ids,
+                      segments=surface.segments)
         left = self.time_limit - (time.perf_counter() - self.started)
         return refine_gabriel(plc, time_limit=max(0.0, share * left), **self.gabriel_options)
 
@@ -241,9 +263,8 @@ class _InteriorRefiner:
         renumber = np.cumsum(on) - 1
         faces = renumber[np.asarray(mesh.boundary_faces, dtype=np.int64)]
         segments = renumber[np.asarray(mesh.segments, dtype=np.int64).reshape(-1, 2)]
-        surface = PLC(mesh.points[on], faces, np.asarray(mesh.face_facets, dtype=np.int64), segments,
-                      self.plc.holes, self.plc.regions, self.plc.source, self.plc.warnings,
-                      self.plc.facet_markers)
+        surface = replace(self.plc, points=mesh.points[on], triangles=faces,
+                          facet_ids=np.asarray(mesh.face_facets, dtype=np.int64), segments=segments)
         return surface, mesh.points[~on]
 
     @staticmethod
@@ -272,15 +293,51 @@ class _InteriorRefiner:
         stats.update(tetgen=switches, tetgen_points=len(extra), tetgen_points_dropped=int((~keep).sum()))
         return extra[keep]
 
+    @staticmethod
+    def region_labels(mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
+        """The region attributes (a,) of mesh (1.0 for every tet without regions) and each tet's index (t,)
+        among them."""
+        regions = np.ones(len(mesh.tets)) if mesh.tet_regions is None else np.asarray(mesh.tet_regions)
+        attrs, labels = np.unique(np.asarray(regions, dtype=np.float64), return_inverse=True)
+        return attrs, labels.ravel().astype(np.int64)
+
+    def volume_bounds_of(self, attrs: np.ndarray) -> np.ndarray:
+        """The volume bound (a,) of each region attribute: inf where none. A mapping's key None is the bound
+        everywhere."""
+        if self.max_volume is None:
+            return np.full(len(attrs), np.inf)
+        if not isinstance(self.max_volume, Mapping):
+            return np.full(len(attrs), float(self.max_volume))
+        everywhere = self.max_volume.get(None, math.inf)
+        return np.array([min(everywhere, self.max_volume.get(a, math.inf)) for a in attrs.tolist()],
+                        dtype=np.float64).reshape(-1)
+
     def volume_bounds(self, mesh: TetMesh) -> np.ndarray:
         """The volume bound (t,) of each tet: inf where none."""
-        t = len(mesh.tets)
-        if self.max_volume is None:
-            return np.full(t, np.inf)
-        if isinstance(self.max_volume, (int, float)):
-            return np.full(t, float(self.max_volume))
-        regions = np.ones(t) if mesh.tet_regions is None else np.asarray(mesh.tet_regions, dtype=np.float64)
-        return np.array([self.max_volume.get(r, math.inf) for r in regions.tolist()], dtype=np.float64)
+        attrs, labels = self.region_labels(mesh)
+        return self.volume_bounds_of(attrs)[labels]
+
+    def interior_pass(self, mesh: TetMesh, budget: int) -> tuple[TetMesh, np.ndarray, np.ndarray, str]:
+        """Circumcenters of the tets of `mesh` (a Gabriel boundary) over a bound inserted into its Delaunay
+        tetrahedralization one by one, the boundary fixed (``_core.refine_interior``: each strictly outside
+        every closed diametral sphere, in the domain, exact), at most `budget` of them within the time left.
+        Returns the mesh, the rows (k,) of its tets still over a bound with their circumcenters (k, 3), and
+        the pass's status ("converged", "blocked", "budget_exhausted", or "not_conforming": a subfacet or
+        subsegment is no Delaunay face or edge, `mesh` returned unchanged with no rows)."""
+        attrs, labels = self.region_labels(mesh)
+        left = self.time_limit - (time.perf_counter() - self.started)
+        r = _core.refine_interior(
+            np.ascontiguousarray(mesh.points, dtype=np.float64),
+            np.ascontiguousarray(mesh.tets, dtype=np.int64), labels,
+            np.ascontiguousarray(mesh.boundary_faces, dtype=np.int64),
+            np.ascontiguousarray(mesh.segments, dtype=np.int64).reshape(-1, 2),
+            float(self.radius_edge or 0.0), self.volume_bounds_of(attrs), max(0, int(budget)), max(0.0, left))
+        self.inserted += r.inserted
+        if r.status == "not_conforming":
+            return mesh, np.zeros(0, dtype=np.int64), np.zeros((0, 3)), r.status
+        regions = None if mesh.tet_regions is None else attrs[r.tet_labels]
+        grown = replace(mesh, points=r.points, tets=np.asarray(r.tets, dtype=np.int64), tet_regions=regions)
+        return grown, np.asarray(r.blocked_rows, dtype=np.int64), np.asarray(r.blocked_centers), r.status
 
     def bad_tets(self, mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
         """Rows of mesh.tets over a bound, most skewed first, and their circumcenters (floating point)."""
@@ -320,6 +377,7 @@ class _InteriorRefiner:
         encroach; free: those in none, inserted instead of the center). Floating-point points, exact tests."""
         tets = np.asarray(mesh.tets, dtype=np.int64)[tets]
         centroid = mesh.points[tets].mean(axis=1)
+        centers = np.where(np.isfinite(centers).all(axis=1)[:, None], centers, centroid)  # a sliver's is inf
         found = np.zeros(len(tets), dtype=bool)
         out = np.zeros((len(tets), 3))
         faces = np.array([[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]])  # outward faces of a positive tet
@@ -337,9 +395,10 @@ class _InteriorRefiner:
 
 
 def _tetgen_switches(max_volume: Any, radius_edge: float | None) -> str:
-    """TetGen's -p -q [-a] switches for the bounds (a mapping of region bounds is left to the rounds)."""
+    """TetGen's -p -q [-a] switches for the bounds (the bounds of regions are left to the rounds)."""
     switches = "pq" + (repr(float(radius_edge)) if radius_edge else "")
-    return switches + (f"a{float(max_volume)!r}" if isinstance(max_volume, (int, float)) else "")
+    everywhere = max_volume.get(None) if isinstance(max_volume, Mapping) else max_volume
+    return switches + (f"a{float(everywhere)!r}" if everywhere is not None else "")
 
 
 def _tetgen_surface(plc: PLC, switches: str) -> tuple[PLC, str]:
@@ -359,14 +418,36 @@ def _tetgen_surface(plc: PLC, switches: str) -> tuple[PLC, str]:
     renumber[keep] = np.arange(len(keep))
     faces = renumber[tm.boundary_faces]
     facets = np.asarray(tm.face_facets, dtype=np.int64)
-    surface = PLC(tm.points[keep], faces, facets, facet_boundary_segments(faces, facets), plc.holes,
-                  plc.regions, plc.source, plc.warnings, plc.facet_markers)
+    surface = replace(plc, points=tm.points[keep], triangles=faces, facet_ids=facets,
+                      segments=facet_boundary_segments(faces, facets))
     return surface, f"TetGen -{switches}: {len(keep) - len(plc.points)} boundary Steiner points"
+
+
+def region_volume_bounds(plc: PLC) -> dict[float, float]:
+    """{region attribute: volume constraint} from plc's region list (:attr:`PLC.region_volumes`): the rows
+    with a constraint > 0 (TetGen ignores the others), the smallest when seeds with one attribute differ."""
+    bounds: dict[float, float] = {}
+    volumes = np.asarray(plc.region_volumes, dtype=np.float64)
+    for row, volume in zip(np.asarray(plc.regions).reshape(-1, 4)[: len(volumes)], volumes.tolist()):
+        if volume > 0:
+            attr = float(row[3])
+            bounds[attr] = min(volume, bounds.get(attr, math.inf))
+    return bounds
+
+
+def _with_region_volumes(max_volume: Any, regions: dict[float, float]) -> dict[float | None, float]:
+    """One mapping for ``max_volume`` (None, a number or a mapping) and the region list's bounds: the smaller
+    bound where both give one; a number becomes the key None (every tet)."""
+    merged: dict[float | None, float] = {} if max_volume is None else (
+        dict(max_volume) if isinstance(max_volume, Mapping) else {None: float(max_volume)})
+    for attr, volume in regions.items():
+        merged[attr] = min(volume, merged.get(attr, math.inf))
+    return merged
 
 
 def _jsonable_bound(max_volume: Any) -> Any:
     if isinstance(max_volume, Mapping):
-        return {str(k): float(v) for k, v in max_volume.items()}
+        return {("every tet" if k is None else str(k)): float(v) for k, v in max_volume.items()}
     return max_volume
 
 
