@@ -477,6 +477,11 @@ class Refine3DResult:
         the Steiner budget used (its default resolved)
         """
     @property
+    def max_work(self) -> int:
+        """
+        the work budget of each strategy pass (its default resolved)
+        """
+    @property
     def min_length(self) -> float:
         """
         the minimum length used (its default resolved)
@@ -537,6 +542,11 @@ class Refine3DResult:
     def volume_mesh(self) -> str:
         """
         'built', or why tets is empty
+        """
+    @property
+    def work(self) -> int:
+        """
+        the work units spent by every attempt together
         """
 class InteriorRefinement:
     """
@@ -649,9 +659,9 @@ def refine(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segm
     (DomainCoverage.triangulation), taken over when it triangulates this domain, empty afterwards. Returns a
     Refine2DResult.
     """
-def refine_gabriel(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], facet_ids: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_steiner: typing.SupportsInt | typing.SupportsIndex, min_length: typing.SupportsFloat | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex, split: str, protected_fallback: bool, progress_every: typing.SupportsInt | typing.SupportsIndex, progress: collections.abc.Callable[[int, int, int, float], None] | None) -> Refine3DResult:
+def refine_gabriel(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], facet_ids: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_steiner: typing.SupportsInt | typing.SupportsIndex, min_length: typing.SupportsFloat | typing.SupportsIndex, max_work: typing.SupportsInt | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex, split: str, protected_fallback: bool, progress_every: typing.SupportsInt | typing.SupportsIndex, progress: collections.abc.Callable[[int, int, int, float], None] | None) -> Refine3DResult:
     """
-    Gabriel refinement of a PLC. max_steiner < 0, min_length < 0: the defaults of Refine3DOptions (gabriel3d.h).
+    Gabriel refinement of a PLC. max_steiner < 0, min_length < 0, max_work < 0: the defaults of Refine3DOptions (gabriel3d.h).
     progress: None or f(steiner, encroached_segments, encroached_facets, seconds).
     Returns a Refine3DResult.
     """
