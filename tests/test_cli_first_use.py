@@ -87,7 +87,7 @@ def test_progress_only_on_a_terminal_for_large_inputs(monkeypatch, quiet, size, 
     assert len([line for line in err.lines if line.startswith("nonobtuse: ")]) == expected
 
 
-OPTIONAL = ("igl", "tetgen", "pytetwild", "triangle", "open3d")
+OPTIONAL = ("tetgen", "pytetwild", "triangle", "open3d")
 
 
 def run_without_optional_packages(*args: str) -> subprocess.CompletedProcess:
@@ -107,20 +107,20 @@ def test_check3d_default_backend_without_optional_packages(tmp_path):
     assert "Traceback" not in done.stderr
 
 
-def test_check3d_fallback_names_the_package_to_install():
-    # The Schönhardt prism: no tetrahedralization of its vertices conforms, so the cgal backend needs the
-    # winding-number fallback, which needs libigl.
+def test_check3d_winding_number_fallback_needs_no_optional_package():
+    # The Schönhardt prism: no tetrahedralization of its vertices conforms, so the cgal backend selects cells
+    # by the exact winding number (C++, no optional package); the prism's faces are not Gabriel.
     schonhardt = Path(__file__).parent / "data" / "3d" / "schonhardt.off"
-    done = run_without_optional_packages("check3d", str(schonhardt))
-    assert done.returncode == 2
-    assert "pip install 'nonobtuse[3d]'" in done.stderr and "Traceback" not in done.stderr
+    done = run_without_optional_packages("check3d", str(schonhardt), "--json")
+    assert done.returncode == 1, done.stderr
+    report = json.loads(done.stdout)
+    assert report["backend"] == "cgal" and report["tets"] > 0
 
 
 def test_demo_without_the_demo_extra_says_what_is_not_measured():
     done = run_without_optional_packages("demo")
     assert done.returncode == 0, done.stderr
     assert "not measured (the 'triangle' package is not installed" in done.stdout
-    # the 3D part: no TetGen and no libigl, so the input surface is checked; the repair is still certified
-    assert ("before: the input surface, no tets (TetGen not installed: pip install 'nonobtuse[3d]'; libigl "
-            "not installed: pip install 'nonobtuse[demo]')") in done.stdout
+    # the 3D part: no TetGen, so the cgal backend tetrahedralizes; the repair is still certified
+    assert "before: the cgal backend (TetGen not installed: pip install 'nonobtuse[3d]')" in done.stdout
     assert "certificate: every boundary face and subsegment Gabriel (exact)" in done.stdout

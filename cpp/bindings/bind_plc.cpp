@@ -56,6 +56,47 @@ void bind_plc(py::module_& m) {
       "Finite cells (t, 4) int64 of the Delaunay tetrahedralization of points (n, 3), positively oriented.\n"
       "Raises InvalidInputError when two points coincide.");
   m.def(
+      "plc_unbalanced_edge",
+      [](const DoubleArray& points, const IndexArray& triangles) {
+        auto t = to_index_rows<3>(triangles, to_points3(points).size(), "triangles");
+        auto e = unbalanced_edge(t);
+        return e[0] < 0 ? py::object(py::none()) : py::object(py::make_tuple(e[0], e[1]));
+      },
+      py::arg("points"), py::arg("triangles"),
+      "The smallest edge (a, b), a < b, that the triangles (m, 3) traverse more often one way than the other,\n"
+      "or None when they form a closed oriented surface.");
+  m.def(
+      "surface_winding_numbers",
+      [](const DoubleArray& points, const IndexArray& triangles, const DoubleArray& queries) {
+        auto p = to_points3(points);
+        auto t = to_index_rows<3>(triangles, p.size(), "triangles");
+        auto q = to_points3(queries, "queries");
+        std::vector<int> w;
+        {
+          py::gil_scoped_release release;
+          w = surface_winding_numbers(p, t, q);
+        }
+        return from_vector(std::vector<std::int64_t>(w.begin(), w.end()));
+      },
+      py::arg("points"), py::arg("triangles"), py::arg("queries"),
+      "Exact winding number (q,) int64 of the oriented triangles (m, 3) around each query (q, 3): vertical ray\n"
+      "casting from the query symbolically perturbed off the surface; +1 inside an outward closed surface.");
+  m.def(
+      "delaunay_cells_inside_surface",
+      [](const DoubleArray& points, const IndexArray& triangles) {
+        auto p = to_points3(points);
+        auto t = to_index_rows<3>(triangles, p.size(), "triangles");
+        std::vector<std::array<int, 4>> cells;
+        {
+          py::gil_scoped_release release;
+          cells = delaunay_cells_inside_surface(p, t);
+        }
+        return from_index_rows<4>(cells);
+      },
+      py::arg("points"), py::arg("triangles"),
+      "Cells (t, 4) int64 of delaunay_tetrahedra(points) whose centroid has a non-zero exact winding number\n"
+      "with respect to the closed oriented surface triangles (m, 3); sorted.");
+  m.def(
       "delaunay_restricted_to_plc",
       [](const DoubleArray& points, const IndexArray& triangles, const IndexArray& facet_ids,
          const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions) {

@@ -12,10 +12,9 @@ certified) follows, beside Triangle -pq25D.
 
 The 3D part (:func:`run_part`) is CGAL's ``joint`` CAD part (446 triangles, genus 2; bundled as package data,
 CC0, see ``data/SOURCES.md``): tetrahedralized by TetGen (``-pq1.414Y``: the boundary as given) when the
-``tetgen`` package is installed, else by the cgal backend (Delaunay, with the winding-number fallback: libigl,
-in the demo extra), checked exactly for Gabriel boundary faces and subsegments, repaired by
-:func:`nonobtuse.mesh3d.refine_gabriel` and certified. Without libigl either (a plain ``pip install .``) the
-input surface is checked against its own vertices instead.
+``tetgen`` package is installed, else by the cgal backend (Delaunay, with the exact winding-number
+fallback), checked exactly for Gabriel boundary faces and subsegments, repaired by
+:func:`nonobtuse.mesh3d.refine_gabriel` and certified.
 """
 
 from __future__ import annotations

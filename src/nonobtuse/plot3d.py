@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.mesh3d import refine_gabriel, tetrahedralize
+from nonobtuse.mesh3d import tetrahedralize
 from nonobtuse.mesh3d.gabriel import GabrielReport
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 from nonobtuse.mesh3d.tetrahedralize import TETGEN_DEFAULT_SWITCHES
@@ -40,20 +40,14 @@ Stage = tuple[str, TetMesh, GabrielReport]
 def unrepaired_mesh(plc: PLC) -> tuple[TetMesh, str]:
     """The mesh a "before" panel shows for ``plc`` (the demo's, refine3d's) and what made it: TetGen with its
     default switches when the ``tetgen`` package is installed (the 3d extra) and succeeds, else the cgal
-    backend (its fallback needs libigl: the demo extra), else the input surface with no tets
-    (``refine_gabriel`` with no Steiner point: its subfacets, the facets triangulated, against the input
-    vertices). Raises what the cgal backend raises on an input it refuses."""
+    backend. Raises what the cgal backend raises on an input it refuses."""
     try:
         return tetrahedralize(plc, "tetgen"), f"TetGen -{TETGEN_DEFAULT_SWITCHES}"
     except ImportError:
         why = "TetGen not installed: pip install 'nonobtuse[3d]'"
     except InvalidInputError:
         why = "TetGen failed on this input"
-    try:
-        return tetrahedralize(plc, "cgal"), f"the cgal backend ({why})"
-    except ImportError:
-        return refine_gabriel(plc, max_steiner=0).mesh, (f"the input surface, no tets ({why}; libigl not "
-                                                         "installed: pip install 'nonobtuse[demo]')")
+    return tetrahedralize(plc, "cgal"), f"the cgal backend ({why})"
 
 
 def _steiner_points(mesh: TetMesh) -> np.ndarray:

@@ -35,6 +35,31 @@ std::vector<std::array<int, 2>> triangle_soup_self_intersections(const std::vect
 // lose an index). Cost: O(n log n) expected.
 std::vector<std::array<int, 4>> delaunay_tetrahedra(const std::vector<PlcPoint>& points);
 
+// An edge {a, b} (a < b) of `triangles` traversed more often in one direction than in the other, the smallest
+// such, or {-1, -1} when there is none: the triangles then form a closed oriented surface (a 2-cycle; a closed
+// 2-manifold consistently oriented, several of them, or nested shells), around which the winding number is an
+// integer defined at every point off the surface. Cost: O(m log m).
+std::array<int, 2> unbalanced_edge(const std::vector<PlcTriangle>& triangles);
+
+// The winding number of the oriented triangles around each query point q, exactly: the signed count of
+// triangles met by the vertical ray (+z) from q + (e, e^2, e^3), e > 0 infinitesimal (simulation of simplicity,
+// so a query on the surface gets the number of the side the perturbation takes it to). +1 inside an outward
+// oriented closed surface, 0 outside. For a closed oriented surface (unbalanced_edge == {-1, -1}) it is the
+// generalized winding number of the perturbed point; otherwise it depends on the ray. Every sign is an exact
+// predicate. Cost: O(m + k) to bucket the triangles by their xy boxes on a grid of about m columns (k bucket
+// entries), plus per query the triangles of its column (a few on surfaces without long vertical stacks); queries
+// run on two threads from 2^16.
+std::vector<int> surface_winding_numbers(const std::vector<PlcPoint>& points,
+                                         const std::vector<PlcTriangle>& triangles,
+                                         const std::vector<PlcPoint>& queries);
+
+// The cells of delaunay_tetrahedra(points) whose centroid (rounded to doubles, perturbed as in
+// surface_winding_numbers) has a non-zero winding number with respect to the closed oriented surface
+// `triangles` (check unbalanced_edge first): the cells inside the surface; a cell crossed by the surface is
+// inside when its centroid is. Sorted. Cost: the Delaunay tetrahedralization plus one query per cell.
+std::vector<std::array<int, 4>> delaunay_cells_inside_surface(const std::vector<PlcPoint>& points,
+                                                              const std::vector<PlcTriangle>& triangles);
+
 // The Delaunay tetrahedralization of a PLC's vertices (no Steiner point) restricted to the PLC's interior.
 struct PlcDelaunay {
   std::vector<Tetrahedron> tets;  // positively oriented, sorted

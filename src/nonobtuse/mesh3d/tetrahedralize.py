@@ -11,9 +11,13 @@ What each backend guarantees:
   faces on no facet, without the unbounded one and those of hole seeds (internal facets separate regions,
   orientation is not used), with region attributes from the seeds or, without seeds, numbered 1, 2, ... when
   there are several regions (``stats["volume_mesh"] == "built"``). Otherwise a flood fill would leak through
-  the facets: tets are then selected by generalized winding number >= 1/2 of their centroid (floating point;
-  no regions) and ``stats["volume_mesh"]`` says so. The exact Gabriel check reads only the boundary faces and
-  points.
+  the facets, and the tets are the Delaunay cells whose centroid (rounded to doubles) the surface winds round:
+  exact integer winding number != 0 by ray casting (:func:`nonobtuse._core.surface_winding_numbers`), the
+  generalized winding number the surface has there, so nested shells are inside and a cell crossed by a facet
+  is inside when its centroid is; no regions, hole seeds not used. That needs a closed oriented surface (every
+  edge traversed as often one way as the other, as validation orients closed surfaces); on any other (an open
+  surface, internal or dangling facets) no tets are built. ``stats["volume_mesh"]`` says which. The exact
+  Gabriel check reads only the boundary faces and points, the same in every case.
 - ``"tetgen"``: TetGen through the ``tetgen`` package. Default switches ``pq1.414YAQ``: the boundary is kept
   (``Y``: no Steiner point on the boundary), interior quality points are added; ``switches=...`` passes any
   string (e.g. ``"pq1.414AQ"`` lets TetGen split the boundary). TetGen keeps the input points first and in
@@ -124,38 +128,35 @@ def _plc_arrays(plc: PLC) -> tuple[np.ndarray, ...]:
 def _cgal(plc: PLC, options: dict[str, Any]) -> TetMesh:
     if options:
         raise InvalidInputError(f"backend 'cgal' takes no options, got {sorted(options)}")
-    d = _core.delaunay_restricted_to_plc(*_plc_arrays(plc))
-    n_facets = len(np.unique(plc.facet_ids))
-    if len(d["uncovered_facets"]) == 0:
+    arrays = _plc_arrays(plc)
+    d = _core.delaunay_restricted_to_plc(*arrays)
+    uncovered = d["uncovered_facets"]
+    if len(uncovered) == 0:
         tets, regions, volume_mesh = d["tets"], region_attributes(d["tet_regions"], plc, True), "built"
     else:
-        tets, regions = _tets_by_winding_number(plc), None
-        volume_mesh = (f"by winding number: the Delaunay tetrahedralization of the vertices does not conform "
-                       f"to {len(d['uncovered_facets'])} of {n_facets} facets (e.g. facet "
-                       f"{int(d['uncovered_facets'][0])}); no regions")
+        regions = None
+        why = (f"the Delaunay tetrahedralization of the vertices does not conform to {len(uncovered)} of "
+               f"{len(np.unique(plc.facet_ids))} facets (e.g. facet {int(uncovered[0])})")
+        tets, volume_mesh = _tets_by_winding_number(arrays[0], plc.triangles, why)
     return TetMesh(plc.points.copy(), tets, plc.triangles.copy(), plc.markers_of_facets(plc.facet_ids),
                    plc.segments.copy(), regions, {"volume_mesh": volume_mesh},
                    face_facets=plc.facet_ids.copy())
 
 
-def _tets_by_winding_number(plc: PLC) -> np.ndarray:
-    """Delaunay cells of the PLC's vertices whose centroid has generalized winding number >= 1/2 w.r.t. the
-    PLC's (outward oriented) triangles: floating point, for PLCs the Delaunay tetrahedralization does not
-    conform to; internal facets and dangling facets blur it. Needs libigl (the 3d extra): ModuleNotFoundError
-    saying so without it."""
-    try:
-        import igl
-    except ModuleNotFoundError:
-        raise ModuleNotFoundError("backend 'cgal': the Delaunay tetrahedralization of this PLC's vertices "
-                                  "does not conform to its facets, and the fallback (generalized winding "
-                                  "numbers) needs libigl: pip install 'nonobtuse[3d]' (or libigl), or use "
-                                  "--backend tetgen") from None
-
-    points = np.ldexp(plc.points, -power_of_two_exponent(plc.points))  # exact; float sums stay finite
-    cells = _core.delaunay_tetrahedra(points)
-    centroids = points[cells].mean(axis=1)
-    w = igl.winding_number(points, plc.triangles, centroids) if len(cells) else np.zeros(0)
-    return cells[np.abs(w) >= 0.5]
+def _tets_by_winding_number(points: np.ndarray, triangles: np.ndarray, why: str) -> tuple[np.ndarray, str]:
+    """The Delaunay cells of ``points`` (n, 3), scaled into a safe range, that the closed oriented surface
+    ``triangles`` (m, 3) winds around (exact; see the module docstring), and the ``volume_mesh`` text, which
+    starts "by winding number"; (0, 4) cells and a text starting "not built" when the surface is not closed
+    and oriented. ``why``: why the flood fill was not used. Cost: O(n log n) for the Delaunay
+    tetrahedralization, plus the ray casts (linear on surfaces without long vertical stacks)."""
+    edge = _core.plc_unbalanced_edge(points, triangles)
+    if edge is not None:
+        return np.zeros((0, 4), dtype=np.int64), (
+            f"not built: {why}, and the surface is not closed and oriented (edge {edge} is traversed more "
+            f"often one way than the other: an open surface, internal or dangling facets), so winding "
+            f"numbers do not say what is inside; --backend tetgen builds one")
+    return _core.delaunay_cells_inside_surface(points, triangles), (
+        f"by winding number (exact): {why}; the cells whose centroid the surface winds around, no regions")
 
 
 def _tetgen(plc: PLC, options: dict[str, Any]) -> TetMesh:
