@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'InteriorRefinement', 'Junction', 'Mesh2D', 'Quality2DOptions', 'Quality2DStats', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'Triangulation2', 'check_gabriel', 'classify_edges', 'closed_diametral_sphere_hits', 'conforming_gabriel_steiner_points', 'coupling_signs', 'default_interior_budget', 'default_steiner_budget', 'delaunay_restricted_to_plc', 'delaunay_tetrahedra', 'dual_area_signs', 'find_segment_intersections', 'inspect_domain', 'parse_numeric_rows', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'refine', 'refine_gabriel', 'refine_interior', 'triangulate']
+__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'InteriorRefinement', 'Junction', 'Mesh2D', 'Quality2DOptions', 'Quality2DStats', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'Triangulation2', 'check_gabriel', 'classify_edges', 'closed_diametral_sphere_hits', 'conforming_gabriel_steiner_points', 'coupling_signs', 'default_interior_budget', 'default_steiner_budget', 'delaunay_cells_inside_surface', 'delaunay_restricted_to_plc', 'delaunay_tetrahedra', 'dual_area_signs', 'find_segment_intersections', 'inspect_domain', 'parse_numeric_rows', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'plc_unbalanced_edge', 'refine', 'refine_gabriel', 'refine_interior', 'surface_winding_numbers', 'triangulate']
 class Mesh2D:
     """
     A triangulated 2D domain (read-only; each array attribute is a new array on each access).
@@ -605,6 +605,11 @@ def default_steiner_budget(n_points: typing.SupportsInt | typing.SupportsIndex) 
     """
     The Steiner budget refine uses for n input points when max_steiner < 0 (refine2d.h).
     """
+def delaunay_cells_inside_surface(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> numpy.typing.NDArray[numpy.int64]:
+    """
+    Cells (t, 4) int64 of delaunay_tetrahedra(points) whose centroid has a non-zero exact winding number
+    with respect to the closed oriented surface triangles (m, 3); sorted.
+    """
 def delaunay_restricted_to_plc(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], facet_ids: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> dict:
     """
     The Delaunay tetrahedralization of a PLC's vertices restricted to its regions (exact flood fill across
@@ -652,6 +657,11 @@ def plc_self_intersections(points: typing.Annotated[numpy.typing.ArrayLike, nump
     Pairs (k, 2) int64 (i < j) of triangles intersecting beyond shared vertices/edges (exact);
     triangles must be non-degenerate and distinct. At most max_pairs rows.
     """
+def plc_unbalanced_edge(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> typing.Any:
+    """
+    The smallest edge (a, b), a < b, that the triangles (m, 3) traverse more often one way than the other,
+    or None when they form a closed oriented surface.
+    """
 def refine(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool, strategy: str = 'greedy', max_steiner: typing.SupportsInt | typing.SupportsIndex = -1, threads: typing.SupportsInt | typing.SupportsIndex = 2, quality: Quality2DOptions = ..., triangulation: Triangulation2 | None = None) -> Refine2DResult:
     """
     Nonobtuse boundary refinement of a validated domain (see nonobtuse.refine). max_steiner < 0:
@@ -670,6 +680,11 @@ def refine_interior(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float
     Delaunay refinement of the interior of a mesh (n,3) points, (t,4) tets, (t,) labels with a Gabriel
     boundary (f,3) faces, (k,2) segments: circumcenters of tets over radius_edge (<= 0: none) or
     volume_bounds[label] inserted outside every closed diametral sphere (see quality3d.h).
+    """
+def surface_winding_numbers(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], queries: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> numpy.typing.NDArray[numpy.int64]:
+    """
+    Exact winding number (q,) int64 of the oriented triangles (m, 3) around each query (q, 3): vertical ray
+    casting from the query symbolically perturbed off the surface; +1 inside an outward closed surface.
     """
 def triangulate(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], convex_hull_boundary: bool) -> Mesh2D:
     """
