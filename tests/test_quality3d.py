@@ -217,3 +217,39 @@ def test_bench_quality3d_writes_both_rows(tmp_path):
     ours = rows[1]
     assert ours["status"] == "converged" and ours["encroached_facets"] == ours["encroached_segments"] == "0"
     assert float(ours["worst_radius_edge"]) <= 2.0 and float(ours["max_volume"]) <= 0.05
+
+
+def test_interior_pass_inserts_circumcenters_outside_closed_spheres():
+    plc = load_plc(DATA3D / "hourglass.off")
+    bound = 1e-3 * float(np.prod(plc.points.max(axis=0) - plc.points.min(axis=0)))
+    r = refine_quality3d(plc, radius_edge=2.0, max_volume=bound, start="boundary")
+    assert r.status == "converged" and r.stats["inserted_by_passes"] > 0
+    ratios, volumes = radius_edge_and_volume(r.mesh)
+    assert ratios.max() <= 2.0 and volumes.max() <= bound
+    assert check_gabriel(r.mesh).ok and interior_points_in_closed_spheres(r.mesh) == 0
+    again = refine_quality3d(plc, radius_edge=2.0, max_volume=bound, start="boundary")
+    assert np.array_equal(again.mesh.points, r.mesh.points) and np.array_equal(again.mesh.tets, r.mesh.tets)
+
+
+def test_interior_pass_keeps_the_boundary_and_labels():
+    """One pass on a repaired two-region mesh: subfacets and subsegments unchanged, every new tet in a region,
+    the regions' volumes unchanged (the pass only subdivides them)."""
+    from nonobtuse.mesh3d import refine_gabriel
+    from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes
+
+    g = refine_gabriel(load_plc(DATA3D / "layered_box.poly"))
+    attrs, labels = np.unique(np.asarray(g.mesh.tet_regions), return_inverse=True)
+    r = _core.refine_interior(g.mesh.points, np.asarray(g.mesh.tets), labels.ravel(),
+                              np.asarray(g.mesh.boundary_faces), np.asarray(g.mesh.segments).reshape(-1, 2),
+                              2.0, np.full(len(attrs), np.inf), 10**6, 60.0)
+    assert r.status in ("converged", "blocked") and r.inserted > 0
+    assert np.array_equal(r.points[: len(g.mesh.points)], g.mesh.points)
+    before = signed_tet_volumes(g.mesh.points, np.asarray(g.mesh.tets))
+    after = signed_tet_volumes(r.points, r.tets)
+    assert (after > 0).all()
+    for k in range(len(attrs)):
+        assert after[r.tet_labels == k].sum() == pytest.approx(before[labels.ravel() == k].sum(), rel=1e-12)
+    new = r.points[len(g.mesh.points):]
+    face, segment = _core.closed_diametral_sphere_hits(r.points, np.asarray(g.mesh.boundary_faces),
+                                                       np.asarray(g.mesh.segments).reshape(-1, 2), new)
+    assert (face < 0).all() and (segment < 0).all()

@@ -4,9 +4,11 @@
 :func:`refine_quality3d` lets TetGen split the facets for the bounds, repairs that boundary
 (:func:`refine_gabriel`: every subfacet and subsegment gets an empty diametral sphere), takes TetGen's
 interior points on it (``-Y``) but those in a closed diametral sphere, then inserts circumcenters of the tets
-over a bound in rounds. A circumcenter in a closed diametral sphere is not kept: the next boundary repair,
-which sees it as an encroaching point, splits the subfacet or subsegment instead (Ruppert's rule). The
-returned mesh is refine_gabriel's Delaunay tetrahedralization, certified by the exact check.
+over a bound in rounds: each round inserts every circumcenter it can into one Delaunay tetrahedralization
+kept between insertions (strictly outside every closed diametral sphere, exact); a circumcenter in a closed
+diametral sphere is not inserted: the boundary repair, which sees a point standing for it as an encroaching
+point, splits the subfacet or subsegment instead (Ruppert's rule). The returned mesh is a Delaunay
+tetrahedralization with the repaired boundary, certified by the exact check.
 """
 
 from __future__ import annotations
@@ -43,16 +45,17 @@ class Quality3DResult:
             point), "quality_blocked" (certificate passes; a round could add nothing: the centers left lie on
             diametral spheres), "budget_exhausted" (max_points or time_limit), or the boundary repair's status
             when one did not converge ("budget_exhausted", "min_length_reached", "stalled"): mesh is then
-            the last converged repair's (certified) when there was one; stats["last_repair"] says how the last
-            repair ended.
+            the last interior pass's on the last converged repair's boundary (certified) when there was one;
+            stats["last_repair"] says how the last repair ended.
     stats:  boundary_points, interior_points, steiner_points (all points not in the input), tets,
             worst_radius_edge, max_volume, min_volume, radius_edge_over_2 (see :func:`tet_quality`), bad_tets
             (tets over a bound at the end), blocked_centers (circumcenters of the last round in a closed
-            diametral sphere), rounds, surface (how the facets were split first), tetgen / tetgen_points /
-            tetgen_points_dropped (TetGen's interior points, and those dropped for lying in a closed diametral
-            sphere), encroached_facets / encroached_segments (the exact certificate), volume_mesh,
-            negative_couplings, boundary_repair (the first refine_gabriel's stats), radius_edge /
-            max_volume_bound (the bounds asked), start, warnings, seconds.
+            diametral sphere), inserted_by_passes (circumcenters the interior passes inserted), rounds,
+            surface (how the facets were split first), tetgen / tetgen_points / tetgen_points_dropped
+            (TetGen's interior points, and those dropped for lying in a closed diametral sphere),
+            encroached_facets / encroached_segments (the exact certificate), volume_mesh, negative_couplings,
+            boundary_repair (the first refine_gabriel's stats), radius_edge / max_volume_bound (the bounds
+            asked), start, warnings, seconds.
     report: the GabrielReport of mesh (exact).
     """
 
@@ -130,20 +133,26 @@ def refine_quality3d(
     progress: True prints a line per round to stderr; a callable gets (round, interior_points, bad_tets,
     blocked_tets, seconds). started: time.perf_counter() at which the caller's work began (time_limit counts
     from it).
-    Each round: the boundary repair (refine_gabriel on the current subfacets, subsegments and interior points:
-    it splits every subfacet or subsegment an interior point encroaches, and builds the Delaunay
-    tetrahedralization), then the circumcenters of the tets over a bound. Split rule (Ruppert, Shewchuk):
-    within a round a circumcenter is taken only when no center taken before it lies inside its tet's
-    circumsphere (floating point), as Bowyer-Watson insertion one by one would still see the tet, so each new
-    point is at least its tet's circumradius r from every other point; a center in a closed diametral sphere
-    is not kept: the next repair splits the subfacet or subsegment it encroaches instead. Termination: a tet
-    over the radius-edge bound has r > radius_edge * (its shortest edge), one over the volume bound V has r >=
-    (3V / 4 pi)^(1/3) (a tet lies in its circumsphere), so interior points do not crowd; boundary splits
-    follow refine_gabriel's rule and limits. The loop itself is bounded by max_points, time_limit and the
+    Each round: an interior pass (``_core.refine_interior``: one Delaunay tetrahedralization kept while the
+    circumcenters of the tets over a bound are inserted one by one, worst radius-edge ratio first, each
+    strictly outside every closed diametral sphere of a subfacet and subsegment and inside the domain, both
+    exact; the boundary is fixed), then, for the tets left whose centers it could not insert, Ruppert's rule:
+    a point strictly inside the tet stands for its center, the boundary repair (refine_gabriel) splits what
+    it encroaches and it is dropped (or it is kept where it encroaches nothing), and a second repair
+    tetrahedralizes the grown boundary with the interior points outside its closed diametral spheres. The
+    termination argument is at the split rule in ``cpp/src/quality3d_interior.cpp`` (each inserted point is
+    its tet's circumradius r from every vertex; r > radius_edge * shortest edge, or r >= (3V / 4 pi)^(1/3)
+    for the volume bound V); boundary splits follow refine_gabriel's rule and limits. Tets near small input
+    angles whose centers stay in diametral spheres are left (stats["blocked_centers"], as TetGen counts the
+    tets it skips). When the repaired surface is not conforming in the Delaunay sense (cospherical points,
+    e.g. a cube's squares), the round takes the circumcenters of an independent set of bad tets (no center in
+    another's circumsphere) through the repair instead. The loop is bounded by max_points, time_limit and the
     boundary repair's budget, and a round that adds nothing ends it ("quality_blocked").
     Guarantee: report is the exact check_gabriel of the returned mesh; status "converged" needs it to pass and
     every tet within the bounds (measured in floating point). Deterministic.
-    Cost: per round a boundary repair (O(n log n) when few splits) and floating-point tet measures.
+    Cost: per round an interior pass (O(k log n) expected for k insertions) and up to two boundary repairs
+    (refine_gabriel with its control-volume summary, O(n log n) when few splits); rounds end when only
+    blocked centers are left, so their number follows the boundary splits, not the interior points.
     Raises InvalidInputError for a malformed PLC or bounds (radius_edge <= 1, max_volume <= 0, not finite), or
     region_volumes without a volume constraint in plc's region list.
     """
