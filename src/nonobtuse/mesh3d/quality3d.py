@@ -444,9 +444,9 @@ def region_volume_bounds(plc: PLC) -> dict[float, float]:
     return bounds
 
 
-def _with_region_volumes(max_volume: Any, regions: dict[float, float]) -> Mapping[Any, float]:
-    """One mapping for ``max_volume`` (None, a number or a mapping) and the region list's bounds: the smaller
-    bound where both give one; a number becomes the key None (every tet)."""
+def _with_region_volumes(max_volume: Any, regions: dict[float, float]) -> Any:
+    """One mapping {region attribute or None: bound} for ``max_volume`` (None, a number or a mapping) and the
+    region list's bounds: the smaller bound where both give one; a number becomes the key None (every tet)."""
     merged: dict[float | None, float] = {} if max_volume is None else (
         dict(max_volume) if isinstance(max_volume, Mapping) else {None: float(max_volume)})
     for attr, volume in regions.items():
