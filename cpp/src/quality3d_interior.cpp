@@ -57,17 +57,57 @@ class SphereIndex {
     for (Class& c : classes_) c.index = std::make_unique<PointIndex>(c.centers);
   }
 
-  // Is q in the closed diametral sphere of a subfacet or subsegment? (exact)
-  bool hits(const P3& q) const {
+  static constexpr int kNone = std::numeric_limits<int>::min();
+
+  // The first subfacet (its row) or subsegment (-1 - its row) whose closed diametral sphere holds q, or kNone
+  // (exact).
+  int find(const P3& q) const {
     for (int row : always_)
-      if (holds(row, q)) return true;
+      if (holds(row, q)) return row;
     for (const Class& c : classes_) {
-      bool hit = false;
+      int found = kNone;
       SearchBall around{{q.x(), q.y(), q.z()}, c.radius, false};
-      c.index->for_each_in(around, [&](int i) { hit = hit || holds(c.rows[i], q); });
-      if (hit) return true;
+      c.index->for_each_in(around, [&](int i) {
+        if (found == kNone && holds(c.rows[i], q)) found = c.rows[i];
+      });
+      if (found != kNone) return found;
     }
-    return false;
+    return kNone;
+  }
+
+  bool hits(const P3& q) const { return find(q) != kNone; }
+
+  // The center and radius of the diametral sphere of row (floating point), and the unit direction from the center
+  // towards `side` across the subfacet's plane (for a subsegment, perpendicular to it).
+  std::tuple<P3, double, K::Vector_3> sphere_towards(int row, const P3& side) const {
+    P3 center;
+    K::Vector_3 up;
+    if (row >= 0) {
+      const Triangle& f = faces_[row];
+      const P3 &a = pts_[f[0]], &b = pts_[f[1]], &c = pts_[f[2]];
+      center = CGAL::circumcenter(a, b, c);
+      up = CGAL::cross_product(b - a, c - a);
+      if ((side - center) * up < 0) up = -up;
+    } else {
+      const Segment& g = segments_[-1 - row];
+      const P3 &a = pts_[g[0]], &b = pts_[g[1]];
+      center = CGAL::midpoint(a, b);
+      const K::Vector_3 along = b - a, away = side - center;
+      up = away - along * ((away * along) / (along * along));
+    }
+    const P3& corner = pts_[row >= 0 ? faces_[row][0] : segments_[-1 - row][0]];
+    const double length = std::sqrt(up * up);
+    return {center, std::sqrt(CGAL::squared_distance(center, corner)), length > 0 ? up / length : up};
+  }
+
+  // Is q strictly inside the diametral sphere of row? (exact)
+  bool strictly_inside(int row, const P3& q) const {
+    if (row >= 0) {
+      const Triangle& f = faces_[row];
+      return CGAL::side_of_bounded_sphere(pts_[f[0]], pts_[f[1]], pts_[f[2]], q) == CGAL::ON_BOUNDED_SIDE;
+    }
+    const Segment& g = segments_[-1 - row];
+    return CGAL::side_of_bounded_sphere(pts_[g[0]], pts_[g[1]], q) == CGAL::ON_BOUNDED_SIDE;
   }
 
  private:
@@ -110,6 +150,16 @@ void check_input(const InteriorMesh& mesh, const InteriorBounds& bounds) {
     for (int v : mesh.faces[f]) in_range(v, "face", f);
   for (std::size_t s = 0; s < mesh.segments.size(); ++s)
     for (int v : mesh.segments[s]) in_range(v, "segment", s);
+  std::vector<bool> on_boundary(mesh.points.size(), false);
+  for (const Triangle& f : mesh.faces)
+    for (int v : f) on_boundary[v] = true;
+  for (const Segment& s : mesh.segments)
+    for (int v : s) on_boundary[v] = true;
+  for (std::size_t r = 0; r < mesh.remove.size(); ++r) {
+    in_range(mesh.remove[r], "removed point", r);
+    if (on_boundary[mesh.remove[r]])
+      throw InvalidInput("removed point " + std::to_string(mesh.remove[r]) + " is a corner of a face or segment");
+  }
   if (mesh.tet_labels.size() != mesh.tets.size())
     throw InvalidInput("tet_labels has " + std::to_string(mesh.tet_labels.size()) + " entries for " +
                        std::to_string(mesh.tets.size()) + " tets");
@@ -135,19 +185,18 @@ class InteriorRefiner {
 
   // Builds the Delaunay tetrahedralization and labels its cells; false when a subfacet or subsegment is not in it.
   bool build() {
+    kept_.assign(pts_.size(), true);
+    for (int r : mesh_.remove) kept_[r] = false;
     std::vector<std::pair<P3, int>> input;
-    for (std::size_t i = 0; i < pts_.size(); ++i) input.emplace_back(pts_[i], static_cast<int>(i));
+    for (std::size_t i = 0; i < pts_.size(); ++i)
+      if (kept_[i]) input.emplace_back(pts_[i], static_cast<int>(i));
     dt_.insert(input.begin(), input.end());
     vertex_.assign(pts_.size(), Vertex());
     for (auto v = dt_.finite_vertices_begin(); v != dt_.finite_vertices_end(); ++v) vertex_[v->info()] = v;
-    for (const Vertex& v : vertex_)
-      if (v == Vertex()) throw InvalidInput("two points are equal: the tetrahedralization has fewer vertices");
-    Cell c;
-    int i = 0, j = 0, k = 0;
-    for (const Triangle& f : mesh_.faces)
-      if (!dt_.is_facet(vertex_[f[0]], vertex_[f[1]], vertex_[f[2]], c, i, j, k)) return false;
-    for (const Segment& s : mesh_.segments)
-      if (!dt_.is_edge(vertex_[s[0]], vertex_[s[1]], c, i, j)) return false;
+    for (std::size_t i = 0; i < pts_.size(); ++i)
+      if (kept_[i] && vertex_[i] == Vertex())
+        throw InvalidInput("two points are equal: the tetrahedralization has fewer vertices");
+    if (!conforming()) return false;
     label_cells();
     return true;
   }
@@ -183,13 +232,28 @@ class InteriorRefiner {
     bool operator<(const Entry& o) const { return std::tie(ratio, key) < std::tie(o.ratio, o.key); }
   };
 
+  // Is every subfacet a face and every subsegment an edge of dt_?
+  bool conforming() const {
+    Cell c;
+    int i = 0, j = 0, k = 0;
+    for (const Triangle& f : mesh_.faces)
+      if (!dt_.is_facet(vertex_[f[0]], vertex_[f[1]], vertex_[f[2]], c, i, j, k)) return false;
+    for (const Segment& s : mesh_.segments)
+      if (!dt_.is_edge(vertex_[s[0]], vertex_[s[1]], c, i, j)) return false;
+    return true;
+  }
+
   // Domain cells: those of the input tets, then by flood fill across faces that are not subfacets (a Delaunay
   // tetrahedralization with every subfacet as a face holds the same domain split differently where points are
   // cospherical).
   void label_cells() {
     std::map<std::array<int, 4>, int> label_of;
-    for (std::size_t t = 0; t < mesh_.tets.size(); ++t)
+    std::map<int, int> removed_label;  // a removed point's star lies in one region (it is on no subfacet)
+    for (std::size_t t = 0; t < mesh_.tets.size(); ++t) {
       label_of.emplace(sorted_corners(mesh_.tets[t]), mesh_.tet_labels[t]);
+      for (int v : mesh_.tets[t])
+        if (!kept_[v]) removed_label[v] = mesh_.tet_labels[t];
+    }
     std::map<std::array<int, 3>, bool> subfacet;
     for (const Triangle& f : mesh_.faces) {
       std::array<int, 3> k = f;
@@ -203,6 +267,13 @@ class InteriorRefiner {
       auto it = label_of.find(corners(c));
       if (it != label_of.end()) {
         c->info() = it->second;
+        stack.push_back(c);
+      }
+    }
+    for (auto [v, label] : removed_label) {  // the cell now holding a removed point is in its region
+      Cell c = dt_.locate(pts_[v]);
+      if (!dt_.is_infinite(c) && c->info() < 0) {
+        c->info() = label;
         stack.push_back(c);
       }
     }
@@ -282,19 +353,53 @@ class InteriorRefiner {
   }
 
   void collect(InteriorRefinement& out) const {
+    std::vector<int> index(pts_.size(), -1);  // compacted past the removed points
     out.points.reserve(pts_.size());
-    for (const P3& p : pts_) out.points.push_back(from_cgal(p));
+    for (std::size_t i = 0; i < pts_.size(); ++i)
+      if (i >= kept_.size() || kept_[i]) {  // inserted points come after the input's
+        index[i] = static_cast<int>(out.points.size());
+        out.points.push_back(from_cgal(pts_[i]));
+      }
     for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c) {
       if (c->info() < 0) continue;
       const int row = static_cast<int>(out.tets.size());
-      out.tets.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
+      out.tets.push_back({index[c->vertex(0)->info()], index[c->vertex(1)->info()], index[c->vertex(2)->info()],
+                          index[c->vertex(3)->info()]});
       out.tet_labels.push_back(c->info());
       if (measure(c).second) {
+        const P3 center = dt_.dual(c);
         out.blocked_rows.push_back(row);
-        out.blocked_centers.push_back(from_cgal(dt_.dual(c)));
+        out.blocked_centers.push_back(from_cgal(center));
+        out.stand_ins.push_back(stand_in(c, center));
       }
     }
     out.inserted = inserted_;
+  }
+
+  // Ruppert's and Shewchuk's rule for a circumcenter in a closed diametral sphere: split that subfacet or
+  // subsegment, once. The caller's boundary repair splits what its points encroach until none does, so the point
+  // that stands for the center is put high in the sphere, on the side of the tet: at height (1 - 2^-k) r above the
+  // sphere's center for k = 4 down to 1, the first strictly inside the sphere and strictly inside a domain cell
+  // (both exact). Once the subfacet is split at its circumcenter, the children's spheres have that point as a
+  // corner's center distance away in the plane, so a point that high leaves them: one split, not a cascade down to
+  // the center's distance from the plane. NaN when no such point is found (or the center is in no sphere).
+  Point3 stand_in(Cell c, const P3& center) const {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (!std::isfinite(center.x()) || !std::isfinite(center.y()) || !std::isfinite(center.z())) return {nan, nan, nan};
+    const int row = spheres_->find(center);
+    if (row == SphereIndex::kNone) return {nan, nan, nan};
+    const P3 side = CGAL::centroid(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                                   c->vertex(3)->point());
+    auto [sphere_center, radius, up] = spheres_->sphere_towards(row, side);
+    for (int k = 4; k >= 1; --k) {
+      const P3 q = sphere_center + up * (radius * (1.0 - std::ldexp(1.0, -k)));
+      if (!spheres_->strictly_inside(row, q)) continue;
+      DT::Locate_type lt;
+      int li = 0, lj = 0;
+      Cell at = dt_.locate(q, lt, li, lj, c);
+      if (lt == DT::CELL && !dt_.is_infinite(at) && at->info() >= 0) return from_cgal(q);
+    }
+    return {nan, nan, nan};
   }
 
   const InteriorMesh& mesh_;
@@ -303,6 +408,7 @@ class InteriorRefiner {
   std::unique_ptr<SphereIndex> spheres_;
   DT dt_;
   std::vector<Vertex> vertex_;
+  std::vector<bool> kept_;  // per input point: false for those in InteriorMesh::remove
   std::priority_queue<Entry> queue_;
   long long inserted_ = 0;
 };

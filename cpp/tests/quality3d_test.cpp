@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace nonobtuse {
@@ -98,6 +99,30 @@ TEST(RefineInterior, CenterInAFacesSphereIsBlockedAndElsewhereInserted) {
   EXPECT_NEAR(blocked.blocked_centers[0].x, 0.0, 1e-12);
   bounds.max_points = 0;  // the budget is a status
   EXPECT_EQ(refine_interior(m, bounds).status, "budget_exhausted");
+}
+
+TEST(RefineInterior, RemovedPointLeavesItsStarToOneTetAndCompactsIndices) {
+  // A regular tet split at an interior point into four; removing the point leaves the one tet of the corners,
+  // labelled as the star was, and the point's index gone.
+  InteriorMesh m;
+  m.points = {{1, 1, 1}, {0.25, 0.5, -0.25}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  m.tets = {{1, 2, 3, 4}, {0, 1, 3, 4}, {0, 2, 1, 4}, {0, 2, 3, 1}};
+  m.tet_labels = {0, 0, 0, 0};
+  m.faces = {{2, 3, 4}};
+  m.remove = {1};
+  InteriorBounds bounds;
+  bounds.volume_bounds = {100.0};
+  auto r = refine_interior(m, bounds);
+  ASSERT_EQ(r.status, "converged");
+  ASSERT_EQ(r.points.size(), 4u);
+  EXPECT_EQ(r.points[1].x, 1.0);  // the old point 2
+  ASSERT_EQ(r.tets.size(), 1u);
+  auto corners = r.tets[0];
+  std::sort(corners.begin(), corners.end());
+  EXPECT_EQ(corners, (std::array<int, 4>{0, 1, 2, 3}));
+  EXPECT_EQ(r.tet_labels, std::vector<int>{0});
+  m.remove = {2};  // a corner of a face
+  EXPECT_THROW(refine_interior(m, bounds), InvalidInput);
 }
 
 TEST(RefineInterior, RejectsLabelsWithoutBounds) {

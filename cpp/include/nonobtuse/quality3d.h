@@ -36,6 +36,11 @@ struct InteriorMesh {
   std::vector<int> tet_labels;           // per tet, an index into InteriorBounds::volume_bounds
   std::vector<Triangle> faces;           // the subfacets
   std::vector<Segment> segments;         // the subsegments
+  // Points left out of the Delaunay tetrahedralization (built without them, before any insertion): interior points
+  // (on no face or segment) that stood for blocked circumcenters while the boundary repair split what they
+  // encroach. Leaving a point out keeps every diametral sphere as empty as it was; the cell that then holds it gets
+  // its region's label (its star was in one region, it is on no subfacet), as do the cells of the input's tets.
+  std::vector<int> remove;
 };
 
 struct InteriorBounds {
@@ -48,13 +53,19 @@ struct InteriorBounds {
 // "converged": every tet within the bounds; "blocked": the tets over a bound left have circumcenters in a closed
 // diametral sphere of a subfacet or subsegment, on a mesh vertex or outside the domain (blocked_rows);
 // "budget_exhausted": max_points or time_limit; "not_conforming": a subfacet or subsegment is not a face or an edge
-// of the Delaunay tetrahedralization (cospherical points): nothing was inserted.
+// of the Delaunay tetrahedralization (cospherical points), before or after the removals: nothing was inserted or
+// removed (the input returned).
 struct InteriorRefinement {
-  std::vector<Point3> points;  // the input points in order, then the inserted circumcenters
+  // the input points in order but the removed ones (a point's index drops by the removed indices below it), then
+  // the inserted circumcenters; tets index these
+  std::vector<Point3> points;
   std::vector<std::array<int, 4>> tets;
   std::vector<int> tet_labels;
   std::vector<int> blocked_rows;       // rows of tets over a bound whose circumcenters could not be inserted
   std::vector<Point3> blocked_centers;  // their circumcenters (floating point)
+  // per blocked row: a point strictly inside the diametral sphere that holds its center and strictly inside a
+  // domain tet, high above the subfacet (see stand_in in quality3d_interior.cpp), or NaN where none was found
+  std::vector<Point3> stand_ins;
   std::string status;
   long long inserted = 0;
 };
@@ -67,7 +78,8 @@ struct InteriorRefinement {
 // the subfacets or subsegments the center encroaches. Such a point keeps every subfacet and subsegment Gabriel and
 // Delaunay, and its cavity crosses no subfacet (a tet beyond subfacet f whose circumsphere held it would have its
 // apex inside f's diametral sphere), so each new tet inherits the label of the tet holding the point.
-// Throws InvalidInput for indices out of range, labels without a bound, collinear faces or degenerate segments.
+// Throws InvalidInput for indices out of range, labels without a bound, collinear faces, degenerate segments or a
+// removed point on a face or segment.
 // Cost: O(k log n) expected for k insertions into n points, plus O(log) sphere lookups per candidate.
 InteriorRefinement refine_interior(const InteriorMesh& mesh, const InteriorBounds& bounds);
 

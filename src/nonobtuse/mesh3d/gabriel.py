@@ -234,6 +234,7 @@ def refine_gabriel(
     progress_every: int = 1000,
     started: float | None = None,
     max_work: int | None = None,
+    control_volumes: bool = True,
 ) -> Gabriel3DResult:
     """Add Steiner points on the PLC's segments and facets until every subfacet and subsegment is Gabriel.
 
@@ -272,6 +273,8 @@ def refine_gabriel(
     progress: True prints a line to stderr every progress_every insertions and after every exact check of the
     Delaunay mesh (once per repair round); a callable receives (steiner_points, encroached_subsegments,
     encroached_subfacets, seconds), the counts of the last scan or check.
+    control_volumes: False skips the control-volume summary (stats["negative_couplings"] is then None), for
+    callers that repair again before using the mesh.
     Guarantee: status == "converged" iff the exact check of the returned mesh passes. Deterministic.
     Cost: each round rescans all subsegments and subfacets (O(s log n)); meant for PLCs up to ~1e5 facets.
     Raises InvalidInputError for malformed PLCs (indices, duplicate points, degenerate or crossing facet
@@ -347,7 +350,7 @@ def refine_gabriel(
         status = "stalled" if status == "converged" and not report.ok else status
         stats.update(status=status, encroached_facets=len(report.faces),
                      encroached_segments=len(report.segments))
-    stats["negative_couplings"] = control_volume_summary(mesh)["negative_couplings"]
+    stats["negative_couplings"] = control_volume_summary(mesh)["negative_couplings"] if control_volumes else None
     stats["seconds"] = time.perf_counter() - started
     return Gabriel3DResult(mesh=mesh, status=cast(Status, status), stats=stats, report=report)
 

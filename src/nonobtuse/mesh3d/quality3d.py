@@ -184,13 +184,22 @@ def refine_quality3d(
     stop = g.stats["diagnosis"]["stop_reason"]
     budget = 10**6 if max_points is None else int(max_points)
     on = np.zeros(0, dtype=bool)
+    stand_ins = np.zeros(0, dtype=np.int64)  # rows of mesh.points the last split repair saw: dropped next
     while status == "converged":
         surface, interior = refiner.split_mesh(mesh)
-        mesh, rows, centers, passed = refiner.interior_pass(mesh, budget - len(interior))
+        mesh, rows, centers, high, passed = refiner.interior_pass(mesh, budget - len(interior), stand_ins)
+        if passed == "not_conforming" and len(stand_ins):
+            # without the stand-ins a subfacet is no Delaunay face (cospherical points): a repair drops them
+            g = refiner.repair(surface, refiner.split_mesh(mesh, drop=stand_ins)[1])
+            status, stop, stand_ins = g.status, g.stats["diagnosis"]["stop_reason"], stand_ins[:0]
+            mesh = g.mesh if status == "converged" else mesh
+            continue
+        stand_ins = stand_ins[:0]
         surface, interior = refiner.split_mesh(mesh)
         on_interior = refiner.closed_hits(surface, interior)
         if passed == "not_conforming":  # cospherical points: the round goes through the boundary repair
             rows, centers = refiner.independent_centers(mesh, *refiner.bad_tets(mesh))
+            high = np.full((len(rows), 3), np.nan)
         on = refiner.closed_hits(surface, centers)
         stats["rounds"] += 1
         seconds = time.perf_counter() - started
@@ -201,27 +210,28 @@ def refine_quality3d(
         if passed == "budget_exhausted" or len(interior) >= budget or seconds > time_limit:
             status = "budget_exhausted"
             break
-        # the centers the pass could not insert: stand-ins strictly inside their tets, which the boundary
-        # repair sees as encroaching points (Ruppert's rule) or inserts where they encroach nothing
+        # the centers the pass could not insert: stand-ins high in the diametral sphere holding the center (the
+        # pass's, for one split of that subfacet or subsegment: Ruppert's and Shewchuk's rule), else strictly
+        # inside their tets; the boundary repair sees them as encroaching points, or inserts those in no sphere
         direct = centers[~on] if passed == "not_conforming" else np.zeros((0, 3))
-        stand = on if passed == "not_conforming" else np.ones(len(rows), dtype=bool)
+        found = np.isfinite(high).all(axis=1)
+        stand = (on if passed == "not_conforming" else np.ones(len(rows), dtype=bool)) & ~found
         triggers, free = refiner.stand_ins(mesh, rows[stand], centers[stand], surface)
+        triggers = np.concatenate([high[found], triggers])
+        triggers = triggers[np.sort(np.unique(triggers, axis=0, return_index=True)[1])]  # one per sphere side
         keep = np.concatenate([interior[~on_interior], direct, free])[:budget]
-        grown = surface
-        if len(triggers):  # the repair splits what they encroach; they are then dropped
-            split = refiner.repair(surface, np.concatenate([keep, triggers]))
-            status, stop = split.status, split.stats["diagnosis"]["stop_reason"]
-            if status != "converged":
-                break
-            grown, _ = refiner.split_mesh(split.mesh)
-        if len(keep) == len(interior) and len(grown.points) == len(surface.points):
+        if len(keep) == len(interior) and not len(triggers):
+            status = "quality_blocked"  # nothing to add
+            break
+        repaired = refiner.repair(surface, np.concatenate([keep, triggers]))
+        if len(keep) == len(interior) and len(repaired.mesh.points) == len(surface.points) + len(keep) + len(
+                triggers):
             status = "quality_blocked"  # nothing added: the centers left lie on spheres, which split nothing
             break
-        repaired = refiner.repair(grown, keep)
         status, stop = repaired.status, repaired.stats["diagnosis"]["stop_reason"]
-        if status == "converged":
-            g = repaired
-            mesh = g.mesh
+        if status == "converged":  # the split repair's mesh; the next pass drops the triggers from it
+            g, mesh = repaired, repaired.mesh
+            stand_ins = len(surface.points) + len(keep) + np.arange(len(triggers))
     bad = refiner.bad_tets(mesh)[0]
     if status == "converged" and len(bad):  # the pass's measure and numpy's differ in the last ulp
         status = "quality_blocked"
@@ -259,12 +269,13 @@ class _InteriorRefiner:
         plc = replace(self.plc, points=points, triangles=surface.triangles, facet_ids=surface.facet_ids,
                       segments=surface.segments)
         left = self.time_limit - (time.perf_counter() - self.started)
-        return refine_gabriel(plc, time_limit=max(0.0, share * left), **self.gabriel_options)
+        return refine_gabriel(plc, time_limit=max(0.0, share * left), control_volumes=False,
+                              **self.gabriel_options)
 
-    def split_mesh(self, mesh: TetMesh) -> tuple[PLC, np.ndarray]:
+    def split_mesh(self, mesh: TetMesh, drop: np.ndarray | None = None) -> tuple[PLC, np.ndarray]:
         """The surface PLC of `mesh` (the input points, then the other vertices of its subfacets and
         subsegments, in mesh order; its subfacets as triangles with their facet ids; its subsegments) and its
-        other points (k, 3), the interior points, in mesh order."""
+        other points (k, 3), the interior points, in mesh order, but the rows `drop` of mesh.points."""
         on = np.zeros(len(mesh.points), dtype=bool)
         on[: len(self.plc.points)] = True
         on[np.asarray(mesh.boundary_faces, dtype=np.int64).ravel()] = True
@@ -274,7 +285,9 @@ class _InteriorRefiner:
         segments = renumber[np.asarray(mesh.segments, dtype=np.int64).reshape(-1, 2)]
         surface = replace(self.plc, points=mesh.points[on], triangles=faces,
                           facet_ids=np.asarray(mesh.face_facets, dtype=np.int64), segments=segments)
-        return surface, mesh.points[~on]
+        inner = ~on
+        inner[np.asarray([] if drop is None else drop, dtype=np.int64)] = False
+        return surface, mesh.points[inner]
 
     @staticmethod
     def closed_hits(surface: PLC, candidates: np.ndarray) -> np.ndarray:
@@ -326,13 +339,20 @@ class _InteriorRefiner:
         attrs, labels = self.region_labels(mesh)
         return self.volume_bounds_of(attrs)[labels]
 
-    def interior_pass(self, mesh: TetMesh, budget: int) -> tuple[TetMesh, np.ndarray, np.ndarray, str]:
+    def interior_pass(self, mesh: TetMesh, budget: int, remove: np.ndarray | None = None
+                      ) -> tuple[TetMesh, np.ndarray, np.ndarray, np.ndarray, str]:
         """Circumcenters of the tets of `mesh` (a Gabriel boundary) over a bound inserted into its Delaunay
         tetrahedralization one by one, the boundary fixed (``_core.refine_interior``: each strictly outside
-        every closed diametral sphere, in the domain, exact), at most `budget` of them within the time left.
-        Returns the mesh, the rows (k,) of its tets still over a bound with their circumcenters (k, 3), and
-        the pass's status ("converged", "blocked", "budget_exhausted", or "not_conforming": a subfacet or
-        subsegment is no Delaunay face or edge, `mesh` returned unchanged with no rows)."""
+        every closed diametral sphere, in the domain, exact), at most `budget` of them within the time left,
+        after removing the interior points `remove` (rows of mesh.points: the stand-ins a split repair saw;
+        removing a point keeps every diametral sphere as empty as it was). Returns the mesh (its later points
+        renumbered past the removed ones), the rows (k,) of its tets still over a bound with their
+        circumcenters (k, 3) and stand-ins (k, 3: a point strictly inside the diametral sphere that holds the
+        center, high above its subfacet or subsegment, strictly inside a domain tet; NaN where none), and the
+        pass's status ("converged", "blocked", "budget_exhausted", or "not_conforming": a subfacet or
+        subsegment is no Delaunay face or edge, before or after the removal, `mesh` returned unchanged with no
+        rows)."""
+        remove = np.unique(np.asarray([] if remove is None else remove, dtype=np.int64))
         attrs, labels = self.region_labels(mesh)
         left = self.time_limit - (time.perf_counter() - self.started)
         r = _core.refine_interior(
@@ -340,13 +360,22 @@ class _InteriorRefiner:
             np.ascontiguousarray(mesh.tets, dtype=np.int64), labels,
             np.ascontiguousarray(mesh.boundary_faces, dtype=np.int64),
             np.ascontiguousarray(mesh.segments, dtype=np.int64).reshape(-1, 2),
-            float(self.radius_edge or 0.0), self.volume_bounds_of(attrs), max(0, int(budget)), max(0.0, left))
+            float(self.radius_edge or 0.0), self.volume_bounds_of(attrs), max(0, int(budget)), max(0.0, left),
+            remove)
         self.inserted += r.inserted
         if r.status == "not_conforming":
-            return mesh, np.zeros(0, dtype=np.int64), np.zeros((0, 3)), r.status
+            return mesh, np.zeros(0, dtype=np.int64), np.zeros((0, 3)), np.zeros((0, 3)), r.status
         regions = None if mesh.tet_regions is None else attrs[r.tet_labels]
-        grown = replace(mesh, points=r.points, tets=np.asarray(r.tets, dtype=np.int64), tet_regions=regions)
-        return grown, np.asarray(r.blocked_rows, dtype=np.int64), np.asarray(r.blocked_centers), r.status
+
+        def renumbered(rows: Any) -> np.ndarray:  # indices of the points kept, past the removed ones
+            rows = np.asarray(rows, dtype=np.int64)
+            return rows - np.searchsorted(remove, rows)
+
+        grown = replace(mesh, points=r.points, tets=np.asarray(r.tets, dtype=np.int64), tet_regions=regions,
+                        boundary_faces=renumbered(mesh.boundary_faces),
+                        segments=renumbered(mesh.segments).reshape(-1, 2))
+        return (grown, np.asarray(r.blocked_rows, dtype=np.int64), np.asarray(r.blocked_centers),
+                np.asarray(r.stand_ins), r.status)
 
     def bad_tets(self, mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
         """Rows of mesh.tets over a bound, most skewed first, and their circumcenters (floating point)."""
