@@ -210,9 +210,9 @@ def refine_quality3d(
         if passed == "budget_exhausted" or len(interior) >= budget or seconds > time_limit:
             status = "budget_exhausted"
             break
-        # the centers the pass could not insert: stand-ins high in the diametral sphere holding the center (the
-        # pass's, for one split of that subfacet or subsegment: Ruppert's and Shewchuk's rule), else strictly
-        # inside their tets; the boundary repair sees them as encroaching points, or inserts those in no sphere
+        # the centers the pass could not insert: stand-ins high in the diametral sphere holding the center
+        # (the pass's, for one split of that subfacet or subsegment: Ruppert's and Shewchuk's rule), else
+        # strictly inside their tets; the repair sees them as encroaching points, or inserts free ones
         direct = centers[~on] if passed == "not_conforming" else np.zeros((0, 3))
         found = np.isfinite(high).all(axis=1)
         stand = (on if passed == "not_conforming" else np.ones(len(rows), dtype=bool)) & ~found
