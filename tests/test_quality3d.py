@@ -253,3 +253,31 @@ def test_interior_pass_keeps_the_boundary_and_labels():
     face, segment = _core.closed_diametral_sphere_hits(r.points, np.asarray(g.mesh.boundary_faces),
                                                        np.asarray(g.mesh.segments).reshape(-1, 2), new)
     assert (face < 0).all() and (segment < 0).all()
+
+
+def test_interior_pass_leaves_out_removed_points_and_keeps_the_regions():
+    """The points a pass inserted, removed by the next: the points are the repair's again, in order, and each
+    region keeps its volume (its cells seeded where the removed points were)."""
+    from nonobtuse.mesh3d import refine_gabriel
+    from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes
+
+    g = refine_gabriel(load_plc(DATA3D / "layered_box.poly"))
+    attrs, labels = np.unique(np.asarray(g.mesh.tet_regions), return_inverse=True)
+    faces, segments = np.asarray(g.mesh.boundary_faces), np.asarray(g.mesh.segments).reshape(-1, 2)
+    free = np.full(len(attrs), np.inf)
+    grown = _core.refine_interior(g.mesh.points, np.asarray(g.mesh.tets), labels.ravel(), faces, segments, 2.0,
+                                  free, 10**6, 60.0)
+    added = np.arange(len(g.mesh.points), len(grown.points))
+    assert len(added) > 0
+    r = _core.refine_interior(grown.points, grown.tets, grown.tet_labels, faces, segments, 0.0, free, 0, 60.0,
+                              added)
+    assert r.status == "converged" and r.inserted == 0
+    assert np.array_equal(r.points, g.mesh.points)
+    before = signed_tet_volumes(g.mesh.points, np.asarray(g.mesh.tets))
+    after = signed_tet_volumes(r.points, r.tets)
+    assert (after > 0).all()
+    for k in range(len(attrs)):
+        assert after[r.tet_labels == k].sum() == pytest.approx(before[labels.ravel() == k].sum(), rel=1e-12)
+    with pytest.raises(InvalidInputError, match="corner of a face"):
+        _core.refine_interior(grown.points, grown.tets, grown.tet_labels, faces, segments, 0.0, free, 0, 60.0,
+                              faces[:1, 0])

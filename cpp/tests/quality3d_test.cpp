@@ -97,6 +97,14 @@ TEST(RefineInterior, CenterInAFacesSphereIsBlockedAndElsewhereInserted) {
   EXPECT_EQ(blocked.status, "blocked");
   ASSERT_EQ(blocked.blocked_rows.size(), 1u);
   EXPECT_NEAR(blocked.blocked_centers[0].x, 0.0, 1e-12);
+  // Its stand-in lies high in that face's sphere, on the tet's side: center (-1/3, -1/3, -1/3), radius
+  // sqrt(24) / 3, direction (1, 1, 1) / sqrt(3), height 15/16 of the radius (inside the tet: x + y + z > -1 and
+  // the other three faces' inequalities hold at 0.55 per coordinate).
+  ASSERT_EQ(blocked.stand_ins.size(), 1u);
+  const double expected = -1.0 / 3 + std::sqrt(24.0) / 3 * 15.0 / 16 / std::sqrt(3.0);
+  EXPECT_NEAR(blocked.stand_ins[0].x, expected, 1e-12);
+  EXPECT_NEAR(blocked.stand_ins[0].y, expected, 1e-12);
+  EXPECT_NEAR(blocked.stand_ins[0].z, expected, 1e-12);
   bounds.max_points = 0;  // the budget is a status
   EXPECT_EQ(refine_interior(m, bounds).status, "budget_exhausted");
 }
