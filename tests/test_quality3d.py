@@ -265,8 +265,8 @@ def test_interior_pass_leaves_out_removed_points_and_keeps_the_regions():
     attrs, labels = np.unique(np.asarray(g.mesh.tet_regions), return_inverse=True)
     faces, segments = np.asarray(g.mesh.boundary_faces), np.asarray(g.mesh.segments).reshape(-1, 2)
     free = np.full(len(attrs), np.inf)
-    grown = _core.refine_interior(g.mesh.points, np.asarray(g.mesh.tets), labels.ravel(), faces, segments, 2.0,
-                                  free, 10**6, 60.0)
+    grown = _core.refine_interior(g.mesh.points, np.asarray(g.mesh.tets), labels.ravel(), faces, segments,
+                                  2.0, free, 10**6, 60.0)
     added = np.arange(len(g.mesh.points), len(grown.points))
     assert len(added) > 0
     r = _core.refine_interior(grown.points, grown.tets, grown.tet_labels, faces, segments, 0.0, free, 0, 60.0,
