@@ -6,8 +6,9 @@
 interior points on it (``-Y``) but those in a closed diametral sphere, then inserts circumcenters of the tets
 over a bound in rounds: each round inserts every circumcenter it can into one Delaunay tetrahedralization
 kept between insertions (strictly outside every closed diametral sphere, exact); a circumcenter in a closed
-diametral sphere is not inserted: the boundary repair, which sees a point standing for it as an encroaching
-point, splits the subfacet or subsegment instead (Ruppert's rule). The returned mesh is a Delaunay
+diametral sphere is not inserted: the boundary repair, which sees a point standing for it (high in that
+sphere) as an encroaching point, splits the subfacet or subsegment instead (Ruppert's rule), and the next
+round leaves the stand-in out. The returned mesh is a Delaunay
 tetrahedralization with the repaired boundary, certified by the exact check.
 """
 
@@ -136,10 +137,13 @@ def refine_quality3d(
     Each round: an interior pass (``_core.refine_interior``: one Delaunay tetrahedralization kept while the
     circumcenters of the tets over a bound are inserted one by one, worst radius-edge ratio first, each
     strictly outside every closed diametral sphere of a subfacet and subsegment and inside the domain, both
-    exact; the boundary is fixed), then, for the tets left whose centers it could not insert, Ruppert's rule:
-    a point strictly inside the tet stands for its center, the boundary repair (refine_gabriel) splits what
-    it encroaches and it is dropped (or it is kept where it encroaches nothing), and a second repair
-    tetrahedralizes the grown boundary with the interior points outside its closed diametral spheres. The
+    exact; the boundary is fixed), then, for the tets left whose centers it could not insert, Ruppert's and
+    Shewchuk's rule: a point stands for the center, strictly inside the diametral sphere that holds it, high
+    above its subfacet or subsegment and strictly inside a domain tet (so that one split of it, at its
+    circumcenter, leaves the point outside the children's spheres; else a point strictly inside the tet),
+    the boundary repair (refine_gabriel) splits what these points encroach, and the next round's pass builds
+    its Delaunay tetrahedralization without them (a point strictly inside the tet that encroaches nothing is
+    kept instead): one repair per round. The
     termination argument is at the split rule in ``cpp/src/quality3d_interior.cpp`` (each inserted point is
     its tet's circumradius r from every vertex; r > radius_edge * shortest edge, or r >= (3V / 4 pi)^(1/3)
     for the volume bound V); boundary splits follow refine_gabriel's rule and limits. Tets near small input
@@ -150,9 +154,10 @@ def refine_quality3d(
     boundary repair's budget, and a round that adds nothing ends it ("quality_blocked").
     Guarantee: report is the exact check_gabriel of the returned mesh; status "converged" needs it to pass and
     every tet within the bounds (measured in floating point). Deterministic.
-    Cost: per round an interior pass (O(k log n) expected for k insertions) and up to two boundary repairs
-    (refine_gabriel with its control-volume summary, O(n log n) when few splits); rounds end when only
-    blocked centers are left, so their number follows the boundary splits, not the interior points.
+    Cost: per round an interior pass (O(k log n) expected for k insertions) and one boundary repair
+    (refine_gabriel without its control-volume summary, O(n log n) when few splits; the summary once at the
+    end); rounds end when only blocked centers are left, so their number follows the boundary splits, not
+    the interior points.
     Raises InvalidInputError for a malformed PLC or bounds (radius_edge <= 1, max_volume <= 0, not finite), or
     region_volumes without a volume constraint in plc's region list.
     """
