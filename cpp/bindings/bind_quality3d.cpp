@@ -34,12 +34,13 @@ void bind_quality3d(py::module_& m) {
                              [](const InteriorRefinement& r) { return from_points3(r.blocked_centers); })
       .def_property_readonly("stand_ins", [](const InteriorRefinement& r) { return from_points3(r.stand_ins); })
       .def_readonly("status", &InteriorRefinement::status)
-      .def_readonly("inserted", &InteriorRefinement::inserted);
+      .def_readonly("inserted", &InteriorRefinement::inserted)
+      .def_readonly("placed", &InteriorRefinement::placed);
   m.def(
       "refine_interior",
       [](const DoubleArray& points, const IndexArray& tets, const IndexArray& tet_labels, const IndexArray& faces,
          const IndexArray& segments, double radius_edge, const DoubleArray& volume_bounds, long long max_points,
-         double time_limit, const IndexArray& remove) {
+         double time_limit, const IndexArray& remove, const DoubleArray& insert) {
         InteriorMesh mesh;
         mesh.points = to_points3(points, "points");
         mesh.tets = to_index_rows<4>(tets, mesh.points.size(), "tets");
@@ -47,6 +48,7 @@ void bind_quality3d(py::module_& m) {
         mesh.segments = to_index_rows<2>(segments, mesh.points.size(), "segments");
         mesh.tet_labels.assign(tet_labels.data(), tet_labels.data() + tet_labels.size());
         mesh.remove.assign(remove.data(), remove.data() + remove.size());
+        mesh.insert = to_points3(insert, "insert");
         InteriorBounds bounds;
         bounds.radius_edge = radius_edge;
         bounds.volume_bounds.assign(volume_bounds.data(), volume_bounds.data() + volume_bounds.size());
@@ -57,11 +59,11 @@ void bind_quality3d(py::module_& m) {
       },
       py::arg("points"), py::arg("tets"), py::arg("tet_labels"), py::arg("faces"), py::arg("segments"),
       py::arg("radius_edge"), py::arg("volume_bounds"), py::arg("max_points"), py::arg("time_limit"),
-      py::arg("remove") = IndexArray(0),
+      py::arg("remove") = IndexArray(0), py::arg("insert") = DoubleArray(std::vector<py::ssize_t>{0, 3}),
       "Delaunay refinement of the interior of a mesh (n,3) points, (t,4) tets, (t,) labels with a Gabriel\n"
       "boundary (f,3) faces, (k,2) segments: circumcenters of tets over radius_edge (<= 0: none) or\n"
       "volume_bounds[label] inserted outside every closed diametral sphere, after removing the points\n"
-      "remove (r,) (see quality3d.h).");
+      "remove (r,) and inserting the points insert (p,3) outside them (see quality3d.h).");
 }
 
 }  // namespace nonobtuse::bindings

@@ -202,8 +202,10 @@ class InteriorRefiner {
   }
 
   InteriorRefinement run() {
-    for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c) push_if_bad(c);
     InteriorRefinement out;
+    for (const Point3& p : mesh_.insert) out.placed += place(to_cgal(p), Cell());
+    queue_ = {};  // every cell is queued next, once
+    for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c) push_if_bad(c);
     const auto started = std::chrono::steady_clock::now();
     out.status = "converged";
     while (!queue_.empty()) {
@@ -333,23 +335,28 @@ class InteriorRefiner {
   // loop anyway. Near small input angles (a center in a closed diametral sphere, outside the domain or on a vertex)
   // nothing is inserted: the tet is blocked and handed back, as TetGen leaves such tets and counts them.
   void try_insert(Cell c) {
-    const P3 center = dt_.dual(c);
-    if (!std::isfinite(center.x()) || !std::isfinite(center.y()) || !std::isfinite(center.z())) return;
+    if (place(dt_.dual(c), c)) ++inserted_;
+  }
+
+  // Inserts p when it is finite, strictly outside every closed diametral sphere, in a domain cell and on no vertex
+  // (exact), labelling its cavity and queueing the bad cells in it; false otherwise.
+  bool place(const P3& p, Cell hint) {
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) return false;
     DT::Locate_type lt;
     int li = 0, lj = 0;
-    Cell at = dt_.locate(center, lt, li, lj, c);
-    if (lt == DT::VERTEX || lt == DT::OUTSIDE_AFFINE_HULL || dt_.is_infinite(at) || at->info() < 0) return;
-    if (spheres_->hits(center)) return;
+    Cell at = dt_.locate(p, lt, li, lj, hint);
+    if (lt == DT::VERTEX || lt == DT::OUTSIDE_AFFINE_HULL || dt_.is_infinite(at) || at->info() < 0) return false;
+    if (spheres_->hits(p)) return false;
     const int label = at->info();
     const int index = static_cast<int>(pts_.size());
-    Vertex v = dt_.insert(center, lt, at, li, lj);
+    Vertex v = dt_.insert(p, lt, at, li, lj);
     v->info() = index;
-    pts_.push_back(center);
-    ++inserted_;
+    pts_.push_back(p);
     std::vector<Cell> incident;
     dt_.finite_incident_cells(v, std::back_inserter(incident));
     for (Cell n : incident) n->info() = label;  // the cavity is in one region: it crosses no subfacet
     for (Cell n : incident) push_if_bad(n);
+    return true;
   }
 
   void collect(InteriorRefinement& out) const {

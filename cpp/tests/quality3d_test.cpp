@@ -133,6 +133,25 @@ TEST(RefineInterior, RemovedPointLeavesItsStarToOneTetAndCompactsIndices) {
   EXPECT_THROW(refine_interior(m, bounds), InvalidInput);
 }
 
+TEST(RefineInterior, InsertsGivenPointsOnlyInsideTheDomainAndOutsideEverySphere) {
+  InteriorMesh m;
+  m.points = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  m.tets = {{0, 1, 2, 3}};
+  m.tet_labels = {0};
+  m.insert = {{0.1, 0.1, 0.1}, {5, 5, 5}, {1, 1, 1}};  // inside; outside the domain; a vertex
+  InteriorBounds bounds;
+  bounds.volume_bounds = {100.0};
+  auto r = refine_interior(m, bounds);
+  EXPECT_EQ(r.placed, 1);
+  EXPECT_EQ(r.inserted, 0);
+  ASSERT_EQ(r.points.size(), 5u);
+  EXPECT_EQ(r.points[4].x, 0.1);
+  EXPECT_EQ(r.tets.size(), 4u);
+  // (0.1, 0.1, 0.1) is 0.75 from the face's sphere center (-1/3, -1/3, -1/3), radius 1.63: dropped
+  m.faces = {{1, 2, 3}};
+  EXPECT_EQ(refine_interior(m, bounds).placed, 0);
+}
+
 TEST(RefineInterior, RejectsLabelsWithoutBounds) {
   InteriorMesh m = cube_mesh();
   InteriorBounds bounds;  // no volume bound for label 0

@@ -41,6 +41,9 @@ struct InteriorMesh {
   // encroach. Leaving a point out keeps every diametral sphere as empty as it was; the cell that then holds it gets
   // its region's label (its star was in one region, it is on no subfacet), as do the cells of the input's tets.
   std::vector<int> remove;
+  // Points inserted first, in order, each where it is strictly outside every closed diametral sphere, in the domain
+  // and on no vertex (exact; e.g. another mesher's interior points), else dropped.
+  std::vector<Point3> insert;
 };
 
 struct InteriorBounds {
@@ -57,7 +60,7 @@ struct InteriorBounds {
 // removed (the input returned).
 struct InteriorRefinement {
   // the input points in order but the removed ones (a point's index drops by the removed indices below it), then
-  // the inserted circumcenters; tets index these
+  // the points of InteriorMesh::insert placed, then the inserted circumcenters; tets index these
   std::vector<Point3> points;
   std::vector<std::array<int, 4>> tets;
   std::vector<int> tet_labels;
@@ -67,7 +70,8 @@ struct InteriorRefinement {
   // domain tet, high above the subfacet (see stand_in in quality3d_interior.cpp), or NaN where none was found
   std::vector<Point3> stand_ins;
   std::string status;
-  long long inserted = 0;
+  long long inserted = 0;  // circumcenters
+  long long placed = 0;    // points of InteriorMesh::insert
 };
 
 // Delaunay refinement of the interior with the boundary fixed (Shewchuk's rule with the boundary split left to the

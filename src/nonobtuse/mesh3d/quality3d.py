@@ -182,9 +182,9 @@ def refine_quality3d(
     stats: dict[str, Any] = {"radius_edge": radius_edge, "max_volume_bound": _jsonable_bound(max_volume),
                              "start": start, "rounds": 0, "surface": surface_note,
                              "boundary_repair": dict(g.stats)}
+    tetgen_points = np.zeros((0, 3))  # placed by the first interior pass, in no closed diametral sphere
     if g.status == "converged" and start == "tetgen":
-        surface, _ = refiner.split_mesh(g.mesh)
-        g = refiner.repair(surface, refiner.tetgen_points(surface, switches + "YAQ", stats))
+        tetgen_points = refiner.tetgen_points(refiner.split_mesh(g.mesh)[0], switches + "YAQ", stats)
     mesh, status = g.mesh, g.status
     stop = g.stats["diagnosis"]["stop_reason"]
     budget = 10**6 if max_points is None else int(max_points)
@@ -192,7 +192,14 @@ def refine_quality3d(
     stand_ins = np.zeros(0, dtype=np.int64)  # rows of mesh.points the last split repair saw: dropped next
     while status == "converged":
         surface, interior = refiner.split_mesh(mesh)
-        mesh, rows, centers, high, passed = refiner.interior_pass(mesh, budget - len(interior), stand_ins)
+        mesh, rows, centers, high, passed = refiner.interior_pass(mesh, budget - len(interior), stand_ins,
+                                                                  tetgen_points)
+        if passed == "not_conforming" and len(tetgen_points):  # the repair tetrahedralizes them instead
+            g = refiner.repair(surface, tetgen_points)
+            status, stop, tetgen_points = g.status, g.stats["diagnosis"]["stop_reason"], tetgen_points[:0]
+            mesh = g.mesh if status == "converged" else mesh
+            continue
+        tetgen_points = tetgen_points[:0]
         if passed == "not_conforming" and len(stand_ins):
             # without the stand-ins a subfacet is no Delaunay face (cospherical points): a repair drops them
             g = refiner.repair(surface, refiner.split_mesh(mesh, drop=stand_ins)[1])
@@ -344,13 +351,16 @@ class _InteriorRefiner:
         attrs, labels = self.region_labels(mesh)
         return self.volume_bounds_of(attrs)[labels]
 
-    def interior_pass(self, mesh: TetMesh, budget: int, remove: np.ndarray | None = None
+    def interior_pass(self, mesh: TetMesh, budget: int, remove: np.ndarray | None = None,
+                      insert: np.ndarray | None = None
                       ) -> tuple[TetMesh, np.ndarray, np.ndarray, np.ndarray, str]:
         """Circumcenters of the tets of `mesh` (a Gabriel boundary) over a bound inserted into its Delaunay
         tetrahedralization one by one, the boundary fixed (``_core.refine_interior``: each strictly outside
         every closed diametral sphere, in the domain, exact), at most `budget` of them within the time left,
         after removing the interior points `remove` (rows of mesh.points: the stand-ins a split repair saw;
-        removing a point keeps every diametral sphere as empty as it was). Returns the mesh (its later points
+        removing a point keeps every diametral sphere as empty as it was) and placing the points `insert`
+        (k, 3; each strictly outside every closed diametral sphere and in the domain, exact, else dropped).
+        Returns the mesh (its later points
         renumbered past the removed ones), the rows (k,) of its tets still over a bound with their
         circumcenters (k, 3) and stand-ins (k, 3: a point strictly inside the diametral sphere that holds the
         center, high above its subfacet or subsegment, strictly inside a domain tet; NaN where none), and the
@@ -366,7 +376,7 @@ class _InteriorRefiner:
             np.ascontiguousarray(mesh.boundary_faces, dtype=np.int64),
             np.ascontiguousarray(mesh.segments, dtype=np.int64).reshape(-1, 2),
             float(self.radius_edge or 0.0), self.volume_bounds_of(attrs), max(0, int(budget)), max(0.0, left),
-            remove)
+            remove, np.zeros((0, 3)) if insert is None else np.ascontiguousarray(insert, dtype=np.float64))
         self.inserted += r.inserted
         if r.status == "not_conforming":
             return mesh, np.zeros(0, dtype=np.int64), np.zeros((0, 3)), np.zeros((0, 3)), r.status
