@@ -7,6 +7,7 @@
 #include <set>
 #include <string>
 
+#include "gabriel3d_collar.h"
 #include "gabriel3d_protect.h"
 #include "gabriel3d_refine.h"
 
@@ -329,6 +330,10 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
     if (CGAL::side_of_bounded_sphere(s_.points[u], s_.points[w], center) == CGAL::ON_BOUNDED_SIDE)
       hit.push_back(key(u, w));
   }
+  // The protected strategy's collar rule (gabriel3d_collar.cpp): onto the one hit subsegment's collar circle.
+  if (protection_ && hit.size() == 1)
+    if (auto y = facet_collar_point(s_, facet, hit[0], center); y && !protection_->strictly_containing(*y))
+      center = *y, hit.clear(), ball = nullptr;
   Q2 q = facet.project(center);
   FacetCDT::Locate_type lt;
   int li = 0;
