@@ -3,6 +3,7 @@
 #include "gabriel3d_collar.h"
 
 #include <cmath>
+#include <map>
 
 namespace nonobtuse::gabriel3d {
 
@@ -47,7 +48,19 @@ std::optional<P3> collar_split_point(const P3& p, const P3& q, const P3& c, cons
   return std::nullopt;
 }
 
-std::optional<P3> facet_collar_point(const PlcState& s, const Facet& facet, const Key& sub, const P3& c) {
+std::vector<bool> collared_segments(const PlcState& s) {
+  std::vector<bool> out(s.segments.size(), false);
+  std::map<Key, int> index;
+  for (std::size_t g = 0; g < s.segments.size(); ++g)
+    index[key(s.segments[g].a, s.segments[g].b)] = static_cast<int>(g);
+  for (const auto& angle : dihedral_angles(s))
+    if (angle.degrees < 90.0) out[index.at(key(angle.vertices[0], angle.vertices[1]))] = true;
+  return out;
+}
+
+std::optional<P3> facet_collar_point(const PlcState& s, const std::vector<bool>& collared, const Facet& facet,
+                                     const Key& sub, const P3& c) {
+  if (!collared[s.subsegments.at(sub)]) return std::nullopt;
   std::vector<Key> chain;
   for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e)
     if (facet.cdt.is_constrained(*e))

@@ -20,8 +20,20 @@ namespace nonobtuse::gabriel3d {
 std::optional<P3> collar_split_point(const P3& p, const P3& q, const P3& c, const std::vector<Key>& chain,
                                      const std::vector<P3>& points);
 
+// Every dihedral angle between two facets through an input segment (kind "dihedral", vertices {a, b}, facets: the
+// two facet ids), in degrees, floating point; read before refinement (unsplit segments). Cost: O(s f^2) for s
+// segments through at most f facets each.
+std::vector<InputAngle> dihedral_angles(const PlcState& s);
+
+// Per input segment: it gets collars (two facets through it meet at a dihedral angle below 90 degrees, where the
+// chain along the segment starts; flatter pairs, e.g. the ridges of a smooth scanned surface, keep the ordinary
+// rule, which measured fewer points there). Cost: that of dihedral_angles.
+std::vector<bool> collared_segments(const PlcState& s);
+
 // collar_split_point for subsegment `sub` of `facet` and a split point c of the facet, with every subsegment of the
-// facet as the chain. Cost: O(e) for the facet's e constrained edges.
-std::optional<P3> facet_collar_point(const PlcState& s, const Facet& facet, const Key& sub, const P3& c);
+// facet as the chain, when sub's input segment is collared (collared_segments); else nullopt. Cost: O(e) for the
+// facet's e constrained edges.
+std::optional<P3> facet_collar_point(const PlcState& s, const std::vector<bool>& collared, const Facet& facet,
+                                     const Key& sub, const P3& c);
 
 }  // namespace nonobtuse::gabriel3d
