@@ -3,8 +3,11 @@
 For each PLC family of ``experiments.plc_families`` (fan: every k in 3..12), each angle theta and each
 strategy (``STRATEGIES``: the split rules "midpoint" and "shells" alone, the "protected" strategy alone, and
 the "default": shells, then the protected strategy where shells does not converge), one case runs
-``nonobtuse.mesh3d.refine_gabriel`` under the default Steiner budget and a time budget, and records its
-status, Steiner points, smallest subsegment, time and the strategy that produced the result.
+``nonobtuse.mesh3d.refine_gabriel`` under its deterministic budgets (the default Steiner budget and the
+default work budget ``max_work``, or ``--max-work``; no wall-clock ``time_limit``, so a case's outcome does
+not depend on the machine's load), and records its status, Steiner points, smallest subsegment, work, time
+and the strategy that produced the result. The case process is still killed after ``--time-limit`` seconds
+(a safety net against a hang, not a budget): such a case has status "killed".
 
     python -m experiments.termination_map --quick        # < 2 min on 2 cores
     python -m experiments.termination_map                # theta = 1..10, 12..30 by 2, 35..120 by 5 (hours)
@@ -41,18 +44,19 @@ FULL_THETAS = [float(t) for t in [*range(1, 11), *range(12, 31, 2), *range(35, 1
 QUICK_THETAS = [2.0, 10.0, 30.0, 60.0, 90.0]
 FAN_KS_FULL = list(range(3, 13))
 FAN_KS_QUICK = [3, 6, 12]
-BUDGET_SECONDS = {"quick": 3.0, "full": 60.0}  # refine_gabriel time_limit; the case process is killed later
+QUICK_MAX_WORK = 2_000_000  # work units per strategy pass with --quick (refine_gabriel's default: >= 2e7)
+KILL_SECONDS = {"quick": 120.0, "full": 900.0}  # safety net: the case process is killed (status "killed")
 COLUMNS = ["family", "k", "theta", "split", "status", "strategy", "steiner_points", "smallest_subsegment",
-           "seconds", "time_limit", "smallest_input_angle", "diagnosis"]
+           "work", "max_work", "seconds", "smallest_input_angle", "diagnosis"]
 FRONTIER_COLUMNS = ["family", "k", "split", "converges_from_theta", "not_converged", "thetas",
                     "not_converged_thetas"]
 CONVERGED = "converged"
 
 
-def make_cases(quick: bool, budget: float, thetas: list[float] | None = None,
+def make_cases(quick: bool, max_work: int | None, thetas: list[float] | None = None,
                families: list[str] | None = None, fan_ks: list[int] | None = None) -> list[dict]:
-    """Every (family, k, theta, strategy) the families accept, with the refinement time budget (seconds); the
-    case key "split" names the strategy (one of ``STRATEGIES``)."""
+    """Every (family, k, theta, strategy) the families accept, with the refinement's work budget per pass
+    (None: refine_gabriel's default); the case key "split" names the strategy (one of ``STRATEGIES``)."""
     thetas = thetas or (QUICK_THETAS if quick else FULL_THETAS)
     cases = []
     for name in families or list(FAMILIES):
@@ -65,7 +69,7 @@ def make_cases(quick: bool, budget: float, thetas: list[float] | None = None,
             for theta in thetas:
                 if fam.accepts(theta, k):
                     cases.extend({"family": name, "k": k, "theta": theta, "split": split,
-                                  "time_limit": budget} for split in SPLITS)
+                                  "max_work": max_work} for split in SPLITS)
     return cases
 
 
@@ -76,13 +80,14 @@ def run_case(case: dict) -> dict:
 
     plc = make_plc(case["family"], case["theta"], case["k"])
     start = time.perf_counter()
-    result = refine_gabriel(plc, time_limit=case["time_limit"], **STRATEGIES[case["split"]])
+    result = refine_gabriel(plc, max_work=case["max_work"], **STRATEGIES[case["split"]])
     seconds = time.perf_counter() - start
     stats = result.stats
     smallest_angle, diagnosis = summarize_diagnosis(stats.get("diagnosis"))
     return {"status": str(result.status), "strategy": stats["strategy"],
             "steiner_points": int(stats["steiner_points"]),
-            "smallest_subsegment": float(stats["smallest_subsegment"]), "seconds": round(seconds, 4),
+            "smallest_subsegment": float(stats["smallest_subsegment"]), "work": int(stats["work"]),
+            "max_work": int(stats["max_work"]), "seconds": round(seconds, 4),
             "smallest_input_angle": smallest_angle, "diagnosis": diagnosis}
 
 
@@ -112,8 +117,10 @@ def rows_from_records(records: list[dict]) -> list[dict]:
         if rec["status"] == "ok":
             row.update(rec["result"])
         else:
-            row.update(status="killed" if rec["status"] == "timeout" else "error", seconds=rec["seconds"],
-                       diagnosis=error_summary(rec))
+            killed = rec["status"] == "timeout"
+            why = "killed by the --time-limit safety net (not a refinement budget): " if killed else ""
+            row.update(status="killed" if killed else "error", seconds=rec["seconds"],
+                       diagnosis=why + error_summary(rec))
         rows.append(row)
     return sorted(rows, key=lambda r: (r["family"], r["k"] or 0, r["theta"], r["split"]))
 
@@ -200,12 +207,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--families", type=lambda s: s.split(","), help=f"subset of {','.join(FAMILIES)}")
     parser.add_argument("--ks", type=lambda s: [int(k) for k in s.split(",")],
                         help="comma-separated fan sizes k instead of the default")
-    parser.add_argument("--budget", type=float, help="refine_gabriel time_limit per case, seconds "
-                        f"(default {BUDGET_SECONDS['quick']} with --quick, else {BUDGET_SECONDS['full']})")
+    parser.add_argument("--max-work", type=int, help="refine_gabriel max_work per strategy pass, work units "
+                        f"(default {QUICK_MAX_WORK} with --quick, else refine_gabriel's default)")
     args = parser.parse_args(argv)
-    budget = args.budget or BUDGET_SECONDS["quick" if args.quick else "full"]
-    cases = make_cases(args.quick, budget, args.thetas, args.families, args.ks)
-    records = sweep_from_args(args, run_case, cases, "termination_map", time_limit=3 * budget + 30)
+    max_work = args.max_work or (QUICK_MAX_WORK if args.quick else None)
+    cases = make_cases(args.quick, max_work, args.thetas, args.families, args.ks)
+    records = sweep_from_args(args, run_case, cases, "termination_map",
+                              time_limit=KILL_SECONDS["quick" if args.quick else "full"])
     rows = rows_from_records(records)
     stem = output_stem("termination_map", args.quick)
     write_csv(args.out / f"{stem}.csv", rows, COLUMNS)

@@ -118,6 +118,8 @@ def test_termination_map_quick_writes_csv_and_png(tmp_path):
                                  "wedge,segments", "--workers", "2"]) == 0
     rows = read_csv(tmp_path / "termination_map_quick.csv")
     assert list(rows[0]) == termination_map.COLUMNS
+    # the deterministic work budget, not a wall time limit
+    assert {int(r["max_work"]) for r in rows} == {termination_map.QUICK_MAX_WORK}
     # 2 families x theta 60 x every strategy
     assert sorted((r["family"], r["split"]) for r in rows) == sorted(
         (f, s) for f in ("wedge", "segments") for s in ("midpoint", "shells", "protected", "default"))

@@ -87,8 +87,18 @@ int apex(const Facet& f, int a, int b) {
   return -1;
 }
 
+std::vector<SteinerCount> top(std::vector<SteinerCount> counts) {
+  counts.erase(std::remove_if(counts.begin(), counts.end(), [](const auto& c) { return c.count == 0; }),
+               counts.end());
+  std::stable_sort(counts.begin(), counts.end(), [](const auto& x, const auto& y) { return x.count > y.count; });
+  if (counts.size() > kFew) counts.resize(kFew);
+  return counts;
+}
+
+}  // namespace
+
 // Dihedral angles between facets sharing an input segment (angle between the two half-planes).
-std::vector<InputAngle> dihedral(const PlcState& s) {
+std::vector<InputAngle> dihedral_angles(const PlcState& s) {
   std::vector<InputAngle> out;
   for (const auto& seg : s.segments) {
     Vec e = sub(s.points[seg.b], s.points[seg.a]);
@@ -104,16 +114,6 @@ std::vector<InputAngle> dihedral(const PlcState& s) {
   }
   return out;
 }
-
-std::vector<SteinerCount> top(std::vector<SteinerCount> counts) {
-  counts.erase(std::remove_if(counts.begin(), counts.end(), [](const auto& c) { return c.count == 0; }),
-               counts.end());
-  std::stable_sort(counts.begin(), counts.end(), [](const auto& x, const auto& y) { return x.count > y.count; });
-  if (counts.size() > kFew) counts.resize(kFew);
-  return counts;
-}
-
-}  // namespace
 
 // Angles between an input segment and a facet through one of its ends, where the segment leans over the facet
 // (its projection points into the facet); other directions are covered by the segment-segment angles.
@@ -139,7 +139,7 @@ std::vector<InputAngle> smallest_input_angles(const PlcState& s) {
   std::vector<InputAngle> out;
   keep_smallest(out, segment_segment(s, segments_at(s)));
   keep_smallest(out, segment_facet_angles(s));
-  keep_smallest(out, dihedral(s));
+  keep_smallest(out, dihedral_angles(s));
   std::stable_sort(out.begin(), out.end(), [](const auto& x, const auto& y) { return x.degrees < y.degrees; });
   return out;
 }

@@ -123,8 +123,9 @@ void split_segments_on_spheres(const PlcState& s, const std::vector<ProtectingBa
 // are lfs apart: a subsegment or subfacet there encroached by a point of such a feature has a diametral radius at
 // least that gap, so these splits are bounded by a positive size and the cascade down a segment-facet angle, which
 // concentric shells alone run to the floating-point resolution, cannot start. Not covered: chains outside the
-// balls through facets meeting along a segment at a small dihedral angle (collars around segments would be needed);
-// there the shells rule and the budgets end the run, and the exact check of the result decides the status.
+// balls through facets meeting along a segment at a small dihedral angle: the segment collars take the facet points
+// near such segments (gabriel3d_collar.cpp, with what they leave open); the budgets end what remains, and the exact
+// check of the result decides the status.
 std::optional<P3> arc_split_point(const PlcState& s, const Facet& facet, const ProtectingBall& ball, const P3& c,
                                   const std::set<int>& segment_sphere_points, const std::set<int>& arc_points) {
   const P3& e = s.points[ball.apex];

@@ -7,6 +7,7 @@
 #include <set>
 #include <string>
 
+#include "gabriel3d_collar.h"
 #include "gabriel3d_protect.h"
 #include "gabriel3d_refine.h"
 
@@ -36,7 +37,8 @@ class Refiner {
  public:
   Refiner(PlcState& s, const Refine3DOptions& o, bool ignore_frame_artifacts, const Protection* protection)
       : s_(s), o_(o), ignore_frame_artifacts_(ignore_frame_artifacts), protection_(protection), index_(s.points),
-        start_(std::chrono::steady_clock::now()), acute_(s.n_input, false) {
+        start_(std::chrono::steady_clock::now()), acute_(s.n_input, false),
+        collared_(protection ? collared_segments(s) : std::vector<bool>{}) {
     std::vector<std::vector<int>> ends(s.n_input);
     for (const auto& seg : s.segments) ends[seg.a].push_back(seg.b), ends[seg.b].push_back(seg.a);
     for (int v = 0; v < s.n_input; ++v)
@@ -109,6 +111,7 @@ class Refiner {
   long last_encroached_segments_ = 0, last_encroached_facets_ = 0;
   mutable long work_ = 0;  // counted in const queries: the count is the cost, not part of the state
   std::vector<bool> acute_;  // per input vertex: two input segments meet there at an acute angle
+  std::vector<bool> collared_;  // per input segment: collared (gabriel3d_collar.h); empty without protection
 };
 
 std::optional<Stop> Refiner::budget_left() const {
@@ -329,6 +332,10 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
     if (CGAL::side_of_bounded_sphere(s_.points[u], s_.points[w], center) == CGAL::ON_BOUNDED_SIDE)
       hit.push_back(key(u, w));
   }
+  // The protected strategy's collar rule (gabriel3d_collar.cpp): onto the one hit subsegment's collar circle.
+  if (protection_ && hit.size() == 1)
+    if (auto y = facet_collar_point(s_, collared_, facet, hit[0], center); y && !protection_->strictly_containing(*y))
+      center = *y, hit.clear(), ball = nullptr;
   Q2 q = facet.project(center);
   FacetCDT::Locate_type lt;
   int li = 0;

@@ -1,0 +1,60 @@
+// Segment collars of the protected Gabriel strategy: the collar point of a split point (hand-checked), and, for two
+// facets through a segment at a 10 degree dihedral angle, collar points that stay out of every piece's diametral
+// ball (exact predicates on the rounded points).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "gabriel3d_collar.h"
+
+namespace nonobtuse::gabriel3d {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+TEST(Gabriel3DCollar, MovesAPointOnTheRayFromTheMidpointOntoTheCircle) {
+  const std::vector<P3> points{{0, 0, 0}, {1, 0, 0}};
+  // m = (0.5, 0, 0), radius 0.5: (0.5, 0.25, 0) goes to (0.5, 0.5, 0); the ray through (0.75, 0, 0) ends at q.
+  const auto y = collar_split_point(points[0], points[1], P3(0.5, 0.25, 0), {{0, 1}}, points);
+  ASSERT_TRUE(y);
+  EXPECT_EQ(*y, P3(0.5, 0.5, 0));
+  EXPECT_FALSE(collar_split_point(points[0], points[1], P3(0.75, 0, 0), {{0, 1}}, points));  // that is q itself
+  EXPECT_FALSE(collar_split_point(points[0], points[1], P3(0.5, 0, 0), {{0, 1}}, points));   // the midpoint
+}
+
+TEST(Gabriel3DCollar, PointsOfTwoFacetsAtTenDegreesStayOutOfEveryPieceBall) {
+  // The segment [0, 1] on the x axis cut into pieces at 0, 0.25, 0.375, 0.5, 1; facet F is the half-plane y > 0 of
+  // z = 0, facet G the half-plane at 10 degrees from it. Split points strictly inside a piece's ball, in F or G.
+  std::vector<P3> points;
+  for (double x : {0.0, 0.25, 0.375, 0.5, 1.0}) points.emplace_back(x, 0, 0);
+  std::vector<Key> chain;
+  for (int i = 0; i + 1 < static_cast<int>(points.size()); ++i) chain.push_back({i, i + 1});
+  const double t = 10.0 * kPi / 180.0;
+  const K::Vector_3 in_f(0, 1, 0), in_g(0, std::cos(t), std::sin(t));
+  std::mt19937_64 rng(20261202);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int placed = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Key piece = chain[trial % chain.size()];
+    const P3 &p = points[piece.first], &q = points[piece.second];
+    const double r = 0.5 * (q.x() - p.x()), angle = kPi * unit(rng), rho = r * unit(rng);
+    const K::Vector_3 side = trial % 2 ? in_g : in_f;
+    const P3 c = CGAL::midpoint(p, q) + K::Vector_3(rho * std::cos(angle), 0, 0) + side * (rho * std::sin(angle));
+    if (CGAL::side_of_bounded_sphere(p, q, c) != CGAL::ON_BOUNDED_SIDE) continue;
+    const auto y = collar_split_point(p, q, c, chain, points);
+    if (!y) continue;
+    ++placed;
+    for (const auto& [a, b] : chain)
+      EXPECT_NE(CGAL::side_of_bounded_sphere(points[a], points[b], *y), CGAL::ON_BOUNDED_SIDE)
+          << "collar point " << *y << " inside the ball of piece " << a << "-" << b;
+    // On the piece's circle (to rounding) and in the facet's plane (exactly for F: z stays 0).
+    EXPECT_NEAR(std::sqrt(CGAL::to_double(CGAL::squared_distance(*y, CGAL::midpoint(p, q)))), r, 1e-15);
+    if (trial % 2 == 0) EXPECT_EQ(y->z(), 0.0);
+  }
+  EXPECT_GT(placed, 1900);  // only split points on the segment itself (rho sin(angle) ~ 0) may be refused
+}
+
+}  // namespace
+}  // namespace nonobtuse::gabriel3d
