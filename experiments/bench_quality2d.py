@@ -5,7 +5,8 @@ Inputs: the 2D polygons and PSLGs of ../shared/data/2d (those validation accepts
 set over its convex hull) and the demo's cross-section (nonobtuse.demo.cross_section). Each runs at 25
 degrees; 30 degrees too on the inputs without input angles below 60 degrees (where Triangle and we both refine
 every triangle). Triangle gets the same points, segments and holes, with -pq<deg>D (conforming Delaunay, no
-area bound); its boundary Steiner points are its output vertices on output segments beyond the input's.
+area bound). Boundary Steiner points are counted the same way for both tools: output vertices beyond the
+input's that lie on an output segment (ours is checked against refine's stats["steiner_points"]).
 Our smallest angle is the one outside small-input-angle regions (triangles there are left alone, as Triangle
 does), and both counts are given.
 
@@ -66,8 +67,12 @@ def ours(d: Domain, degrees: float) -> dict:
     r = nonobtuse.refine(d, min_angle=degrees)
     seconds = time.perf_counter() - t0
     q = r.stats["quality"]
+    boundary_steiner = int(np.count_nonzero(np.unique(r.mesh.segments) >= len(d.points)))
+    if boundary_steiner != r.stats["steiner_points"]:
+        raise RuntimeError(f"{boundary_steiner} output vertices on segments beyond the input's, "
+                           f"stats say {r.stats['steiner_points']} Steiner points")
     return {"status": r.status, "certificate": r.stats["obtuse_boundary_sides"],
-            "vertices": len(r.mesh.points), "boundary_steiner": r.stats["steiner_points"],
+            "vertices": len(r.mesh.points), "boundary_steiner": boundary_steiner,
             "interior": r.stats["interior_points"],
             "min_angle_outside": round(q["min_angle_outside_small_angles_degrees"], 3),
             "min_angle": round(q["min_angle_degrees"], 3),
