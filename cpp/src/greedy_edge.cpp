@@ -2,6 +2,7 @@
 #include "greedy_edge.h"
 
 #include <algorithm>
+#include <unordered_map>
 #include <utility>
 
 #include "split_point.h"
@@ -73,7 +74,12 @@ bool subsegment_is_empty(const State& st, const Side& start, const Point& s, con
 
 int greedy_count(const State& st, const Side& side, const DiskWalk& walk) {
   std::vector<Vertex_handle> q = walk.encroachers;
-  const Sight sight{&walk.obstacles};
+  // Every subsegment below lies on the side, up to rounding: each vertex's sight questions scan only the obstacles
+  // near its triangle with the side.
+  std::unordered_map<int, std::vector<Segment2>> in_front;
+  for (Vertex_handle v : q)
+    in_front.emplace(v->info(), obstacles_near_triangle(v->point(), side.s->point(), side.e->point(), walk.obstacles));
+  const Sight sight{&walk.obstacles, &in_front};
   Point x = side.s->point();
   const Point& e = side.e->point();
   int count = 0;

@@ -2,6 +2,9 @@
 #include "visibility.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <initializer_list>
 #include <tuple>
 
 namespace nonobtuse::refine2d {
@@ -44,6 +47,7 @@ DiskWalk walk_diametral_disk(const State& st, const Side& side, int lane) {
 }
 
 bool sees(const State& st, const Side& start, const Point& a, const Point& b, Vertex_handle v, Sight sight) {
+  if (sight.in_front != nullptr) return !covered_from(v->point(), a, b, sight.in_front->at(v->info()));
   if (sight.obstacles != nullptr) return !covered_from(v->point(), a, b, *sight.obstacles);
   bool found = false;
   walk_disk(st, st.domain_faces(start), a, b, [&](Face_handle f) { return found = f->has_vertex(v); });
@@ -74,7 +78,8 @@ bool covered_from(const Point& v, const Point& a, const Point& b, const std::vec
   const Point &lo = ccw ? a : b, &hi = ccw ? b : a;  // the wedge, counter-clockwise from lo to hi (< 180 degrees)
   // Counter-clockwise order of directions from v; valid for directions less than 180 degrees apart, which holds
   // for every pair compared below (each obstacle kept meets the wedge and spans less than 180 degrees).
-  auto before = [&v](const Point& p, const Point& q) { return CGAL::orientation(v, p, q) == CGAL::LEFT_TURN; };
+  // Equal points first: their orientation is exactly zero, which the filter cannot certify (exact arithmetic).
+  auto before = [&v](const Point& p, const Point& q) { return p != q && CGAL::orientation(v, p, q) == CGAL::LEFT_TURN; };
   std::vector<Segment2> shades;
   const auto v_side = CGAL::orientation(a, b, v);
   auto in_front = [&](const Point& c1, const Point& c2) {
@@ -96,6 +101,43 @@ bool covered_from(const Point& v, const Point& a, const Point& b, const std::vec
     if (before(*reach, last)) reach = &last;
   }
   return !before(*reach, hi);
+}
+
+std::vector<Segment2> obstacles_near_triangle(const Point& v, const Point& s, const Point& e,
+                                              const std::vector<Segment2>& obstacles) {
+  const std::array<Point, 3> corner = {v, s, e};
+  auto largest = [](const Point& p) { return std::max(std::abs(p.x()), std::abs(p.y())); };
+  const double corners_largest = std::max({largest(v), largest(s), largest(e)});
+  // (p - o) x (q - o) in doubles.
+  auto cross = [](const Point& o, const Point& p, const Point& q) {
+    return (p.x() - o.x()) * (q.y() - o.y()) - (p.y() - o.y()) * (q.x() - o.x());
+  };
+  auto length = [](const Point& o, const Point& p) { return std::sqrt(CGAL::to_double(CGAL::squared_distance(o, p))); };
+  // All of `points` strictly beyond the line o -> p (of length `len`) on the side `sign` (+1 left, -1 right) by
+  // more than margin; false whenever a value is not finite (the obstacle is kept).
+  auto beyond = [&](const Point& o, const Point& p, double len, double sign, double margin,
+                    std::initializer_list<Point> points) {
+    for (const Point& q : points)
+      if (!(sign * cross(o, p, q) > margin * len)) return false;
+    return true;
+  };
+  std::array<double, 3> side_length, outside;  // edge k of (v, s, e): corner k -> corner k + 1
+  for (int k = 0; k < 3; ++k) {
+    side_length[k] = length(corner[k], corner[(k + 1) % 3]);
+    outside[k] = cross(corner[k], corner[(k + 1) % 3], corner[(k + 2) % 3]) > 0 ? -1.0 : 1.0;  // away from the third
+  }
+  std::vector<Segment2> out;
+  for (const Segment2& c : obstacles) {
+    const double margin = 0x1p-30 * std::max({corners_largest, largest(c.first), largest(c.second)});
+    bool apart = false;
+    for (int k = 0; k < 3 && !apart; ++k)
+      apart = beyond(corner[k], corner[(k + 1) % 3], side_length[k], outside[k], margin, {c.first, c.second});
+    const double len = apart ? 0.0 : length(c.first, c.second);
+    apart = apart || beyond(c.first, c.second, len, 1.0, margin, {v, s, e}) ||
+            beyond(c.first, c.second, len, -1.0, margin, {v, s, e});
+    if (!apart) out.push_back(c);
+  }
+  return out;
 }
 
 }  // namespace nonobtuse::refine2d

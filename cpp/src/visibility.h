@@ -1,6 +1,7 @@
 // Internal: visibility from a subsegment (paper 4.4: only vertices that the subsegment sees encroach it). Walks
 // over the triangles meeting a diametral disk, stopped by constraints, and exact shading by obstacles.
 #pragma once
+#include <unordered_map>
 #include <vector>
 
 #include "refine2d_state.h"
@@ -23,8 +24,12 @@ struct DiskWalk {
 // over the whole edge's disk: the first constraint on every sight line from the edge inside that disk is an edge of
 // a face the walk reached. Closed obstacles are stricter than "no constraint properly crosses [y, v]" only on
 // sight lines grazing a constraint's end, so Exact never counts a vertex that is not seen.
+// in_front (Exact only, optional): per vertex index, the obstacles that may lie in front of it for any subsegment
+// of the walk's side (obstacles_near_triangle): covered_from then scans those instead of all the walk's obstacles,
+// with the same answer.
 struct Sight {
   const std::vector<Segment2>* obstacles = nullptr;
+  const std::unordered_map<int, std::vector<Segment2>>* in_front = nullptr;
 };
 
 // Exact: the closed segment [c1, c2] (c1 != c2) meets the closed triangle (p, q, r) (not degenerate). Orientation
@@ -34,6 +39,15 @@ bool segment_meets_triangle(const Point& c1, const Point& c2, const Point& p, co
 // Exact: the closed segments `obstacles` block every sight line from v to the open segment (a, b) (v off its line;
 // obstacles ending at v are ignored).
 bool covered_from(const Point& v, const Point& a, const Point& b, const std::vector<Segment2>& obstacles);
+
+// The obstacles, in their order, that may meet a triangle (v, a, b) whose corners a and b lie within a tiny margin
+// (2^-30 of the largest coordinate involved) of the closed segment [s, e]: a separating-axis test in doubles that
+// drops an obstacle only when it lies beyond an edge line of (v, s, e), or (v, s, e) beyond its line, by more than
+// the margin, which exceeds both the rounding of the test and how far rounded subsegment ends stray from [s, e]
+// (ulps). covered_from(v, a, b, ·) only uses obstacles meeting the closed triangle (v, a, b), so it decides the
+// same on the result as on all of `obstacles`. Cost: O(obstacles), in doubles.
+std::vector<Segment2> obstacles_near_triangle(const Point& v, const Point& s, const Point& e,
+                                              const std::vector<Segment2>& obstacles);
 
 // Vertices strictly inside the open diametral disk of the subsegment on a domain side of it (exact: strictly
 // left of s -> e when the left is a domain side, strictly right when the right is, and angle(s, q, e) ==

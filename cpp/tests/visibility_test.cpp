@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <random>
 #include <vector>
 
 #include "refine2d_fixtures.h"
@@ -27,6 +28,54 @@ TEST(Visibility, CoveredFromShadesOnlyInFront) {
   // Ending at the segment's end a: shades only when it enters v's side.
   EXPECT_FALSE(covered_from(v, a, b, {{a, Point(-1, -3)}, {Point(-0.5, 2), Point(3, 2)}}));
   EXPECT_TRUE(covered_from(v, a, b, {{a, Point(3, 3)}}));
+}
+
+// obstacles_near_triangle, hand-worked on the triangle v = (0, 4), s = (-2, 0), e = (2, 0) (margin 2^-30 * 4, about
+// 4e-9): one crossing it, one ending at s and one 1e-12 below the line y = 0 (within the margin) are kept, in their
+// order; one 1e-3 below it, one beyond the side v-e and one whose line leaves the whole triangle on one side are
+// dropped.
+TEST(Visibility, ObstaclesNearTriangleKeepsWhatMayLieInFront) {
+  const Point v(0, 4), s(-2, 0), e(2, 0);
+  const std::vector<Segment2> obstacles = {
+      {Point(-3, 1), Point(3, 1)},         {Point(-3, -1e-3), Point(3, -1e-3)}, {s, Point(-5, 1)},
+      {Point(3, 3), Point(4, 0)},          {Point(-1, -1e-12), Point(1, -1e-12)}, {Point(-10, 9), Point(10, 7)}};
+  const std::vector<Segment2> kept = obstacles_near_triangle(v, s, e, obstacles);
+  ASSERT_EQ(kept.size(), 3u);
+  EXPECT_EQ(kept[0], obstacles[0]);
+  EXPECT_EQ(kept[1], obstacles[2]);
+  EXPECT_EQ(kept[2], obstacles[4]);
+}
+
+// covered_from decides the same on obstacles_near_triangle(v, s, e, ·) as on all obstacles, for subsegments (a, b)
+// of [s, e] (ends on a grid of parameters) and random obstacles around the triangle (seeded).
+TEST(Visibility, ObstaclesNearTriangleKeepsCoveredFrom) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coordinate(-4, 4);
+  const Point s(-2, 0), e(2, 0);
+  int covered = 0, open = 0;
+  std::size_t dropped = 0;
+  for (int round = 0; round < 200; ++round) {
+    const Point v(coordinate(rng), std::abs(coordinate(rng)) + 0.1);
+    std::vector<Segment2> obstacles;
+    for (int k = 0; k < 6; ++k) {
+      Point c1(coordinate(rng), std::abs(coordinate(rng))), c2(coordinate(rng), coordinate(rng));
+      // Constraints never cross the side: keep those that do not.
+      if (CGAL::do_intersect(K::Segment_2(c1, c2), K::Segment_2(s, e)) || c1 == v || c2 == v) continue;
+      obstacles.emplace_back(c1, c2);
+    }
+    const std::vector<Segment2> kept = obstacles_near_triangle(v, s, e, obstacles);
+    dropped += obstacles.size() - kept.size();
+    for (int i = 0; i < 8; ++i)
+      for (int j = i + 1; j <= 8; ++j) {
+        const Point a(-2 + 0.5 * i, 0), b(-2 + 0.5 * j, 0);
+        const bool all = covered_from(v, a, b, obstacles);
+        ASSERT_EQ(covered_from(v, a, b, kept), all) << "round " << round << " a " << a << " b " << b;
+        ++(all ? covered : open);
+      }
+  }
+  EXPECT_GT(covered, 0);
+  EXPECT_GT(open, 0);
+  EXPECT_GT(dropped, 0u);
 }
 
 // segment_meets_triangle against CGAL's do_intersect on every segment between points of a 5 x 5 grid and a few
