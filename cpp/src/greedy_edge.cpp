@@ -2,7 +2,6 @@
 #include "greedy_edge.h"
 
 #include <algorithm>
-#include <unordered_map>
 #include <utility>
 
 #include "split_point.h"
@@ -76,9 +75,7 @@ int greedy_count(const State& st, const Side& side, const DiskWalk& walk) {
   std::vector<Vertex_handle> q = walk.encroachers;
   // Every subsegment below lies on the side, up to rounding: each vertex's sight questions scan only the obstacles
   // near its triangle with the side.
-  std::unordered_map<int, std::vector<Segment2>> in_front;
-  for (Vertex_handle v : q)
-    in_front.emplace(v->info(), obstacles_near_triangle(v->point(), side.s->point(), side.e->point(), walk.obstacles));
+  const ObstaclesInFront in_front(side.s->point(), side.e->point(), walk.obstacles);
   const Sight sight{&walk.obstacles, &in_front};
   Point x = side.s->point();
   const Point& e = side.e->point();
