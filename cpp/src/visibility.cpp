@@ -32,30 +32,34 @@ bool in_umbra(const std::array<Point, 4>& source, const Point& x, const Segment2
 
 // A face waiting in walk_seen, with the last constraints met on the way to it (indices into the constraints met).
 constexpr int kRecent = 4;
+// Skipping a face is never needed for correctness, only for speed: the first kFreeFaces faces of a walk are
+// crossed out of without the umbra tests, which would cost more than they save on the small disks of most sides
+// (a convex polygon's, where nearly collinear neighbours also make the orientations slow).
+constexpr std::size_t kFreeFaces = 16;
 struct SeenEntry {
   Face_handle face;
   std::array<int, kRecent> recent;
 };
 
-// The Walked::Seen walk from the side's domain faces over its disk; visit(face) for every face entered. An
-// unconstrained edge [u, w] near the disk is crossed unless
+// The Walked::Seen walk from the side's domain faces over its disk (right_in_domain: the side's other side is a
+// domain side too); visit(face) for every face entered. After the first kFreeFaces faces, an unconstrained edge
+// [u, w] near the disk is crossed unless
 // - u and w both lie in the umbra (in_umbra, from fat_side) of one blocker: a constraint other than the side, among
 //   those of the face being left, the last kRecent met on the way to it, and the first four met that touch the
 //   side's ends (the walls that bound what the side sees); or
-// - the other side of the side is not in the domain, and u and w both lie strictly right of fat_side's right edge.
-// Why the walk still enters every face that a sight line passes through before its first constraint (so that the
-// first constraint on it is an obstacle and its end vertex an encroacher): such a sight line from a point y of
-// fat_side enters the domain through the side and then crosses unconstrained edges at points p with [y, p]
+// - !right_in_domain, and u and w both lie strictly right of fat_side's right edge.
+// Why the walk still enters every face that a sight line passes through before its first constraint (so that
+// the first constraint on it is an obstacle and its end vertex an encroacher): such a sight line from a point y
+// of fat_side enters the domain through the side and then crosses unconstrained edges at points p with [y, p]
 // meeting no constraint but the side. Such a p is in no blocker's umbra (y sees it), and it is not strictly right
-// of the fat side when the domain lies left only (the sight line runs from y to a vertex strictly left of the side).
-// Either rule is a set inclusion tested exactly on corners of convex sets (the umbra and the half-plane are
+// of the fat side when the domain lies left only (the sight line runs from y to a vertex strictly left of the
+// side). Either rule is a set inclusion tested exactly on corners of convex sets (the umbra and the half-plane are
 // convex), so the walk never skips such an edge.
 template <class Visit>
-void walk_seen(const State& st, const Side& side, Visit&& visit, int lane) {
+void walk_seen(const State& st, const Side& side, bool right_in_domain, Visit&& visit, int lane) {
   const Point &s = side.s->point(), &e = side.e->point();
   const DiskReach disk(s, e);
   const std::array<Point, 4> source = fat_side(s, e);
-  const bool right_in_domain = st.is_boundary_side({side.e, side.s});
   auto beyond_right = [&](const Point& p) { return CGAL::orientation(source[1], source[2], p) == CGAL::RIGHT_TURN; };
   std::vector<Segment2> met;
   std::vector<int> walls;  // the constraints met touching s or e (at most four)
@@ -65,11 +69,13 @@ void walk_seen(const State& st, const Side& side, Visit&& visit, int lane) {
     f->info().visit[lane] = walk;
     stack.push_back({f, {-1, -1, -1, -1}});
   }
+  std::size_t entered = 0;
   while (!stack.empty()) {
     const SeenEntry entry = stack.back();
     stack.pop_back();
     Face_handle f = entry.face;
     visit(f);
+    ++entered;
     std::array<int, kRecent> recent;  // the face's own constraints first, then its path's
     int k = 0;
     for (int i = 0; i < 3; ++i) {
@@ -92,7 +98,7 @@ void walk_seen(const State& st, const Side& side, Visit&& visit, int lane) {
       Face_handle g = f->neighbor(i);
       if (g->info().visit[lane] == walk || st.cdt().is_infinite(g)) continue;
       const Point &u = f->vertex(CDT::ccw(i))->point(), &w = f->vertex(CDT::cw(i))->point();
-      if (!disk.near(u, w) || hidden(u, w)) continue;
+      if (!disk.near(u, w) || (entered > kFreeFaces && hidden(u, w))) continue;
       g->info().visit[lane] = walk;
       stack.push_back({g, recent});
     }
@@ -143,7 +149,7 @@ DiskWalk walk_diametral_disk(const State& st, const Side& side, int lane, Walked
     return false;
   };
   if (walked == Walked::Seen)
-    walk_seen(st, side, visit, lane);
+    walk_seen(st, side, right, visit, lane);
   else
     walk_disk(st, st.domain_faces(side), s, e, visit, lane);
   for (Vertex_handle v : reached)
