@@ -3,9 +3,9 @@
 ``save`` refines every input below (greedy, default budget) and writes, per input, the mesh points, the
 status, the Steiner count and the lower bound to ``DIR/NAME.npz``; ``compare`` refines them again and reports,
 per input, whether the counts, the bound, the status and every coordinate (bit for bit) are identical. Exit
-status 1 when any differs. The inputs: the ``bench_scaling`` families (star 1k, 5k, 10k; polygon, thin layer,
-convex and point set at 1e4 and 1e5) and every 2D file of the shared corpus (``../shared/data/2d``; an open
-boundary closed by the convex hull; files validation refuses are skipped).
+status 1 when any differs. The inputs: the ``bench_scaling`` families (star 1k, 5k, 10k, 30k; polygon, thin
+layer, convex and point set at 1e4 and 1e5) and every 2D file of the shared corpus (``../shared/data/2d``; an
+open boundary closed by the convex hull; files validation refuses are skipped).
 
     PYTHONPATH=src:. .venv/bin/python -m experiments.compare_outputs save DIR [--quick]
     PYTHONPATH=src:. .venv/bin/python -m experiments.compare_outputs compare DIR [--quick]
@@ -25,7 +25,7 @@ import numpy as np
 from experiments.bench_scaling import domain_of
 
 CORPUS = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "2d"
-FAMILY_SIZES = [("star", 1_000), ("star", 5_000), ("star", 10_000)] + [
+FAMILY_SIZES = [("star", 1_000), ("star", 5_000), ("star", 10_000), ("star", 30_000)] + [
     (f, n) for f in ("polygon", "thin_layer", "convex", "point_set") for n in (10_000, 100_000)
 ]
 

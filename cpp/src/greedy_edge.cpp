@@ -73,7 +73,10 @@ bool subsegment_is_empty(const State& st, const Side& start, const Point& s, con
 
 int greedy_count(const State& st, const Side& side, const DiskWalk& walk) {
   std::vector<Vertex_handle> q = walk.encroachers;
-  const Sight sight{&walk.obstacles};
+  // Every subsegment below lies on the side, up to rounding: each vertex's sight questions scan only the obstacles
+  // near its triangle with the side.
+  const ObstaclesInFront in_front(side.s->point(), side.e->point(), walk.obstacles);
+  const Sight sight{&walk.obstacles, &in_front};
   Point x = side.s->point();
   const Point& e = side.e->point();
   int count = 0;

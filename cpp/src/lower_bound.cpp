@@ -6,7 +6,9 @@
 // constraints, so no refinement placing Steiner points on E uses fewer. Edges are disjoint, so the bounds add.
 // Visibility: a vertex counts for a subsegment only when some point of the open subsegment sees it, tested
 // exactly against the constraints the walk over E's disk meets (Sight, covered_from: the first constraint on
-// every sight line from E inside the disk is one of them). A vertex that the walk merely reaches, around the
+// every sight line from E inside the disk is one of them). The walk is Walked::Seen: it skips the faces behind
+// the constraints it meets (the spikes of a spiky polygon that E does not see), which leaves those first
+// constraints and the vertices seen, so the bound is the one the full walk gives. A vertex that the walk merely reaches, around the
 // free end of a dangling segment or an end on the circle, does not count: the bound never counts a vertex that
 // a valid refinement could leave in the disk, which is what makes it a lower bound.
 // An interface edge is one single-edge problem with the encroachers of both sides (the walk collects both).
@@ -32,7 +34,7 @@ void lower_bound_per_edge(State& st, int threads) {
   auto lower_bounds = [&](int lane) {
     for (std::size_t i = lane; i < first_side.size(); i += 2) {
       const auto& [k, side] = first_side[i];
-      st.set_lower_bound(k, greedy_count(st, side, walk_diametral_disk(st, side, lane)));
+      st.set_lower_bound(k, greedy_count(st, side, walk_diametral_disk(st, side, lane, Walked::Seen)));
     }
   };
   fork_join(worth_forking(st.cdt().number_of_faces(), threads), [&] { lower_bounds(0); }, [&] { lower_bounds(1); });
