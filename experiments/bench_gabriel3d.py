@@ -59,6 +59,34 @@ def measure(name: str, method: str, plc, mesh, status: str, seconds: float) -> d
             "seconds": round(seconds, 3)}
 
 
+def torus_surface(faces: int, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
+    """A closed torus (major radius 4, minor 1) of about ``faces`` triangles: a u-by-v grid (u = 2v) of
+    points moved along the torus by up to a fifth of a grid step (seeded), each grid square cut into two
+    triangles, outward. Points (n, 3) float64, triangles (2n, 3) int64, n = u v; built with numpy in O(n)."""
+    v = max(3, int(round((faces / 4) ** 0.5)))
+    u = 2 * v
+    rng = np.random.default_rng(seed)
+    a = (np.arange(u)[:, None] + rng.uniform(-0.2, 0.2, (u, v))) * (2 * np.pi / u)
+    b = (np.arange(v)[None, :] + rng.uniform(-0.2, 0.2, (u, v))) * (2 * np.pi / v)
+    ring = 4.0 + np.cos(b)
+    points = np.column_stack([(ring * np.cos(a)).ravel(), (ring * np.sin(a)).ravel(), np.sin(b).ravel()])
+    i, j = np.meshgrid(np.arange(u), np.arange(v), indexing="ij")
+    p00, p10, p01, p11 = (((i + di) % u) * v + (j + dj) % v for di, dj in ((0, 0), (1, 0), (0, 1), (1, 1)))
+    triangles = np.concatenate([np.stack([p00, p10, p11], -1).reshape(-1, 3),
+                                np.stack([p00, p11, p01], -1).reshape(-1, 3)])
+    return points, triangles
+
+
+def write_off(path: Path, points: np.ndarray, triangles: np.ndarray) -> None:
+    """OFF of a triangle surface (coordinates with repr's 17 digits: read back exactly), atomically."""
+    from nonobtuse.io import atomic_text
+
+    with atomic_text(path) as f:
+        f.write(f"OFF\n{len(points)} {len(triangles)} 0\n")
+        np.savetxt(f, points, fmt="%.17g")
+        np.savetxt(f, np.column_stack([np.full(len(triangles), 3), triangles]), fmt="%d")
+
+
 def run_backend(name: str, plc, method: str, backend: str, **options) -> dict[str, Any]:
     t0 = time.perf_counter()
     try:
