@@ -19,6 +19,11 @@ output points that are not input points), boundary_faces, encroached_facets, enc
 fTetWild, whose output does not mark segments), seconds. CSV to bench_gabriel3d.csv (bench_gabriel3d_quick.csv
 with --quick) in --out DIR (default experiments/results), and a table on stdout.
 
+``--scaling [FACES...]``: instead, check3d end to end (a fresh ``nonobtuse check3d --json`` process) on
+jittered tori (:func:`torus_surface`) of 1e4, 1e5, 1e6 faces (or those given), with the cgal and tetgen
+backends: faces, points, backend, exit, seconds, peak_mb to bench_gabriel3d_scaling.csv; the tori are
+written to DIR/cache.
+
 Run: ``PYTHONPATH=src .venv/bin/python -m experiments bench_gabriel3d [--quick] [--out DIR] [files...]``
 (default: our refinement limited to 60 s and its default budget, 10 n + 10,000 points; --quick: inputs
 up to 500 triangles, our refinement limited to 20 s and 2,000 points, about 1 min).
@@ -128,6 +133,38 @@ def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
     return rows
 
 
+SCALING_COLUMNS = ["faces", "points", "backend", "exit", "seconds", "peak_mb"]
+
+
+def check3d_scaling(args: argparse.Namespace) -> list[dict[str, Any]]:
+    """check3d end to end (``nonobtuse check3d FILE --backend B --json`` in a fresh process: load, validate,
+    tetrahedralize, exact check, control volumes, JSON) on :func:`torus_surface` of each size in
+    args.scaling, written to the cache first; wall seconds and peak resident memory of the process."""
+    import resource
+    import subprocess
+
+    rows = []
+    for faces in args.scaling:
+        path = out_dir(args, cache=True) / f"torus_{faces}.off"
+        points, triangles = torus_surface(faces)
+        if not path.exists():
+            write_off(path, points, triangles)
+        for backend in args.scaling_backends:
+            print(f"bench_gabriel3d: check3d {path.name} --backend {backend}", file=sys.stderr)
+            t0 = time.perf_counter()
+            command = [sys.executable, "-c", "import sys; from nonobtuse.cli import main; sys.exit(main())",
+                       "check3d", str(path), "--backend", backend, "--json"]
+            done = subprocess.run(command, capture_output=True, text=True)
+            seconds = time.perf_counter() - t0
+            peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024  # the largest child so far
+            if done.returncode not in (0, 1):  # 1: not Gabriel, an answer
+                print(done.stderr[-500:], file=sys.stderr)
+            rows.append({"faces": len(triangles), "points": len(points),
+                         "backend": backend, "exit": done.returncode, "seconds": round(seconds, 2),
+                         "peak_mb": round(peak)})
+    return rows
+
+
 def print_table(rows: list[dict[str, Any]]) -> None:
     widths = {c: max(len(c), *(len(str(r.get(c, ""))) for r in rows)) for c in COLUMNS}
     print("  ".join(c.ljust(widths[c]) for c in COLUMNS))
@@ -139,8 +176,19 @@ def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("inputs", nargs="*", type=Path, help="default: every file of ../shared/data/3d")
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--scaling", type=int, nargs="*", default=None, metavar="FACES",
+                    help="instead: the check3d scaling rows on tori of these face counts (default 1e4 "
+                         "1e5 1e6) to bench_gabriel3d_scaling.csv")
+    ap.add_argument("--scaling-backends", nargs="+", default=["cgal", "tetgen"], choices=("cgal", "tetgen"))
     add_out_option(ap, "bench_gabriel3d.csv")
     args = ap.parse_args(argv)
+    if args.scaling is not None:
+        args.scaling = args.scaling or [10**4, 10**5, 10**6]
+        rows = check3d_scaling(args)
+        path = out_dir(args) / "bench_gabriel3d_scaling.csv"
+        write_csv(path, rows, SCALING_COLUMNS)
+        print("\n".join("  ".join(str(r[c]) for c in SCALING_COLUMNS) for r in rows))
+        return 0
     quick = args.quick
     args.max_triangles = 500 if quick else 10**9
     args.ftetwild_max_triangles = 500 if quick else 20000
