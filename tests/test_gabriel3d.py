@@ -19,6 +19,7 @@ import nonobtuse
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io.tetmesh import write_tetmesh
 from nonobtuse.mesh3d import check_gabriel, load_plc, refine_gabriel
+from nonobtuse.mesh3d.control_volumes3d import control_volumes3d
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
 DATA = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "3d"
@@ -187,6 +188,14 @@ def test_cube_converges_without_steiner_points():
     assert volume(res.mesh) == pytest.approx(1.0, abs=1e-12)
     assert sorted(set(res.mesh.face_facets.tolist())) == [0, 1, 2, 3, 4, 5]
     assert_result_consistent(res, plc)
+
+
+def test_control_volumes_false_skips_the_summary_only():
+    plc = spike(20.0)
+    full, bare = refine_gabriel(plc), refine_gabriel(plc, control_volumes=False)
+    assert bare.stats["negative_couplings"] is None
+    assert full.stats["negative_couplings"] == control_volumes3d(full.mesh).negative_couplings
+    assert np.array_equal(full.mesh.points, bare.mesh.points) and full.status == bare.status
 
 
 @pytest.mark.parametrize("theta", range(1, 11))

@@ -350,8 +350,8 @@ def refine_gabriel(
         status = "stalled" if status == "converged" and not report.ok else status
         stats.update(status=status, encroached_facets=len(report.faces),
                      encroached_segments=len(report.segments))
-    summary = control_volume_summary(mesh) if control_volumes else {"negative_couplings": None}
-    stats["negative_couplings"] = summary["negative_couplings"]
+    stats["negative_couplings"] = (control_volume_summary(mesh)["negative_couplings"] if control_volumes
+                                   else None)
     stats["seconds"] = time.perf_counter() - started
     return Gabriel3DResult(mesh=mesh, status=cast(Status, status), stats=stats, report=report)
 
