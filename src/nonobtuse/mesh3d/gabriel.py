@@ -161,13 +161,15 @@ def check_gabriel(mesh: TetMesh) -> GabrielReport:
     return GabrielReport._from_core(d, len(faces), len(segments))
 
 
-def boundary_certificate(mesh: TetMesh) -> dict[str, Any]:
+def boundary_certificate(mesh: TetMesh, report: GabrielReport | None = None) -> dict[str, Any]:
     """What ``nonobtuse check3d`` reports of a tetrahedral mesh, JSON-ready: points, tets, boundary_faces
     (counts), steiner_points (from mesh.stats; None when the mesh does not say), encroached_facets,
-    encroached_segments (the exact :func:`check_gabriel`), gabriel (its ``to_dict()``) and control_volumes
-    (:func:`control_volume_summary`) and warnings (from mesh.stats, e.g. orientation). The mesh is Gabriel
-    iff both encroached counts are 0. Cost: check_gabriel plus the control volumes, near-linear."""
-    report = check_gabriel(mesh)
+    encroached_segments (the exact :func:`check_gabriel`, or ``report`` when given: it must be that check of
+    this mesh, e.g. to draw the same offenders without checking twice), gabriel (its ``to_dict()``) and
+    control_volumes (:func:`control_volume_summary`) and warnings (from mesh.stats, e.g. orientation). The
+    mesh is Gabriel iff both encroached counts are 0. Cost: check_gabriel plus the control volumes,
+    near-linear."""
+    report = check_gabriel(mesh) if report is None else report
     return {"points": len(mesh.points), "tets": len(mesh.tets), "boundary_faces": len(mesh.boundary_faces),
             "steiner_points": mesh.stats.get("steiner_points"), "encroached_facets": len(report.faces),
             "encroached_segments": len(report.segments), "gabriel": report.to_dict(),
