@@ -193,16 +193,14 @@ def control_volume_summary(mesh: TetMesh) -> dict[str, Any]:
     float64). ``flat_in_floating_point``: tets whose volume is positive (exact orientation) but 0 in floating
     point; their circumcentres cannot be computed, so min_coupling and total_volume are then None when not
     finite, and negative_couplings counts the other edges only."""
-    from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes
-
     e = power_of_two_exponent(mesh.points)
     scaled = replace(mesh, points=np.ldexp(np.asarray(mesh.points, dtype=np.float64), -e))
+    cv = control_volumes3d(scaled)
     with np.errstate(all="ignore"):  # flat tets give NaN, counted below
-        summary = control_volumes3d(scaled).to_dict()
-        flat = int((signed_tet_volumes(scaled.points, np.asarray(scaled.tets).reshape(-1, 4)) == 0).sum())
+        summary = cv.to_dict()
+    summary["flat_in_floating_point"] = cv.flat_in_floating_point
     summary["min_coupling"] = _ldexp_or_none(summary["min_coupling"], e)
     summary["total_volume"] = _ldexp_or_none(summary["total_volume"], 3 * e)
-    summary["flat_in_floating_point"] = flat
     return summary
 
 
