@@ -1,4 +1,4 @@
-// 3D control volumes: exact signs of the dual (Voronoi face) areas. Conversion only.
+// 3D control volumes: dual (Voronoi face) areas with exact signs, cell volumes. Conversion only.
 #include <pybind11/pybind11.h>
 
 #include "convert.h"
@@ -8,26 +8,32 @@ namespace nonobtuse::bindings {
 
 void bind_control_volumes3d(py::module_& m) {
   m.def(
-      "dual_area_signs",
+      "control_volumes3d",
       [](const DoubleArray& points, const IndexArray& tets) {
         std::vector<Point3> p = to_points3(points);
         std::vector<std::array<int, 4>> t = to_index_rows<4>(tets, p.size(), "tets");
-        DualAreaSigns r;
+        ControlVolumes3D r;
         {
           py::gil_scoped_release release;
-          r = dual_area_signs(p, t);
+          r = control_volumes3d(p, t);
         }
         py::dict d;
         d["edges"] = from_index_rows(r.edges);
         d["sign"] = from_vector(std::vector<std::int8_t>(r.signs.begin(), r.signs.end()));
+        d["dual_areas"] = from_vector(r.dual_areas);
+        d["lengths"] = from_vector(r.lengths);
+        d["volumes"] = from_vector(r.volumes);
         d["exact_evaluations"] = r.exact_evaluations;
+        d["flat_in_floating_point"] = r.flat_in_floating_point;
         return d;
       },
       py::arg("points"), py::arg("tets"),
-      "Exact sign of the Voronoi face area dual to every edge of a tet mesh (per-tet decomposition, clipped to\n"
-      "the mesh). points (n,3) float64, tets (t,4) int64 positively oriented (InvalidInputError otherwise).\n"
-      "Returns a dict: edges (E,2) int64 (a < b, sorted), sign (E,) int8 (-1, 0, +1), exact_evaluations (int:\n"
-      "edges the interval filter left to exact arithmetic).");
+      "The Voronoi face area dual to every edge of a tet mesh (per-tet decomposition, clipped to the mesh), its\n"
+      "exact sign, and the cell volumes. points (n,3) float64, tets (t,4) int64 positively oriented\n"
+      "(InvalidInputError otherwise). Returns a dict: edges (E,2) int64 (a < b, sorted), sign (E,) int8\n"
+      "(-1, 0, +1), dual_areas (E,) float64 (exact sign times the float magnitude), lengths (E,) float64,\n"
+      "volumes (n,) float64, exact_evaluations (int: edges the interval filter left to exact arithmetic),\n"
+      "flat_in_floating_point (int: tets flat in doubles, whose pieces are NaN).");
 }
 
 }  // namespace nonobtuse::bindings

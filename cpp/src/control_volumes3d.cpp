@@ -1,4 +1,5 @@
-// Exact signs of the 3D dual (Voronoi face) areas: interval filter, exact arithmetic when it cannot decide.
+// The 3D dual (Voronoi face) areas and cell volumes of a tet mesh: exact signs (interval filter, exact arithmetic
+// when it cannot decide), floating-point magnitudes.
 #include "nonobtuse/control_volumes3d.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -10,7 +11,9 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <string>
+#include <utility>
 
 namespace nonobtuse {
 namespace {
@@ -116,6 +119,73 @@ int dual_area_exact_sign(const std::vector<Point3>& p, const std::vector<std::ar
   return CGAL::sign(num);
 }
 
+// Doubles with numpy's operation order, so that the magnitudes are those of the module's numpy formulas bit for
+// bit (a three-term sum over an axis is (x + y) + z; the compiler contracts nothing into fused multiply-adds on
+// the default x86-64 target).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("fp-contract=off")  // no fused multiply-adds (aarch64 would contract by default)
+#endif
+struct D3 {
+  double x, y, z;
+};
+D3 operator-(const D3& a, const D3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+D3 operator+(const D3& a, const D3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+D3 times(double s, const D3& a) { return {s * a.x, s * a.y, s * a.z}; }
+D3 over(const D3& a, double s) { return {a.x / s, a.y / s, a.z / s}; }
+double sum3(double x, double y, double z) { return (x + y) + z; }
+double dot(const D3& a, const D3& b) { return sum3(a.x * b.x, a.y * b.y, a.z * b.z); }
+D3 cross(const D3& a, const D3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+D3 d3(const Point3& p) { return {p.x, p.y, p.z}; }
+
+D3 triangle_circumcenter(const D3& a, const D3& b, const D3& c) {
+  D3 u = b - a, v = c - a, w = cross(u, v);
+  D3 num = times(dot(u, u), cross(v, w)) + times(dot(v, v), cross(w, u));
+  return a + over(num, 2.0 * dot(w, w));
+}
+
+// The circumcenter, or NaN where the tet is flat in doubles (den == 0); *flat says which.
+D3 tet_circumcenter(const D3& a, const D3& b, const D3& c, const D3& d, bool* flat) {
+  D3 u = b - a, v = c - a, w = d - a;
+  D3 num = times(dot(u, u), cross(v, w)) + times(dot(v, v), cross(w, u)) + times(dot(w, w), cross(u, v));
+  double den = dot(u, cross(v, w));
+  *flat = den == 0;
+  return a + over(num, 2.0 * den);
+}
+
+// One tet's piece of the dual area of edge (i, j) (frame (i, j, k, l), positive) and |j - i|, in doubles.
+std::pair<double, double> float_piece(const D3& xi, const D3& xj, const D3& xk, const D3& xl, const D3& ct) {
+  D3 m = times(0.5, xi + xj);
+  D3 c1 = triangle_circumcenter(xi, xj, xk), c2 = triangle_circumcenter(xi, xj, xl);
+  D3 area = times(0.5, cross(c1 - m, ct - m) + cross(ct - m, c2 - m));
+  D3 e = xj - xi;
+  double length = std::sqrt(dot(e, e));
+  return {dot(area, e) / length, length};
+}
+
+// The floating-point magnitudes: per piece (in pieces' tet-and-frame order within each tet), the per-point
+// volumes, and the count of tets flat in doubles.
+void float_magnitudes(const std::vector<Point3>& p, const std::vector<std::array<int, 4>>& tets,
+                      std::vector<double>& piece, ControlVolumes3D& out) {
+  piece.assign(6 * tets.size(), 0.0);
+  out.volumes.assign(p.size(), 0.0);
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    const auto& c = tets[t];
+    bool flat = false;
+    D3 ct = tet_circumcenter(d3(p[c[0]]), d3(p[c[1]]), d3(p[c[2]]), d3(p[c[3]]), &flat);
+    out.flat_in_floating_point += flat;
+    double share[4] = {0, 0, 0, 0};
+    for (int f = 0; f < 6; ++f) {
+      const int* q = kEdgeFrames[f];
+      auto [area, length] = float_piece(d3(p[c[q[0]]]), d3(p[c[q[1]]]), d3(p[c[q[2]]]), d3(p[c[q[3]]]), ct);
+      piece[6 * t + f] = area;
+      double pyramid = area * length / 6.0;
+      share[q[0]] += pyramid;
+      share[q[1]] += pyramid;
+    }
+    for (int v = 0; v < 4; ++v) out.volumes[c[v]] += share[v];
+  }
+}
+
 void require_positive_tets(const std::vector<Point3>& p, const std::vector<std::array<int, 4>>& tets) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   auto point = [&](int v) { return K::Point_3(p[v].x, p[v].y, p[v].z); };
@@ -134,8 +204,11 @@ void require_positive_tets(const std::vector<Point3>& p, const std::vector<std::
 
 }  // namespace
 
-DualAreaSigns dual_area_signs(const std::vector<Point3>& points, const std::vector<std::array<int, 4>>& tets) {
+ControlVolumes3D control_volumes3d(const std::vector<Point3>& points, const std::vector<std::array<int, 4>>& tets) {
   require_positive_tets(points, tets);
+  ControlVolumes3D out;
+  std::vector<double> piece;
+  float_magnitudes(points, tets, piece, out);
   std::vector<Piece> pieces;
   pieces.reserve(6 * tets.size());
   for (std::size_t t = 0; t < tets.size(); ++t)
@@ -152,7 +225,6 @@ DualAreaSigns dual_area_signs(const std::vector<Point3>& points, const std::vect
     if (q == 0 || pieces[q].edge != pieces[q - 1].edge) starts.push_back(q);
   starts.push_back(pieces.size());
   const std::size_t edges = starts.size() - 1;
-  DualAreaSigns out;
   out.signs.assign(edges, 0);
   std::vector<std::size_t> undecided;
   {
@@ -172,7 +244,17 @@ DualAreaSigns dual_area_signs(const std::vector<Point3>& points, const std::vect
     out.signs[g] = dual_area_exact_sign(points, tets, &pieces[starts[g]], &pieces[starts[g + 1]]);
   out.exact_evaluations = static_cast<int>(undecided.size());
   out.edges.reserve(edges);
-  for (std::size_t g = 0; g < edges; ++g) out.edges.push_back(pieces[starts[g]].edge);
+  out.dual_areas.reserve(edges);
+  out.lengths.reserve(edges);
+  for (std::size_t g = 0; g < edges; ++g) {
+    const Segment& e = pieces[starts[g]].edge;
+    double sum = 0.0;  // in tet order, as numpy's bincount adds
+    for (std::size_t q = starts[g]; q < starts[g + 1]; ++q) sum += piece[6 * pieces[q].tet + pieces[q].frame];
+    out.edges.push_back(e);
+    out.dual_areas.push_back(out.signs[g] * std::abs(sum));
+    D3 d = d3(points[e[1]]) - d3(points[e[0]]);
+    out.lengths.push_back(std::sqrt(dot(d, d)));
+  }
   return out;
 }
 

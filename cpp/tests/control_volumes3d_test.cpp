@@ -35,9 +35,9 @@ std::vector<std::array<int, 4>> kuhn_tets(const std::vector<Point3>& p) {
   return tets;
 }
 
-TEST(DualAreaSigns, CubeDiagonalsAreExactlyZeroAndCubeEdgesPositive) {
+TEST(ControlVolumes3D, CubeDiagonalsAreExactlyZeroAndCubeEdgesPositive) {
   auto p = cube_points();
-  auto r = dual_area_signs(p, kuhn_tets(p));
+  auto r = control_volumes3d(p, kuhn_tets(p));
   ASSERT_EQ(r.edges.size(), 19u);  // 12 cube edges, 6 face diagonals, 1 long diagonal
   int zeros = 0;
   for (std::size_t e = 0; e < r.edges.size(); ++e) {
@@ -49,34 +49,34 @@ TEST(DualAreaSigns, CubeDiagonalsAreExactlyZeroAndCubeEdgesPositive) {
   EXPECT_GE(r.exact_evaluations, 7);  // an interval cannot prove a zero
 }
 
-TEST(DualAreaSigns, CornerTetHasNegativeDualAreasOnTheEncroachedFace) {
+TEST(ControlVolumes3D, CornerTetHasNegativeDualAreasOnTheEncroachedFace) {
   // Tet (0, e_x, e_y, e_z): vertex 0 lies inside the diametral sphere of the face (e_x, e_y, e_z) (distance
   // sqrt(1/3) from its circumcenter, radius sqrt(2/3)). The tet's circumcenter (1/2, 1/2, 1/2) lies beyond that
   // face. By hand, for the edge e_x -> e_y: M = C(0, e_x, e_y) = (1/2, 1/2, 0), so the piece is the triangle
   // (M, C_T, centroid of the face) and ((C_T - M) x (centroid - M)) . (e_y - e_x) = -1/6 < 0. Each axis edge
   // gets a quarter square (area 1/4 > 0).
   std::vector<Point3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  auto r = dual_area_signs(p, {{0, 1, 2, 3}});
+  auto r = control_volumes3d(p, {{0, 1, 2, 3}});
   ASSERT_EQ(r.edges.size(), 6u);
   for (std::size_t e = 0; e < r.edges.size(); ++e)
     EXPECT_EQ(r.signs[e], r.edges[e][0] == 0 ? 1 : -1) << "edge " << r.edges[e][0] << "-" << r.edges[e][1];
   EXPECT_EQ(r.exact_evaluations, 0);
 }
 
-TEST(DualAreaSigns, InvertedOrFlatTetIsInvalidInput) {
+TEST(ControlVolumes3D, InvertedOrFlatTetIsInvalidInput) {
   std::vector<Point3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}};
-  EXPECT_THROW(dual_area_signs(p, {{0, 2, 1, 3}}), InvalidInput);
-  EXPECT_THROW(dual_area_signs(p, {{0, 1, 2, 4}}), InvalidInput);
-  EXPECT_THROW(dual_area_signs(p, {{0, 1, 2, 5}}), InvalidInput);
+  EXPECT_THROW(control_volumes3d(p, {{0, 2, 1, 3}}), InvalidInput);
+  EXPECT_THROW(control_volumes3d(p, {{0, 1, 2, 4}}), InvalidInput);
+  EXPECT_THROW(control_volumes3d(p, {{0, 1, 2, 5}}), InvalidInput);
 }
 
-TEST(DualAreaSigns, FarFromTheOriginTheSignsAreUnchanged) {
+TEST(ControlVolumes3D, FarFromTheOriginTheSignsAreUnchanged) {
   // Translating by 2^40 keeps every coordinate exact, so the exact signs must not move.
   auto p = cube_points();
   auto tets = kuhn_tets(p);
-  auto near = dual_area_signs(p, tets);
+  auto near = control_volumes3d(p, tets);
   for (auto& q : p) q = {q.x + std::ldexp(1.0, 40), q.y - std::ldexp(1.0, 40), q.z + std::ldexp(1.0, 40)};
-  auto far = dual_area_signs(p, tets);
+  auto far = control_volumes3d(p, tets);
   EXPECT_EQ(near.signs, far.signs);
   EXPECT_EQ(near.edges, far.edges);
 }

@@ -12,19 +12,28 @@ namespace nonobtuse {
 // that contain e, C_T the circumcenter of T (the per-tet decomposition of LaGriT and FEHM). Its signed area A_e,
 // measured along i -> j, is the sum of the pieces; the coupling coefficient is A_e / |e| and the matrix entry is
 // -A_e / |e|, so the control-volume matrix is an M-matrix exactly when every A_e >= 0.
-struct DualAreaSigns {
-  std::vector<Segment> edges;  // every edge of the mesh, (a, b) with a < b, sorted
-  std::vector<int> signs;      // exact sign of A_e: -1, 0 or +1, one per edge
-  int exact_evaluations = 0;   // edges the interval filter could not decide (evaluated exactly)
+struct ControlVolumes3D {
+  std::vector<Segment> edges;       // every edge of the mesh, (a, b) with a < b, sorted
+  std::vector<int> signs;           // exact sign of A_e: -1, 0 or +1, one per edge
+  std::vector<double> dual_areas;   // A_e: the exact sign times the floating-point magnitude (0.0 where exactly 0)
+  std::vector<double> lengths;      // |e|
+  std::vector<double> volumes;      // per point: its Voronoi cell clipped to the mesh (0 for unused points)
+  int exact_evaluations = 0;        // edges the interval filter could not decide (evaluated exactly)
+  long flat_in_floating_point = 0;  // tets whose circumcenter denominator (b-a).((c-a)x(d-a)) is 0 in doubles
 };
 
 // The exact sign of every dual area A_e. sign(A_e) = sign(sum over T of ((C_f1 - M) x (C_T - M) +
 // (C_T - M) x (C_f2 - M)) . (j - i)), the circumcenters taken as exact rational functions of the coordinates as
 // stored: evaluated in interval arithmetic and, when the interval contains 0, exactly (multiprecision floating
 // point, no division: the pieces are put over one positive common denominator).
+// The magnitudes are floating point: each tet's piece of A_e from the circumcenters in doubles, summed over the
+// tets around e in tet order; a vertex's volume is the sum over its tets (in order) of the pyramids piece * |e| / 6
+// over the pieces of its edges. A tet that is flat in doubles gives NaN pieces (counted in
+// flat_in_floating_point). The arithmetic is the one of nonobtuse.mesh3d.control_volumes3d's numpy formulas,
+// operation for operation.
 // tets: indices into points, each positively oriented (CGAL orientation, exact); InvalidInput on an index out
 // of range or a tet that is not positively oriented (flat or inverted), naming the tet and its vertices.
 // Cost: O(t log t) for t tets (the sort of the 6 t edge pieces), plus exact arithmetic for undecided edges only.
-DualAreaSigns dual_area_signs(const std::vector<Point3>& points, const std::vector<std::array<int, 4>>& tets);
+ControlVolumes3D control_volumes3d(const std::vector<Point3>& points, const std::vector<std::array<int, 4>>& tets);
 
 }  // namespace nonobtuse

@@ -113,7 +113,7 @@ def _picture_outputs(args: argparse.Namespace) -> list[Path]:
 
 def run_check3d(args: argparse.Namespace) -> int:
     from nonobtuse.cli.text3d import check3d_text
-    from nonobtuse.mesh3d import boundary_certificate, load_plc, tetrahedralize
+    from nonobtuse.mesh3d import boundary_certificate, check_gabriel, load_plc, tetrahedralize
 
     guards.refuse_overwriting(_files_read(args.input), _picture_outputs(args))
     plc = load_plc(args.input)
@@ -122,12 +122,11 @@ def run_check3d(args: argparse.Namespace) -> int:
                    f"({args.backend})")
     mesh = tetrahedralize(plc, args.backend)
     progress.done(f"{len(mesh.tets):,} tets; checking {len(mesh.boundary_faces):,} boundary faces exactly")
-    summary = {"input": args.input, "backend": args.backend, **boundary_certificate(mesh)}
+    report = check_gabriel(mesh)  # the one exact check: the summary and the pictures read it
+    summary = {"input": args.input, "backend": args.backend, **boundary_certificate(mesh, report)}
     _print(summary, args, lambda: check3d_text(summary))
     if args.plot or args.offenders:
-        from nonobtuse.mesh3d import check_gabriel
-
-        _pictures(args, [("mesh", mesh, check_gabriel(mesh))])
+        _pictures(args, [("mesh", mesh, report)])
     gabriel = summary["encroached_facets"] == 0 and summary["encroached_segments"] == 0
     return EXIT_OK if gabriel else EXIT_VIOLATIONS
 

@@ -161,13 +161,15 @@ def check_gabriel(mesh: TetMesh) -> GabrielReport:
     return GabrielReport._from_core(d, len(faces), len(segments))
 
 
-def boundary_certificate(mesh: TetMesh) -> dict[str, Any]:
+def boundary_certificate(mesh: TetMesh, report: GabrielReport | None = None) -> dict[str, Any]:
     """What ``nonobtuse check3d`` reports of a tetrahedral mesh, JSON-ready: points, tets, boundary_faces
     (counts), steiner_points (from mesh.stats; None when the mesh does not say), encroached_facets,
-    encroached_segments (the exact :func:`check_gabriel`), gabriel (its ``to_dict()``) and control_volumes
-    (:func:`control_volume_summary`) and warnings (from mesh.stats, e.g. orientation). The mesh is Gabriel
-    iff both encroached counts are 0. Cost: check_gabriel plus the control volumes, near-linear."""
-    report = check_gabriel(mesh)
+    encroached_segments (the exact :func:`check_gabriel`, or ``report`` when given: it must be that check of
+    this mesh, e.g. to draw the same offenders without checking twice), gabriel (its ``to_dict()``) and
+    control_volumes (:func:`control_volume_summary`) and warnings (from mesh.stats, e.g. orientation). The
+    mesh is Gabriel iff both encroached counts are 0. Cost: check_gabriel plus the control volumes,
+    near-linear."""
+    report = check_gabriel(mesh) if report is None else report
     return {"points": len(mesh.points), "tets": len(mesh.tets), "boundary_faces": len(mesh.boundary_faces),
             "steiner_points": mesh.stats.get("steiner_points"), "encroached_facets": len(report.faces),
             "encroached_segments": len(report.segments), "gabriel": report.to_dict(),
@@ -191,16 +193,14 @@ def control_volume_summary(mesh: TetMesh) -> dict[str, Any]:
     float64). ``flat_in_floating_point``: tets whose volume is positive (exact orientation) but 0 in floating
     point; their circumcentres cannot be computed, so min_coupling and total_volume are then None when not
     finite, and negative_couplings counts the other edges only."""
-    from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes
-
     e = power_of_two_exponent(mesh.points)
     scaled = replace(mesh, points=np.ldexp(np.asarray(mesh.points, dtype=np.float64), -e))
+    cv = control_volumes3d(scaled)
     with np.errstate(all="ignore"):  # flat tets give NaN, counted below
-        summary = control_volumes3d(scaled).to_dict()
-        flat = int((signed_tet_volumes(scaled.points, np.asarray(scaled.tets).reshape(-1, 4)) == 0).sum())
+        summary = cv.to_dict()
+    summary["flat_in_floating_point"] = cv.flat_in_floating_point
     summary["min_coupling"] = _ldexp_or_none(summary["min_coupling"], e)
     summary["total_volume"] = _ldexp_or_none(summary["total_volume"], 3 * e)
-    summary["flat_in_floating_point"] = flat
     return summary
 
 
