@@ -194,19 +194,15 @@ def refine_quality3d(
         surface, interior = refiner.split_mesh(mesh)
         mesh, rows, centers, high, passed = refiner.interior_pass(mesh, budget - len(interior), stand_ins,
                                                                   tetgen_points)
-        if passed == "not_conforming" and len(tetgen_points):  # the repair tetrahedralizes them instead
-            g = refiner.repair(surface, tetgen_points)
-            status, stop, tetgen_points = g.status, g.stats["diagnosis"]["stop_reason"], tetgen_points[:0]
+        placed, dropped = tetgen_points, stand_ins  # this pass's only: the next builds without them
+        tetgen_points, stand_ins = tetgen_points[:0], stand_ins[:0]
+        if passed == "not_conforming" and (len(placed) or len(dropped)):
+            # with TetGen's points placed, or without the stand-ins, a subfacet is no Delaunay face
+            # (cospherical points): the repair tetrahedralizes the interior points, stand-ins dropped, instead
+            g = refiner.repair(surface, np.concatenate([refiner.split_mesh(mesh, drop=dropped)[1], placed]))
+            status, stop = g.status, g.stats["diagnosis"]["stop_reason"]
             mesh = g.mesh if status == "converged" else mesh
             continue
-        tetgen_points = tetgen_points[:0]
-        if passed == "not_conforming" and len(stand_ins):
-            # without the stand-ins a subfacet is no Delaunay face (cospherical points): a repair drops them
-            g = refiner.repair(surface, refiner.split_mesh(mesh, drop=stand_ins)[1])
-            status, stop, stand_ins = g.status, g.stats["diagnosis"]["stop_reason"], stand_ins[:0]
-            mesh = g.mesh if status == "converged" else mesh
-            continue
-        stand_ins = stand_ins[:0]
         surface, interior = refiner.split_mesh(mesh)
         on_interior = refiner.closed_hits(surface, interior)
         if passed == "not_conforming":  # cospherical points: the round goes through the boundary repair
