@@ -1,0 +1,235 @@
+"""The rounds of :func:`~nonobtuse.mesh3d.quality3d.refine_quality3d`: tet shape measures, the interior
+pass (``_core.refine_interior``), the boundary repair (:func:`refine_gabriel`) with interior points, and the
+points that stand for circumcenters blocked by a diametral sphere."""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Mapping
+from dataclasses import replace
+from typing import Any
+
+import numpy as np
+from scipy.spatial import cKDTree
+
+from nonobtuse import _core
+from nonobtuse.errors import InvalidInputError
+from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes, tet_circumcenters
+from nonobtuse.mesh3d.gabriel import refine_gabriel
+from nonobtuse.mesh3d.plc import PLC, TetMesh
+
+
+def tet_circumspheres(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Circumcenters (t, 3) (:func:`~nonobtuse.mesh3d.control_volumes3d.tet_circumcenters`), circumradii (t,)
+    and volumes (t,) of tets (t, 4) int64 over points (n, 3) float64 (positively oriented tets give positive
+    volumes). Floating point; a flat tet gives inf or NaN."""
+    p = points[tets]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        centers = tet_circumcenters(p[:, 0], p[:, 1], p[:, 2], p[:, 3])
+        radius = np.sqrt(((centers - p[:, 0]) ** 2).sum(1))
+    return centers, radius, signed_tet_volumes(points, tets)
+
+
+def shortest_edges(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
+    """The shortest edge length (t,) of each tet (t, 4) over points (n, 3)."""
+    pairs = [(0, 1), (0, 2), (0, 3), (1, 2), (1, 3), (2, 3)]
+    d2 = np.stack([((points[tets[:, i]] - points[tets[:, j]]) ** 2).sum(1) for i, j in pairs])
+    return np.sqrt(d2.min(0))
+
+
+def tet_quality(mesh: TetMesh) -> dict[str, Any]:
+    """Shape and size of mesh.tets, floating point: tets, worst_radius_edge (circumradius over shortest edge;
+    a regular tet has 0.612), max_volume, min_volume, and radius_edge_over_2 (the fraction of tets above
+    2)."""
+    tets = np.asarray(mesh.tets, dtype=np.int64).reshape(-1, 4)
+    if not len(tets):
+        return {"tets": 0, "worst_radius_edge": None, "max_volume": None, "min_volume": None,
+                "radius_edge_over_2": None}
+    _, radius, volume = tet_circumspheres(np.asarray(mesh.points, dtype=np.float64), tets)
+    ratio = radius / shortest_edges(np.asarray(mesh.points, dtype=np.float64), tets)
+    return {"tets": len(tets), "worst_radius_edge": float(ratio.max()), "max_volume": float(volume.max()),
+            "min_volume": float(volume.min()), "radius_edge_over_2": float((ratio > 2.0).mean())}
+
+
+
+class InteriorRefiner:
+    """The input PLC, the bounds and the limits shared by the rounds of refine_quality3d."""
+
+    def __init__(self, plc: PLC, max_volume: Any, radius_edge: float | None, time_limit: float,
+                 started: float, gabriel_options: dict[str, Any]) -> None:
+        self.plc, self.max_volume, self.radius_edge = plc, max_volume, radius_edge
+        self.time_limit, self.started, self.gabriel_options = time_limit, started, gabriel_options
+        self.inserted = 0  # circumcenters the interior passes inserted
+
+    def repair(self, surface: PLC, interior: np.ndarray, share: float = 1.0) -> Any:
+        """refine_gabriel of `surface` with `interior` (k, 3) as isolated points (after surface's points),
+        within `share` of the time left."""
+        points = np.concatenate([surface.points, np.asarray(interior, dtype=np.float64).reshape(-1, 3)])
+        plc = replace(self.plc, points=points, triangles=surface.triangles, facet_ids=surface.facet_ids,
+                      segments=surface.segments)
+        left = self.time_limit - (time.perf_counter() - self.started)
+        return refine_gabriel(plc, time_limit=max(0.0, share * left), control_volumes=False,
+                              **self.gabriel_options)
+
+    def split_mesh(self, mesh: TetMesh, drop: np.ndarray | None = None) -> tuple[PLC, np.ndarray]:
+        """The surface PLC of `mesh` (the input points, then the other vertices of its subfacets and
+        subsegments, in mesh order; its subfacets as triangles with their facet ids; its subsegments) and its
+        other points (k, 3), the interior points, in mesh order, but the rows `drop` of mesh.points."""
+        on = np.zeros(len(mesh.points), dtype=bool)
+        on[: len(self.plc.points)] = True
+        on[np.asarray(mesh.boundary_faces, dtype=np.int64).ravel()] = True
+        on[np.asarray(mesh.segments, dtype=np.int64).ravel()] = True
+        renumber = np.cumsum(on) - 1
+        faces = renumber[np.asarray(mesh.boundary_faces, dtype=np.int64)]
+        segments = renumber[np.asarray(mesh.segments, dtype=np.int64).reshape(-1, 2)]
+        surface = replace(self.plc, points=mesh.points[on], triangles=faces,
+                          facet_ids=np.asarray(mesh.face_facets, dtype=np.int64), segments=segments)
+        inner = ~on
+        inner[np.asarray([] if drop is None else drop, dtype=np.int64)] = False
+        return surface, mesh.points[inner]
+
+    @staticmethod
+    def closed_hits(surface: PLC, candidates: np.ndarray) -> np.ndarray:
+        """True for each candidate (k, 3) in a closed diametral sphere of a subfacet or subsegment (exact)."""
+        face, segment = _core.closed_diametral_sphere_hits(
+            np.ascontiguousarray(surface.points, dtype=np.float64),
+            np.ascontiguousarray(surface.triangles, dtype=np.int64),
+            np.ascontiguousarray(surface.segments, dtype=np.int64).reshape(-1, 2),
+            np.ascontiguousarray(candidates, dtype=np.float64).reshape(-1, 3))
+        return (face >= 0) | (segment >= 0)
+
+    def tetgen_points(self, surface: PLC, switches: str, stats: dict[str, Any]) -> np.ndarray:
+        """TetGen's interior points (``switches`` with -Y: the boundary is kept) on `surface`, without those
+        in a closed diametral sphere; none when TetGen is not installed or fails (stats["tetgen"] says
+        why)."""
+        from nonobtuse.mesh3d.tetrahedralize import tetrahedralize
+
+        try:
+            tm = tetrahedralize(surface, "tetgen", switches=switches)
+        except (ModuleNotFoundError, InvalidInputError) as e:
+            stats["tetgen"] = f"not used: {e}"
+            return np.zeros((0, 3))
+        extra = np.asarray(tm.points[len(surface.points):], dtype=np.float64)
+        keep = ~self.closed_hits(surface, extra)
+        stats.update(tetgen=switches, tetgen_points=len(extra), tetgen_points_dropped=int((~keep).sum()))
+        return extra[keep]
+
+    @staticmethod
+    def region_labels(mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
+        """The region attributes (a,) of mesh (1.0 for every tet without regions) and each tet's index (t,)
+        among them."""
+        regions = np.ones(len(mesh.tets)) if mesh.tet_regions is None else np.asarray(mesh.tet_regions)
+        attrs, labels = np.unique(np.asarray(regions, dtype=np.float64), return_inverse=True)
+        return attrs, labels.ravel().astype(np.int64)
+
+    def volume_bounds_of(self, attrs: np.ndarray) -> np.ndarray:
+        """The volume bound (a,) of each region attribute: inf where none. A mapping's key None is the bound
+        everywhere."""
+        if self.max_volume is None:
+            return np.full(len(attrs), np.inf)
+        if not isinstance(self.max_volume, Mapping):
+            return np.full(len(attrs), float(self.max_volume))
+        everywhere = self.max_volume.get(None, math.inf)
+        return np.array([min(everywhere, self.max_volume.get(a, math.inf)) for a in attrs.tolist()],
+                        dtype=np.float64).reshape(-1)
+
+    def volume_bounds(self, mesh: TetMesh) -> np.ndarray:
+        """The volume bound (t,) of each tet: inf where none."""
+        attrs, labels = self.region_labels(mesh)
+        return self.volume_bounds_of(attrs)[labels]
+
+    def interior_pass(self, mesh: TetMesh, budget: int, remove: np.ndarray | None = None,
+                      insert: np.ndarray | None = None
+                      ) -> tuple[TetMesh, np.ndarray, np.ndarray, np.ndarray, str]:
+        """Circumcenters of the tets of `mesh` (a Gabriel boundary) over a bound inserted into its Delaunay
+        tetrahedralization one by one, the boundary fixed (``_core.refine_interior``: each strictly outside
+        every closed diametral sphere, in the domain, exact), at most `budget` of them within the time left,
+        after removing the interior points `remove` (rows of mesh.points: the stand-ins a split repair saw;
+        removing a point keeps every diametral sphere as empty as it was) and placing the points `insert`
+        (k, 3; each strictly outside every closed diametral sphere and in the domain, exact, else dropped).
+        Returns the mesh (its later points
+        renumbered past the removed ones), the rows (k,) of its tets still over a bound with their
+        circumcenters (k, 3) and stand-ins (k, 3: a point strictly inside the diametral sphere that holds the
+        center, high above its subfacet or subsegment, strictly inside a domain tet; NaN where none), and the
+        pass's status ("converged", "blocked", "budget_exhausted", or "not_conforming": a subfacet or
+        subsegment is no Delaunay face or edge, before or after the removal, `mesh` returned unchanged with no
+        rows)."""
+        remove = np.unique(np.asarray([] if remove is None else remove, dtype=np.int64))
+        attrs, labels = self.region_labels(mesh)
+        left = self.time_limit - (time.perf_counter() - self.started)
+        r = _core.refine_interior(
+            np.ascontiguousarray(mesh.points, dtype=np.float64),
+            np.ascontiguousarray(mesh.tets, dtype=np.int64), labels,
+            np.ascontiguousarray(mesh.boundary_faces, dtype=np.int64),
+            np.ascontiguousarray(mesh.segments, dtype=np.int64).reshape(-1, 2),
+            float(self.radius_edge or 0.0), self.volume_bounds_of(attrs), max(0, int(budget)), max(0.0, left),
+            remove, np.zeros((0, 3)) if insert is None else np.ascontiguousarray(insert, dtype=np.float64))
+        self.inserted += r.inserted
+        if r.status == "not_conforming":
+            return mesh, np.zeros(0, dtype=np.int64), np.zeros((0, 3)), np.zeros((0, 3)), r.status
+        regions = None if mesh.tet_regions is None else attrs[r.tet_labels]
+
+        def renumbered(rows: Any) -> np.ndarray:  # indices of the points kept, past the removed ones
+            rows = np.asarray(rows, dtype=np.int64)
+            return rows - np.searchsorted(remove, rows)
+
+        grown = replace(mesh, points=r.points, tets=np.asarray(r.tets, dtype=np.int64), tet_regions=regions,
+                        boundary_faces=renumbered(mesh.boundary_faces),
+                        segments=renumbered(mesh.segments).reshape(-1, 2))
+        return (grown, np.asarray(r.blocked_rows, dtype=np.int64), np.asarray(r.blocked_centers),
+                np.asarray(r.stand_ins), r.status)
+
+    def bad_tets(self, mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
+        """Rows of mesh.tets over a bound, most skewed first, and their circumcenters (floating point)."""
+        tets = np.asarray(mesh.tets, dtype=np.int64).reshape(-1, 4)
+        centers, radius, volume = tet_circumspheres(mesh.points, tets)
+        ratio = radius / shortest_edges(mesh.points, tets)
+        over = volume > self.volume_bounds(mesh)
+        if self.radius_edge is not None:
+            over |= ratio > self.radius_edge
+        bad = np.flatnonzero(over)
+        bad = bad[np.argsort(-ratio[bad], kind="stable")]
+        return bad, centers[bad]
+
+    @staticmethod
+    def independent_centers(mesh: TetMesh, tets: np.ndarray,
+                            centers: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """The rows (k,) and circumcenters (k, 3) of rows `tets` (in order) taken one by one as Bowyer-Watson
+        would still see their tets: a center is skipped when a center taken before it lies inside its tet's
+        circumsphere. Each kept center is then at least its tet's circumradius from every point: the spacing
+        the termination argument of refine_quality3d needs."""
+        if not len(tets):
+            return tets, np.zeros((0, 3))
+        radius = tet_circumspheres(mesh.points, np.asarray(mesh.tets, dtype=np.int64)[tets])[1]
+        tree = cKDTree(centers)
+        taken = np.zeros(len(centers), dtype=bool)
+        for i in range(len(centers)):
+            if not taken[tree.query_ball_point(centers[i], radius[i])].any():
+                taken[i] = True
+        return tets[taken], centers[taken]
+
+    def stand_ins(self, mesh: TetMesh, tets: np.ndarray, centers: np.ndarray,
+                  surface: PLC) -> tuple[np.ndarray, np.ndarray]:
+        """For the rows `tets` whose circumcenters (`centers`) lie in a closed diametral sphere: points that
+        stand for them, strictly inside the tet (exact orient3d; so in the domain and on no facet or segment,
+        where a circumcenter can lie): the first of centroid + (center - centroid) 2^-k, k = 1..8, inside the
+        tet. Returns (triggers: those in a closed diametral sphere, for the boundary repair to split what they
+        encroach; free: those in none, inserted instead of the center). Floating-point points, exact tests."""
+        tets = np.asarray(mesh.tets, dtype=np.int64)[tets]
+        centroid = mesh.points[tets].mean(axis=1)
+        centers = np.where(np.isfinite(centers).all(axis=1)[:, None], centers, centroid)  # a sliver's is inf
+        found = np.zeros(len(tets), dtype=bool)
+        out = np.zeros((len(tets), 3))
+        faces = np.array([[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]])  # outward faces of a positive tet
+        for k in range(1, 9):
+            p = centroid + (centers - centroid) * 2.0**-k
+            points = np.concatenate([mesh.points, p])
+            quads = np.column_stack([tets[:, faces].reshape(-1, 3),
+                                     np.repeat(len(mesh.points) + np.arange(len(p)), 4)])
+            # p is strictly inside iff it is strictly on the inner side of every face
+            new = ~found & (_core.plc_orient3d(points, quads).reshape(-1, 4) < 0).all(axis=1)
+            out[new], found[new] = p[new], True
+        out = out[found]
+        hit = self.closed_hits(surface, out)
+        return out[hit], out[~hit]
