@@ -353,15 +353,19 @@ def build(out: Path) -> list[Path]:
 
 
 def refine_table(paths: list[Path]) -> str:
-    """Markdown table of the default refine_gabriel on each file: status, points, Steiner points, seconds."""
+    """Markdown table of the default refine_gabriel on each file: status (with the strategy when it is not the
+    first pass's), points, Steiner points, work units, seconds."""
     from nonobtuse.mesh3d import load_plc, refine_gabriel
 
-    rows = ["| file | input points | status | Steiner points | seconds |", "| --- | --- | --- | --- | --- |"]
+    rows = ["| file | input points | status | Steiner points | work units | seconds |",
+            "| --- | --- | --- | --- | --- | --- |"]
     for path in paths:
         plc = load_plc(path)
         result = refine_gabriel(plc)
-        rows.append(f"| {path.name} | {len(plc.points)} | {result.status} | "
-                    f"{result.stats['steiner_points']:,} | {result.stats['seconds']:.1f} |")
+        stats = result.stats
+        strategy = f" ({stats['strategy']})" if stats["strategy"] != "shells" else ""
+        rows.append(f"| {path.name} | {len(plc.points)} | {result.status}{strategy} | "
+                    f"{stats['steiner_points']:,} | {stats['work']:,} | {stats['seconds']:.1f} |")
         print(rows[-1], flush=True)
     return "\n".join(rows) + "\n"
 

@@ -115,3 +115,23 @@ def test_gyroid_converges_past_cospherical_circumcenters():
     res = refine_gabriel(plc, split="protected")
     assert_certified(res, plc)
     assert closest_pair(res.mesh.points) >= res.stats["min_length"]
+
+
+def test_protecting_ball_below_min_length_is_a_diagnosed_stop():
+    # min_length above every protecting radius (<= lfs / 4 < the box's extent / 4): the first point where a
+    # segment leaves a ball would make an edge shorter than min_length; the run says so and places nothing.
+    plc = make_plc("segment_facet", 5.0)
+    extent = float(np.linalg.norm(plc.points.max(axis=0) - plc.points.min(axis=0)))
+    res = refine_gabriel(plc, split="protected", min_length=extent / 4)
+    assert res.status == "min_length_reached"
+    assert res.stats["protecting_balls"] > 0 and res.stats["steiner_points"] == 0
+    assert "leaves a protecting ball" in res.stats["diagnosis"]["stop_reason"]
+
+
+def test_step_off_names_the_protecting_ball_below_min_length():
+    path = DATA / "step.off"
+    if not path.exists():
+        pytest.skip("../shared/data not present")
+    res = refine_gabriel(load_plc(path), split="protected")
+    assert res.status == "min_length_reached"
+    assert "leaves a protecting ball" in res.stats["diagnosis"]["stop_reason"]

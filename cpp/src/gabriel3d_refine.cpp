@@ -165,6 +165,7 @@ std::optional<Stop> Refiner::too_close(const P3& p, int* near) const {
     if (stop) return;
     stop = too_short(p, s_.points[i]);
     if (stop && near) *near = i;
+    if (stop) stop->reason += ": a new point within min_length of vertex " + std::to_string(i);
   });
   return stop;
 }
@@ -313,6 +314,10 @@ std::optional<Stop> Refiner::place_protecting_points() {
     if (!stop) stop = budget_left();
     if (!stop) stop = too_short(s_.points[from], m);
     if (!stop) stop = too_short(m, s_.points[to]);
+    if (stop && stop->status == RefineStatus::MinLengthReached)  // a diagnosable input, not a cascade
+      stop->reason += ": where input segment (" + std::to_string(from) + ", " + std::to_string(to) +
+                      ") leaves a protecting ball, whose radius (a power of two <= lfs / 4 at its apex) or the rest "
+                      "of the segment is below min_length; a smaller min_length lets it through";
     if (stop || s_.at.count({m.x(), m.y(), m.z()})) return -1;
     const int id = split_subsegment(s_, from, to, t, m);
     segment_sphere_points_.insert(id);
