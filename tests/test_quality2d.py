@@ -182,3 +182,30 @@ def test_region_areas_from_the_poly_region_list(tmp_path, capsys) -> None:
     plain = Domain(points=d.points, segments=d.segments, regions=d.regions)
     with pytest.raises(InvalidInputError, match="no region of the domain gives a maximum area"):
         nonobtuse.refine(plain, size="regions")
+
+
+def square_with_sharp_hole(seed: int, tip_degrees: float) -> Domain:
+    """A 100 x 100 square with a triangular hole whose tip angle is tip_degrees (the other two corners share
+    the rest), of size 15-30, rotated and placed at random inside: every angle of the domain is 90 degrees or
+    reflex, the hole's small corner lies outside the domain."""
+    rng = np.random.default_rng(seed)
+    size, turn = rng.uniform(15, 30), rng.uniform(0, 2 * np.pi)
+    half = np.radians(tip_degrees) / 2
+    local = np.array([[0, 0], [size * np.cos(half), size * np.sin(half)],
+                      [size * np.cos(half), -size * np.sin(half)]])
+    rot = np.array([[np.cos(turn), -np.sin(turn)], [np.sin(turn), np.cos(turn)]])
+    hole = local @ rot.T + rng.uniform(35, 65, 2)
+    pts = np.r_[[[0, 0], [100, 0], [100, 100], [0, 100]], hole]
+    return Domain(points=pts, segments=loop(4) + [(4, 5), (5, 6), (6, 4)], holes=[hole.mean(axis=0)])
+
+
+@settings(max_examples=12, deadline=30000, derandomize=True)
+@given(seed=st.integers(0, 2**32 - 1), tip=st.floats(10.0, 55.0), min_angle=st.sampled_from([25.0, 30.0]))
+def test_a_hole_corner_is_no_small_input_angle(seed: int, tip: float, min_angle: float) -> None:
+    """Only angles with the domain inside are small input angles: beside a sharp hole every triangle reaches
+    the bound and none is left alone."""
+    res = nonobtuse.refine(square_with_sharp_hole(seed, tip), min_angle=min_angle)
+    assert res.status == "converged"
+    check_quality(res, min_angle)
+    assert res.stats["quality"]["small_angle_triangles"] == 0
+    assert smallest_angles(res.mesh).min() >= min_angle - 1e-9

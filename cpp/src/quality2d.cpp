@@ -4,10 +4,13 @@
 // A bad triangle (smallest angle below the bound, or area above the limit at its place) gets a new vertex c: its
 // circumcenter, or the off-center of its shortest edge pq (Triangle, after Ungor: the point on pq's bisector at
 // height 0.475 cot(bound / 2) |pq|, whose triangle with pq has an angle just above the bound) when that is nearer
-// to pq. c goes in only if it lies in no closed diametral disk of a constraint subsegment it sees (exact:
-// CGAL::angle(s, c, e) != ACUTE for the constrained edges bounding c's Delaunay cavity, and for the first
-// constraint crossed on the way from the triangle to c: the triangle's circumdisk holds no vertex it sees, so a c
-// behind a subsegment lies in that subsegment's diametral disk, Ruppert's lemma). Otherwise the subsegment is
+// to pq. c goes in only if it lies in no open diametral disk of a constraint subsegment bounding its Delaunay
+// cavity (exact: CGAL::angle(s, c, e) == OBTUSE; a c on the circle makes a right apex, which the certificate
+// allows, as Triangle -D's encroachment test does: measured on bench_quality2d, the closed disk split face.poly's
+// subsegments for circumcenters on their circles, 46 boundary points against Triangle's 42, 42 with the open one)
+// and, when a constraint is crossed on the way from the triangle to c, not in that constraint's closed diametral
+// disk (the triangle's circumdisk holds no vertex it sees, so a c behind a subsegment lies in that subsegment's
+// diametral disk, Ruppert's lemma; c goes in nowhere then). Otherwise the subsegment is
 // split at its midpoint (or a concentric shell at an acute input angle), and so is every boundary side the split
 // leaves obtuse (Ruppert's encroachment splits; the greedy rule takes a side no such point fixes). Midpoints keep
 // the boundary spacing even: greedy repairs, optimal for the boundary alone, left short subsegments that the
@@ -23,9 +26,9 @@
 // 1.03x, la 1.49x -> 1.02x). Sides on input edges with an input angle below 60 degrees at an end are left to the
 // greedy rule in that first pass (midpoints and shells spent the whole budget at p2t_deadly_quad's 0.17 degrees). Splitting at the foot of the obtuse apex (clamped to the middle half) instead of the
 // midpoint was measured too: max 1.28x (clusters) but the demo at 30 degrees 1.18x and more boundary points;
-// midpoints kept. Each new interior vertex has all
-// the constrained edges of its cavity outside its closed disk, so every triangle it makes on a subsegment has an
-// acute apex: interior points never make a boundary side obtuse, and the certificate of refine2d.cpp still holds.
+// midpoints kept. Each new interior vertex is outside the open diametral disk of every constrained edge of its
+// cavity, so every triangle it makes on a subsegment has an acute or right apex: interior points never make a
+// boundary side obtuse, and the certificate of refine2d.cpp still holds.
 //
 // Before a skinny triangle's encroachment splits a subsegment, one more point is tried: the point of its selection
 // disk (Chernikov and Chrisochoides 2006: centered at the circumcenter, radius R - l / (2 sin bound)) farthest
@@ -333,7 +336,8 @@ class QualityRefiner {
     return nullptr;
   }
 
-  // The constraint sides (domain face on the left) whose closed diametral disk holds c and that c sees from f.
+  // The constraint sides (domain face on the left) that c would encroach from f: those bounding c's Delaunay cavity
+  // whose open diametral disk holds c, or the first constraint crossed on the way to c (its closed disk holds c).
   std::vector<Side> encroached_by(Face_handle f, const Point& c, bool& ok) const {
     std::vector<Side> out;
     Side blocked;
@@ -356,7 +360,7 @@ class QualityRefiner {
     for (const auto& [g, j] : boundary) {
       if (!g->is_constrained(j)) continue;
       const Side sd{g->vertex(CDT::cw(j)), g->vertex(CDT::ccw(j))};  // the cavity's face is on this side's left
-      if (in_closed_disk(sd)) out.push_back(sd);
+      if (CGAL::angle(sd.s->point(), c, sd.e->point()) == CGAL::OBTUSE) out.push_back(sd);
     }
     return out;
   }

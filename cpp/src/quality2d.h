@@ -11,7 +11,7 @@ namespace nonobtuse::refine2d {
 Vertex_handle insert_interior(State& st, const Point& p, Face_handle located);
 
 // Ruppert/Chew refinement of the domain's bad triangles (see Quality2DOptions). First every boundary side with an
-// obtuse apex is split (midpoint or shell; nothing when a strategy already refined the boundary), then circumcenters or off-centers go in unless they lie in the closed diametral disk of
+// obtuse apex is split (midpoint or shell; nothing when a strategy already refined the boundary), then circumcenters or off-centers go in unless they lie in the open diametral disk of
 // a constraint subsegment they would see (for a skinny triangle, the point of its selection disk farthest from
 // such subsegments is tried next); that subsegment is split instead (concentric shells at acute input
 // angles, else its midpoint), and so is every boundary side a split leaves obtuse (the greedy rule where no such

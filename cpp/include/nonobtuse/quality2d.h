@@ -1,5 +1,5 @@
 // Interior quality and size for 2D refinement: Ruppert/Chew Delaunay refinement of the domain's interior after the
-// boundary refinement, which never puts a point inside a constraint subsegment's closed diametral disk, so that the
+// boundary refinement, which never puts a point inside a constraint subsegment's open diametral disk, so that the
 // boundary stays nonobtuse (the exact certificate of refine2d.h still backs "converged").
 #pragma once
 #include <cstddef>
