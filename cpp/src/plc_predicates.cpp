@@ -116,7 +116,7 @@ std::vector<std::array<int, 2>> triangle_soup_self_intersections(const std::vect
   return out;
 }
 
-std::vector<std::array<int, 4>> delaunay_tetrahedra(const std::vector<PlcPoint>& points) {
+DelaunayFaces delaunay_faces(const std::vector<PlcPoint>& points, const std::vector<PlcTriangle>& triangles) {
   using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
   using Tds = CGAL::Triangulation_data_structure_3<Vb>;
   using DT = CGAL::Delaunay_triangulation_3<K, Tds>;
@@ -124,19 +124,26 @@ std::vector<std::array<int, 4>> delaunay_tetrahedra(const std::vector<PlcPoint>&
   pts.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) pts.emplace_back(to_cgal(points[i]), static_cast<int>(i));
   DT dt(pts.begin(), pts.end());
-  if (dt.number_of_vertices() != points.size()) {
-    std::vector<char> seen(points.size(), 0);
-    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) seen[v->info()] = 1;
-    for (std::size_t i = 0; i < points.size(); ++i)
-      if (!seen[i])
-        throw InvalidInput("point " + std::to_string(i) + " coincides with another point");
-  }
-  std::vector<std::array<int, 4>> out;
-  out.reserve(dt.number_of_finite_cells());
+  std::vector<DT::Vertex_handle> vertex(points.size());
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) vertex[v->info()] = v;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (vertex[i] == DT::Vertex_handle())
+      throw InvalidInput("point " + std::to_string(i) + " coincides with another point");
+  DelaunayFaces out;
+  out.cells.reserve(dt.number_of_finite_cells());
   for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-    out.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
-  std::sort(out.begin(), out.end());
+    out.cells.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
+  std::sort(out.cells.begin(), out.cells.end());
+  out.is_face.reserve(triangles.size());
+  DT::Cell_handle cell;
+  int i = 0, j = 0, k = 0;
+  for (const auto& t : triangles)
+    out.is_face.push_back(dt.dimension() == 3 && dt.is_facet(vertex[t[0]], vertex[t[1]], vertex[t[2]], cell, i, j, k));
   return out;
+}
+
+std::vector<std::array<int, 4>> delaunay_tetrahedra(const std::vector<PlcPoint>& points) {
+  return delaunay_faces(points, {}).cells;
 }
 
 }  // namespace nonobtuse
