@@ -8,8 +8,10 @@
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
+#include <atomic>
 #include <string>
 
+#include "fork_join.h"
 #include "nonobtuse/types.h"
 
 namespace nonobtuse {
@@ -108,11 +110,22 @@ std::vector<std::array<int, 2>> triangle_soup_self_intersections(const std::vect
     candidates.push_back({std::min(i, j), std::max(i, j)});
   });
   std::sort(candidates.begin(), candidates.end());  // deterministic order of the reported pairs
-  std::vector<std::array<int, 2>> out;
-  for (const auto& c : candidates) {
-    if (out.size() >= max_pairs) break;
-    if (triangles_intersect(p, triangles[c[0]], triangles[c[1]])) out.push_back(c);
-  }
+  // The first max_pairs intersecting candidates of each half, on two threads; the second half stops early once
+  // the first has max_pairs (they come first).
+  std::vector<std::array<int, 2>> out, after;
+  std::atomic<bool> first_full{max_pairs == 0};
+  auto test = [&](std::size_t from, std::size_t to, std::vector<std::array<int, 2>>& hits, bool second) {
+    for (std::size_t i = from; i < to && hits.size() < max_pairs && !(second && first_full); ++i) {
+      const auto& c = candidates[i];
+      if (triangles_intersect(p, triangles[c[0]], triangles[c[1]])) hits.push_back(c);
+    }
+    if (!second && hits.size() >= max_pairs) first_full = true;
+  };
+  const std::size_t half = candidates.size() / 2;
+  fork_join(worth_forking(candidates.size(), 2), [&] { test(0, half, out, false); },
+            [&] { test(half, candidates.size(), after, true); });
+  out.insert(out.end(), after.begin(), after.end());
+  if (out.size() > max_pairs) out.resize(max_pairs);
   return out;
 }
 
