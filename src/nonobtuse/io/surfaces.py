@@ -36,14 +36,15 @@ def read_off(path: Path) -> RawInput:
         pts = fast[0]
     else:
         pts = [floats(lines.next(f"vertex {i}"), 0, 3, f"vertex {i}") for i in range(nv)]
-    facets = _off_triangles(lines, nf)
-    if facets is None:
-        facets = []
-        for j in range(nf):
-            line = lines.next(f"face {j}")
-            n = line.count(0, f"the vertex count of face {j}")
-            facets.append(Facet([np.array(ints(line, 1, n, f"face {j}"), dtype=np.int64)],
-                                where=f"{line.file}:{line.number}"))
+    triangles = _off_triangles(lines, nf)
+    if triangles is not None:
+        return RawInput(points_array(pts), triangles, source=str(path))
+    facets = []
+    for j in range(nf):
+        line = lines.next(f"face {j}")
+        n = line.count(0, f"the vertex count of face {j}")
+        facets.append(Facet([np.array(ints(line, 1, n, f"face {j}"), dtype=np.int64)],
+                            where=f"{line.file}:{line.number}"))
     return RawInput(points_array(pts), facets, source=str(path))
 
 
