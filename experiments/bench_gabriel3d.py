@@ -16,7 +16,8 @@ diametral sphere) is run on the mesh produced:
 Columns: input, method, status, strategy (ours: the strategy of the returned mesh, e.g. "shells+protected"
 after a fallback), points, boundary_steiner (boundary-face vertices that are not input points), steiner (all
 output points that are not input points), boundary_faces, encroached_facets, encroached_segments ("n/a" for
-fTetWild, whose output does not mark segments), seconds. CSV to bench_gabriel3d.csv (bench_gabriel3d_quick.csv
+fTetWild, whose output does not mark segments), seconds, vs_tetgen_pq (seconds / tetgen-pq's seconds on the
+same input; refine3d's target is <= 2). CSV to bench_gabriel3d.csv (bench_gabriel3d_quick.csv
 with --quick) in --out DIR (default experiments/results), and a table on stdout.
 
 ``--scaling [FACES...]``: instead, check3d end to end (a fresh ``nonobtuse check3d --json`` process) on
@@ -48,7 +49,7 @@ from nonobtuse.mesh3d.load import PLC_SUFFIXES, SURFACE_SUFFIXES
 ROOT = Path(__file__).resolve().parents[1]
 DATA3D = ROOT / ".." / "shared" / "data" / "3d"
 COLUMNS = ["input", "method", "status", "strategy", "points", "boundary_steiner", "steiner", "boundary_faces",
-           "encroached_facets", "encroached_segments", "seconds"]
+           "encroached_facets", "encroached_segments", "seconds", "vs_tetgen_pq"]
 
 
 def measure(name: str, method: str, plc, mesh, status: str, seconds: float) -> dict[str, Any]:
@@ -130,6 +131,16 @@ def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
     rows.append(run_ours(name, plc, args.max_steiner, args.time_limit))
     rows.append(run_ours(name, plc, args.max_steiner, args.time_limit, split="greedy"))
     rows.append(run_ours(name, plc, args.max_steiner, args.time_limit, split="protected"))
+    return with_time_ratios(rows)
+
+
+def with_time_ratios(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """The rows of one input with vs_tetgen_pq: each row's seconds over the tetgen-pq row's (blank when either
+    has no time, e.g. a failed run)."""
+    pq = next((r.get("seconds") for r in rows if r["method"] == "tetgen-pq"), None)
+    for r in rows:
+        if pq and r.get("seconds") is not None:
+            r["vs_tetgen_pq"] = round(r["seconds"] / pq, 2)
     return rows
 
 

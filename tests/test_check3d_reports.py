@@ -5,12 +5,16 @@ segments, warnings), the cgal tets, the exact certificate and the control-volume
 tests/data/check3d/reports_main.json was written by :func:`reports` on main at efcd16b (regenerate with
 ``PYTHONPATH=src .venv/bin/python tests/test_check3d_reports.py OUT.json`` only when a change of results is
 intended). Exact quantities (counts, digests, which faces are encroached) must be equal; floating-point
-magnitudes (depths, min_coupling, total_volume) agree to 1e-12 relative."""
+magnitudes (depths, min_coupling, total_volume) agree to 1e-12 relative. One intended change: the
+winding-number path's volume_mesh text counted every facet as not conforming on main (its flood fill leaked,
+so no face was covered); it now counts the one-triangle facets that are not Delaunay faces, so that number is
+not compared."""
 
 from __future__ import annotations
 
 import hashlib
 import json
+import re
 import sys
 from pathlib import Path
 from typing import Any
@@ -49,7 +53,16 @@ def reports() -> dict[str, Any]:
     return {f"{p.name} {b}": report(p, b) for p in INPUTS for b in ("cgal", "tetgen")}
 
 
+NOT_CONFORMING = re.compile(r"does not conform to (at least )?\d+ of (\d+) facets \(e\.g\. facet \d+\)")
+
+
+def without_count(volume_mesh: str | None) -> str | None:
+    return volume_mesh and NOT_CONFORMING.sub(r"does not conform to some of \2 facets", volume_mesh)
+
+
 def assert_same(got: Any, want: Any, where: str) -> None:
+    if where.endswith(".volume_mesh"):
+        got, want = without_count(got), without_count(want)
     if isinstance(want, dict):
         assert sorted(got) == sorted(want), where
         for k in want:

@@ -1,5 +1,8 @@
 // 3D PLC predicates: orientation and collinearity signs, triangle-soup self-intersections, Delaunay cells.
+#include <optional>
+
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include "convert.h"
 #include "convert_plc.h"
@@ -83,19 +86,22 @@ void bind_plc(py::module_& m) {
       "casting from the query symbolically perturbed off the surface; +1 inside an outward closed surface.");
   m.def(
       "delaunay_cells_inside_surface",
-      [](const DoubleArray& points, const IndexArray& triangles) {
+      [](const DoubleArray& points, const IndexArray& triangles, const std::optional<IndexArray>& cells) {
         auto p = to_points3(points);
         auto t = to_index_rows<3>(triangles, p.size(), "triangles");
-        std::vector<std::array<int, 4>> cells;
+        std::optional<std::vector<std::array<int, 4>>> given;
+        if (cells) given = to_index_rows<4>(*cells, p.size(), "cells");
+        std::vector<std::array<int, 4>> inside;
         {
           py::gil_scoped_release release;
-          cells = delaunay_cells_inside_surface(p, t);
+          inside = given ? cells_inside_surface(p, t, *given) : delaunay_cells_inside_surface(p, t);
         }
-        return from_index_rows<4>(cells);
+        return from_index_rows<4>(inside);
       },
-      py::arg("points"), py::arg("triangles"),
-      "Cells (t, 4) int64 of delaunay_tetrahedra(points) whose centroid has a non-zero exact winding number\n"
-      "with respect to the closed oriented surface triangles (m, 3); sorted.");
+      py::arg("points"), py::arg("triangles"), py::arg("cells") = py::none(),
+      "Cells (t, 4) int64 of delaunay_tetrahedra(points) (or of the given cells (c, 4), e.g. the\n"
+      "delaunay_cells of delaunay_restricted_to_plc) whose centroid has a non-zero exact winding number with\n"
+      "respect to the closed oriented surface triangles (m, 3); sorted.");
   m.def(
       "delaunay_restricted_to_plc",
       [](const DoubleArray& points, const IndexArray& triangles, const IndexArray& facet_ids,
@@ -113,13 +119,16 @@ void bind_plc(py::module_& m) {
         d["face_markers"] = from_vector(std::vector<std::int64_t>(r.face_markers.begin(), r.face_markers.end()));
         d["uncovered_facets"] = from_vector(std::vector<std::int64_t>(r.uncovered_facets.begin(),
                                                                       r.uncovered_facets.end()));
+        d["delaunay_cells"] = from_index_rows<4>(r.delaunay_cells);
         return d;
       },
       py::arg("points"), py::arg("triangles"), py::arg("facet_ids"), py::arg("segments"), py::arg("holes"),
       py::arg("regions"),
       "The Delaunay tetrahedralization of a PLC's vertices restricted to its regions (exact flood fill across\n"
       "faces on no facet). Returns a dict: tets (t, 4), tet_regions (t,), boundary_faces (f, 3), face_markers\n"
-      "(f,), uncovered_facets (facet ids the faces do not cover; empty iff it conforms to every facet).");
+      "(f,), uncovered_facets (facet ids the faces do not cover; empty iff it conforms to every facet),\n"
+      "delaunay_cells (c, 4): for a triangle surface that does not conform, every Delaunay cell (tets etc.\n"
+      "then empty); else (0, 4).");
 }
 
 }  // namespace nonobtuse::bindings

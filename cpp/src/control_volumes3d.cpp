@@ -15,6 +15,8 @@
 #include <string>
 #include <utility>
 
+#include "fork_join.h"
+
 namespace nonobtuse {
 namespace {
 
@@ -226,20 +228,25 @@ ControlVolumes3D control_volumes3d(const std::vector<Point3>& points, const std:
   starts.push_back(pieces.size());
   const std::size_t edges = starts.size() - 1;
   out.signs.assign(edges, 0);
-  std::vector<std::size_t> undecided;
-  {
-    CGAL::Protect_FPU_rounding<true> upward;  // the rounding mode Interval_nt_advanced needs, for this block
-    for (std::size_t g = 0; g < edges; ++g) {
+  // The interval filter, the bulk of the work, on two threads (halves of the edges); the undecided edges of the
+  // first half come first, so the order (and everything after) does not depend on the split.
+  std::vector<std::size_t> undecided, undecided_after;
+  auto filter = [&](std::size_t from, std::size_t to, std::vector<std::size_t>& left) {
+    CGAL::Protect_FPU_rounding<true> upward;  // the rounding mode Interval_nt_advanced needs (per thread)
+    for (std::size_t g = from; g < to; ++g) {
       auto x = dual_area_interval(points, tets, &pieces[starts[g]], &pieces[starts[g + 1]]);
       if (x.inf() > 0) {
         out.signs[g] = 1;
       } else if (x.sup() < 0) {
         out.signs[g] = -1;
       } else {
-        undecided.push_back(g);  // contains 0, or overflowed / NaN on extreme coordinates
+        left.push_back(g);  // contains 0, or overflowed / NaN on extreme coordinates
       }
     }
-  }
+  };
+  fork_join(worth_forking(edges, 2), [&] { filter(0, edges / 2, undecided); },
+            [&] { filter(edges / 2, edges, undecided_after); });
+  undecided.insert(undecided.end(), undecided_after.begin(), undecided_after.end());
   for (std::size_t g : undecided)
     out.signs[g] = dual_area_exact_sign(points, tets, &pieces[starts[g]], &pieces[starts[g + 1]]);
   out.exact_evaluations = static_cast<int>(undecided.size());

@@ -1,10 +1,52 @@
 // The Delaunay tetrahedralization of a PLC's vertices restricted to its regions, and which facets it covers.
+#include <algorithm>
+#include <optional>
+
 #include "gabriel3d_plc.h"
 #include "nonobtuse/plc_predicates.h"
 
 namespace nonobtuse {
+namespace {
+
+// The answer for a PLC with a one-triangle facet whose triangle is not a Delaunay face, from the Delaunay
+// tetrahedralization alone: such a facet is not covered (its triangulation has that one subfacet, and the only
+// Delaunay face with its corners on it would be the triangle itself), so the tetrahedralization does not conform.
+// Nothing (the general path decides, and names any error) when there is no such facet, an index is out of range,
+// a triangle is collinear or two points coincide.
+std::optional<PlcDelaunay> one_triangle_facet_not_delaunay(const PLC3& plc) {
+  if (plc.facet_ids.size() != plc.triangles.size()) return std::nullopt;
+  std::vector<int> ids = plc.facet_ids;
+  std::sort(ids.begin(), ids.end());
+  auto alone = [&](int id) { return std::upper_bound(ids.begin(), ids.end(), id) -
+                                        std::lower_bound(ids.begin(), ids.end(), id) == 1; };
+  const long n = static_cast<long>(plc.points.size());
+  for (const auto& t : plc.triangles)
+    for (int v : t)
+      if (v < 0 || v >= n) return std::nullopt;
+  if (std::any_of(plc.triangles.begin(), plc.triangles.end(), [&](const PlcTriangle& t) {
+        using gabriel3d::to_cgal;
+        return CGAL::collinear(to_cgal(plc.points[t[0]]), to_cgal(plc.points[t[1]]), to_cgal(plc.points[t[2]]));
+      }))
+    return std::nullopt;
+  DelaunayFaces d;
+  try {
+    d = delaunay_faces(plc.points, plc.triangles);
+  } catch (const InvalidInput&) {
+    return std::nullopt;  // coincident points: build_plc_state names them
+  }
+  PlcDelaunay out;
+  for (std::size_t t = 0; t < plc.triangles.size(); ++t)
+    if (!d.is_face[t] && alone(plc.facet_ids[t])) out.uncovered_facets.push_back(plc.facet_ids[t]);
+  if (out.uncovered_facets.empty()) return std::nullopt;
+  std::sort(out.uncovered_facets.begin(), out.uncovered_facets.end());
+  out.delaunay_cells = std::move(d.cells);
+  return out;
+}
+
+}  // namespace
 
 PlcDelaunay delaunay_restricted_to_plc(const PLC3& plc) {
+  if (auto fast = one_triangle_facet_not_delaunay(plc)) return std::move(*fast);
   const gabriel3d::PlcState s = gabriel3d::build_plc_state(plc);
   gabriel3d::Restricted r = gabriel3d::restrict_delaunay(s, plc);
   std::vector<long> subfacets(s.facets.size(), 0), covered(s.facets.size(), 0);

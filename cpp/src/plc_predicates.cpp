@@ -8,8 +8,10 @@
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
+#include <atomic>
 #include <string>
 
+#include "fork_join.h"
 #include "nonobtuse/types.h"
 
 namespace nonobtuse {
@@ -108,15 +110,26 @@ std::vector<std::array<int, 2>> triangle_soup_self_intersections(const std::vect
     candidates.push_back({std::min(i, j), std::max(i, j)});
   });
   std::sort(candidates.begin(), candidates.end());  // deterministic order of the reported pairs
-  std::vector<std::array<int, 2>> out;
-  for (const auto& c : candidates) {
-    if (out.size() >= max_pairs) break;
-    if (triangles_intersect(p, triangles[c[0]], triangles[c[1]])) out.push_back(c);
-  }
+  // The first max_pairs intersecting candidates of each half, on two threads; the second half stops early once
+  // the first has max_pairs (they come first).
+  std::vector<std::array<int, 2>> out, after;
+  std::atomic<bool> first_full{max_pairs == 0};
+  auto test = [&](std::size_t from, std::size_t to, std::vector<std::array<int, 2>>& hits, bool second) {
+    for (std::size_t i = from; i < to && hits.size() < max_pairs && !(second && first_full); ++i) {
+      const auto& c = candidates[i];
+      if (triangles_intersect(p, triangles[c[0]], triangles[c[1]])) hits.push_back(c);
+    }
+    if (!second && hits.size() >= max_pairs) first_full = true;
+  };
+  const std::size_t half = candidates.size() / 2;
+  fork_join(worth_forking(candidates.size(), 2), [&] { test(0, half, out, false); },
+            [&] { test(half, candidates.size(), after, true); });
+  out.insert(out.end(), after.begin(), after.end());
+  if (out.size() > max_pairs) out.resize(max_pairs);
   return out;
 }
 
-std::vector<std::array<int, 4>> delaunay_tetrahedra(const std::vector<PlcPoint>& points) {
+DelaunayFaces delaunay_faces(const std::vector<PlcPoint>& points, const std::vector<PlcTriangle>& triangles) {
   using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
   using Tds = CGAL::Triangulation_data_structure_3<Vb>;
   using DT = CGAL::Delaunay_triangulation_3<K, Tds>;
@@ -124,19 +137,26 @@ std::vector<std::array<int, 4>> delaunay_tetrahedra(const std::vector<PlcPoint>&
   pts.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) pts.emplace_back(to_cgal(points[i]), static_cast<int>(i));
   DT dt(pts.begin(), pts.end());
-  if (dt.number_of_vertices() != points.size()) {
-    std::vector<char> seen(points.size(), 0);
-    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) seen[v->info()] = 1;
-    for (std::size_t i = 0; i < points.size(); ++i)
-      if (!seen[i])
-        throw InvalidInput("point " + std::to_string(i) + " coincides with another point");
-  }
-  std::vector<std::array<int, 4>> out;
-  out.reserve(dt.number_of_finite_cells());
+  std::vector<DT::Vertex_handle> vertex(points.size());
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) vertex[v->info()] = v;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (vertex[i] == DT::Vertex_handle())
+      throw InvalidInput("point " + std::to_string(i) + " coincides with another point");
+  DelaunayFaces out;
+  out.cells.reserve(dt.number_of_finite_cells());
   for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-    out.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
-  std::sort(out.begin(), out.end());
+    out.cells.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
+  std::sort(out.cells.begin(), out.cells.end());
+  out.is_face.reserve(triangles.size());
+  DT::Cell_handle cell;
+  int i = 0, j = 0, k = 0;
+  for (const auto& t : triangles)
+    out.is_face.push_back(dt.dimension() == 3 && dt.is_facet(vertex[t[0]], vertex[t[1]], vertex[t[2]], cell, i, j, k));
   return out;
+}
+
+std::vector<std::array<int, 4>> delaunay_tetrahedra(const std::vector<PlcPoint>& points) {
+  return delaunay_faces(points, {}).cells;
 }
 
 }  // namespace nonobtuse

@@ -182,7 +182,12 @@ std::vector<int> surface_winding_numbers(const std::vector<PlcPoint>& points,
 
 std::vector<std::array<int, 4>> delaunay_cells_inside_surface(const std::vector<PlcPoint>& points,
                                                               const std::vector<PlcTriangle>& triangles) {
-  std::vector<std::array<int, 4>> cells = delaunay_tetrahedra(points);
+  return cells_inside_surface(points, triangles, delaunay_tetrahedra(points));
+}
+
+std::vector<std::array<int, 4>> cells_inside_surface(const std::vector<PlcPoint>& points,
+                                                     const std::vector<PlcTriangle>& triangles,
+                                                     const std::vector<std::array<int, 4>>& cells) {
   const std::vector<P3> p = to_cgal(points);
   const ColumnGrid grid(p, triangles);
   std::vector<int> winding;

@@ -153,7 +153,27 @@ TEST(PlcDelaunay, ANonConformingFacetIsReported) {
     plc.triangles.push_back({i, 3 + j, 3 + i});
   }
   for (int f = 0; f < 8; ++f) plc.facet_ids.push_back(f);
-  EXPECT_FALSE(delaunay_restricted_to_plc(plc).uncovered_facets.empty());
+  PlcDelaunay d = delaunay_restricted_to_plc(plc);
+  EXPECT_FALSE(d.uncovered_facets.empty());
+  // Every facet is one triangle: the answer comes from the Delaunay tetrahedralization alone, and the uncovered
+  // facets are exactly the triangles that are not its faces.
+  EXPECT_EQ(d.delaunay_cells, delaunay_tetrahedra(plc.points));
+  EXPECT_TRUE(d.tets.empty());
+  DelaunayFaces faces = delaunay_faces(plc.points, plc.triangles);
+  std::vector<int> not_faces;
+  for (int f = 0; f < 8; ++f)
+    if (!faces.is_face[f]) not_faces.push_back(f);
+  EXPECT_EQ(d.uncovered_facets, not_faces);
+}
+
+TEST(PlcPredicates, DelaunayFacesOfABipyramid) {
+  // The triangle 0, 1, 2 in z = 0 (circumcentre near the origin, radius about 1) and the apexes 3, 4 at z = +-2,
+  // outside its diametral sphere: the Delaunay tetrahedralization is the two tets on that triangle, so the
+  // triangle is a face and a triangle through both apexes is not (the edge 3-4 would cross the triangle).
+  std::vector<PlcPoint> p = {{1, 0, 0}, {-0.5, 0.8, 0}, {-0.5, -0.8, 0}, {0, 0, 2}, {0, 0, -2}};
+  DelaunayFaces d = delaunay_faces(p, {{0, 1, 2}, {0, 1, 3}, {2, 1, 4}, {3, 4, 0}});
+  EXPECT_EQ(d.cells.size(), 2u);
+  EXPECT_EQ(d.is_face, (std::vector<char>{1, 1, 1, 0}));
 }
 
 }  // namespace

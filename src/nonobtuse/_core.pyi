@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'InteriorRefinement', 'Junction', 'Mesh2D', 'Quality2DOptions', 'Quality2DStats', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'Triangulation2', 'check_gabriel', 'classify_edges', 'closed_diametral_sphere_hits', 'conforming_gabriel_steiner_points', 'coupling_signs', 'default_interior_budget', 'default_steiner_budget', 'delaunay_cells_inside_surface', 'delaunay_restricted_to_plc', 'delaunay_tetrahedra', 'dual_area_signs', 'find_segment_intersections', 'inspect_domain', 'parse_numeric_rows', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'plc_unbalanced_edge', 'refine', 'refine_gabriel', 'refine_interior', 'surface_winding_numbers', 'triangulate']
+__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'InteriorRefinement', 'Junction', 'Mesh2D', 'Quality2DOptions', 'Quality2DStats', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'Triangulation2', 'check_gabriel', 'classify_edges', 'closed_diametral_sphere_hits', 'conforming_gabriel_steiner_points', 'control_volumes3d', 'coupling_signs', 'default_interior_budget', 'default_steiner_budget', 'delaunay_cells_inside_surface', 'delaunay_restricted_to_plc', 'delaunay_tetrahedra', 'find_segment_intersections', 'inspect_domain', 'parse_numeric_rows', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'plc_unbalanced_edge', 'refine', 'refine_gabriel', 'refine_interior', 'surface_winding_numbers', 'triangulate']
 class Mesh2D:
     """
     A triangulated 2D domain (read-only; each array attribute is a new array on each access).
@@ -598,6 +598,15 @@ def conforming_gabriel_steiner_points(points: typing.Annotated[numpy.typing.Arra
     """
     Benchmark peer: Steiner points added by CGAL::make_conforming_Gabriel_2 to the domain's CDT.
     """
+def control_volumes3d(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], tets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> dict:
+    """
+    The Voronoi face area dual to every edge of a tet mesh (per-tet decomposition, clipped to the mesh), its
+    exact sign, and the cell volumes. points (n,3) float64, tets (t,4) int64 positively oriented
+    (InvalidInputError otherwise). Returns a dict: edges (E,2) int64 (a < b, sorted), sign (E,) int8
+    (-1, 0, +1), dual_areas (E,) float64 (exact sign times the float magnitude), lengths (E,) float64,
+    volumes (n,) float64, exact_evaluations (int: edges the interval filter left to exact arithmetic),
+    flat_in_floating_point (int: tets flat in doubles, whose pieces are NaN).
+    """
 def coupling_signs(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], triangle_region: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], conductivity: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> EdgeClassification:
     """
     classify_edges with sign (E,) int8: the exact sign (-1, 0, +1) of each edge's control-volume coupling
@@ -611,28 +620,24 @@ def default_steiner_budget(n_points: typing.SupportsInt | typing.SupportsIndex) 
     """
     The Steiner budget refine uses for n input points when max_steiner < 0 (refine2d.h).
     """
-def delaunay_cells_inside_surface(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> numpy.typing.NDArray[numpy.int64]:
+def delaunay_cells_inside_surface(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], cells: typing.Annotated[numpy.typing.ArrayLike, numpy.int64] | None = None) -> numpy.typing.NDArray[numpy.int64]:
     """
-    Cells (t, 4) int64 of delaunay_tetrahedra(points) whose centroid has a non-zero exact winding number
-    with respect to the closed oriented surface triangles (m, 3); sorted.
+    Cells (t, 4) int64 of delaunay_tetrahedra(points) (or of the given cells (c, 4), e.g. the
+    delaunay_cells of delaunay_restricted_to_plc) whose centroid has a non-zero exact winding number with
+    respect to the closed oriented surface triangles (m, 3); sorted.
     """
 def delaunay_restricted_to_plc(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], facet_ids: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], holes: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], regions: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> dict:
     """
     The Delaunay tetrahedralization of a PLC's vertices restricted to its regions (exact flood fill across
     faces on no facet). Returns a dict: tets (t, 4), tet_regions (t,), boundary_faces (f, 3), face_markers
-    (f,), uncovered_facets (facet ids the faces do not cover; empty iff it conforms to every facet).
+    (f,), uncovered_facets (facet ids the faces do not cover; empty iff it conforms to every facet),
+    delaunay_cells (c, 4): for a triangle surface that does not conform, every Delaunay cell (tets etc.
+    then empty); else (0, 4).
     """
 def delaunay_tetrahedra(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> numpy.typing.NDArray[numpy.int64]:
     """
     Finite cells (t, 4) int64 of the Delaunay tetrahedralization of points (n, 3), positively oriented.
     Raises InvalidInputError when two points coincide.
-    """
-def dual_area_signs(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], tets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> dict:
-    """
-    Exact sign of the Voronoi face area dual to every edge of a tet mesh (per-tet decomposition, clipped to
-    the mesh). points (n,3) float64, tets (t,4) int64 positively oriented (InvalidInputError otherwise).
-    Returns a dict: edges (E,2) int64 (a < b, sorted), sign (E,) int8 (-1, 0, +1), exact_evaluations (int:
-    edges the interval filter left to exact arithmetic).
     """
 def find_segment_intersections(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> SegmentIntersections:
     """

@@ -35,6 +35,14 @@ std::vector<std::array<int, 2>> triangle_soup_self_intersections(const std::vect
 // lose an index). Cost: O(n log n) expected.
 std::vector<std::array<int, 4>> delaunay_tetrahedra(const std::vector<PlcPoint>& points);
 
+// delaunay_tetrahedra(points) and, per triangle (indices into points), whether it is a face of that
+// tetrahedralization (exact). Throws as delaunay_tetrahedra. Cost: O(n log n) expected plus O(1) per triangle.
+struct DelaunayFaces {
+  std::vector<std::array<int, 4>> cells;
+  std::vector<char> is_face;
+};
+DelaunayFaces delaunay_faces(const std::vector<PlcPoint>& points, const std::vector<PlcTriangle>& triangles);
+
 // An edge {a, b} (a < b) of `triangles` traversed more often in one direction than in the other, the smallest
 // such, or {-1, -1} when there is none: the triangles then form a closed oriented surface (a 2-cycle; a closed
 // 2-manifold consistently oriented, several of them, or nested shells), around which the winding number is an
@@ -59,6 +67,10 @@ std::vector<int> surface_winding_numbers(const std::vector<PlcPoint>& points,
 // inside when its centroid is. Sorted. Cost: the Delaunay tetrahedralization plus one query per cell.
 std::vector<std::array<int, 4>> delaunay_cells_inside_surface(const std::vector<PlcPoint>& points,
                                                               const std::vector<PlcTriangle>& triangles);
+// The same of given cells (e.g. PlcDelaunay::delaunay_cells): those whose centroid the surface winds around.
+std::vector<std::array<int, 4>> cells_inside_surface(const std::vector<PlcPoint>& points,
+                                                     const std::vector<PlcTriangle>& triangles,
+                                                     const std::vector<std::array<int, 4>>& cells);
 
 // The Delaunay tetrahedralization of a PLC's vertices (no Steiner point) restricted to the PLC's interior.
 struct PlcDelaunay {
@@ -72,6 +84,11 @@ struct PlcDelaunay {
   // inside tet on either side). Empty iff the tetrahedralization conforms to every facet; the tets are then the
   // PLC's regions exactly. Otherwise the flood fill that found them may have leaked: tets are unreliable.
   std::vector<int> uncovered_facets;
+  // When a facet of one triangle is not a Delaunay face: every finite Delaunay cell (sorted, as
+  // delaunay_tetrahedra), for cells_inside_surface; tets, boundary_faces and their data are then empty and
+  // uncovered_facets are the one-triangle facets that are not Delaunay faces (facets of several triangles are
+  // not examined). Empty otherwise.
+  std::vector<Tetrahedron> delaunay_cells;
 };
 
 // Regions are the components of the cells connected across faces on no facet, except the unbounded one and
@@ -81,7 +98,10 @@ struct PlcDelaunay {
 // facet with cospherical points, when its corners are facet vertices and its centroid lies inside the facet;
 // a facet is covered when its faces in the result are as many as its subfacets (any two triangulations of the
 // facet's vertices and edges have the same number of triangles). Throws InvalidInput on malformed PLCs (as
-// refine_gabriel). Cost: O(n log n) expected for n points, plus O(f log f) for the facets' triangulations.
+// refine_gabriel). The one-triangle facets (most of a scanned surface's) are first checked without building the
+// facets' triangulations: when one is not a Delaunay face it is not covered, and the result says so at once
+// (delaunay_cells); otherwise the flood fill above runs.
+// Cost: O(n log n) expected for n points, plus O(f log f) for the facets' triangulations.
 PlcDelaunay delaunay_restricted_to_plc(const PLC3& plc);
 
 }  // namespace nonobtuse

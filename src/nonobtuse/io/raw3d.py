@@ -3,7 +3,9 @@ holes and regions (:class:`RawInput`), and the line-reading helpers the text for
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass, field
+from typing import overload
 
 import numpy as np
 
@@ -20,6 +22,28 @@ class Facet:
     where: str = ""
 
 
+class TriangleFacets(Sequence[Facet]):
+    """The facets of a triangle surface without building one :class:`Facet` per face: ``corners`` (m, 3)
+    int64, and the file and 1-based line of each face for messages (``file``, ``lines`` (m,) int64; lines
+    None: no line numbers). Reads as a sequence of one-triangle Facets, made when asked for."""
+
+    def __init__(self, corners: np.ndarray, file: str = "", lines: np.ndarray | None = None) -> None:
+        self.corners, self.file, self.lines = corners, file, lines
+
+    def __len__(self) -> int:
+        return len(self.corners)
+
+    @overload
+    def __getitem__(self, j: int) -> Facet: ...
+    @overload
+    def __getitem__(self, j: slice) -> list[Facet]: ...
+    def __getitem__(self, j: int | slice) -> Facet | list[Facet]:
+        if isinstance(j, slice):
+            return [self[k] for k in range(len(self))[j]]
+        where = f"{self.file}:{int(self.lines[j])}" if self.lines is not None else ""
+        return Facet([self.corners[j]], where=where)
+
+
 @dataclass
 class RawInput:
     """A parsed file before triangulation and validation. facet_markers: (len(facets),) int64, the marker of
@@ -28,7 +52,7 @@ class RawInput:
     of a TetGen region line), NaN where none."""
 
     points: np.ndarray
-    facets: list[Facet]
+    facets: Sequence[Facet]  # a list, or TriangleFacets for a triangle surface
     holes: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
     regions: np.ndarray = field(default_factory=lambda: np.zeros((0, 4)))
     source: str = "<memory>"

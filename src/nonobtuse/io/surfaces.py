@@ -15,7 +15,7 @@ import numpy as np
 
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io._files import Lines
-from nonobtuse.io.raw3d import Facet, RawInput, floats, ints, merge_equal_points, points_array
+from nonobtuse.io.raw3d import Facet, RawInput, TriangleFacets, floats, ints, merge_equal_points, points_array
 
 SUFFIXES = (".off", ".obj", ".ply", ".stl")
 PLY_MARKERS = ("marker", "boundary_marker", "label", "group")  # the first present is the facet marker
@@ -36,18 +36,19 @@ def read_off(path: Path) -> RawInput:
         pts = fast[0]
     else:
         pts = [floats(lines.next(f"vertex {i}"), 0, 3, f"vertex {i}") for i in range(nv)]
-    facets = _off_triangles(lines, nf)
-    if facets is None:
-        facets = []
-        for j in range(nf):
-            line = lines.next(f"face {j}")
-            n = line.count(0, f"the vertex count of face {j}")
-            facets.append(Facet([np.array(ints(line, 1, n, f"face {j}"), dtype=np.int64)],
-                                where=f"{line.file}:{line.number}"))
+    triangles = _off_triangles(lines, nf)
+    if triangles is not None:
+        return RawInput(points_array(pts), triangles, source=str(path))
+    facets = []
+    for j in range(nf):
+        line = lines.next(f"face {j}")
+        n = line.count(0, f"the vertex count of face {j}")
+        facets.append(Facet([np.array(ints(line, 1, n, f"face {j}"), dtype=np.int64)],
+                            where=f"{line.file}:{line.number}"))
     return RawInput(points_array(pts), facets, source=str(path))
 
 
-def _off_triangles(lines: Lines, nf: int) -> list[Facet] | None:
+def _off_triangles(lines: Lines, nf: int) -> TriangleFacets | None:
     """The next ``nf`` faces when every one is a triangle on a plain numeric line (``3 i j k``: the fast
     path, :meth:`Lines.numbers`), else None and nothing consumed (the line reader names any problem)."""
     fast = lines.numbers(nf, 4, (0, 1, 2, 3))
@@ -55,7 +56,7 @@ def _off_triangles(lines: Lines, nf: int) -> list[Facet] | None:
         return None
     lines.skip(nf)
     corners = fast[0][:, 1:].astype(np.int64)
-    return [Facet([c], where=f"{lines.file}:{n}") for c, n in zip(corners, fast[1].tolist())]
+    return TriangleFacets(corners, str(lines.file), fast[1])
 
 
 def read_obj(path: Path) -> RawInput:

@@ -23,7 +23,7 @@ from scipy.sparse.csgraph import connected_components
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import surfaces, tetgen
-from nonobtuse.io.raw3d import Facet, RawInput
+from nonobtuse.io.raw3d import Facet, RawInput, TriangleFacets
 from nonobtuse.mesh3d.gabriel import power_of_two_exponent
 from nonobtuse.mesh3d.plc import PLC
 from nonobtuse.mesh3d.validate3d import edge_faces, manifold_face_pairs, unique_rows, validate_plc
@@ -114,10 +114,15 @@ def _triangle_facets(raw: RawInput) -> np.ndarray | None:
     checked as :func:`_check_points_and_indices` checks them, with the same messages, but in numpy rather than
     a Python step per facet; None for any other input."""
     facets = raw.facets
-    if not facets or any(len(f.loops) != 1 or len(f.loops[0]) != 3 or len(f.holes) for f in facets):
+    if isinstance(facets, TriangleFacets):
+        t = facets.corners
+    elif not facets or any(len(f.loops) != 1 or len(f.loops[0]) != 3 or len(f.holes) for f in facets):
+        return None
+    else:
+        t = np.array([f.loops[0] for f in facets], dtype=np.int64).reshape(-1, 3)
+    if not len(t):
         return None
     _check_finite(raw)
-    t = np.array([f.loops[0] for f in facets], dtype=np.int64).reshape(-1, 3)
     n = len(raw.points)
     out = (t < 0) | (t >= n)
     rows = np.flatnonzero(out.any(axis=1))

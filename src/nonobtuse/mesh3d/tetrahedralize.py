@@ -135,27 +135,35 @@ def _cgal(plc: PLC, options: dict[str, Any]) -> TetMesh:
         tets, regions, volume_mesh = d["tets"], region_attributes(d["tet_regions"], plc, True), "built"
     else:
         regions = None
-        why = (f"the Delaunay tetrahedralization of the vertices does not conform to {len(uncovered)} of "
-               f"{len(np.unique(plc.facet_ids))} facets (e.g. facet {int(uncovered[0])})")
-        tets, volume_mesh = _tets_by_winding_number(arrays[0], plc.triangles, why)
+        facets = len(np.unique(plc.facet_ids))
+        # Found from the one-triangle facets alone (delaunay_cells given), the count is a lower bound when
+        # some facet has several triangles.
+        some = "at least " if len(d["delaunay_cells"]) and facets < len(plc.triangles) else ""
+        why = (f"the Delaunay tetrahedralization of the vertices does not conform to {some}{len(uncovered)} "
+               f"of {facets} facets (e.g. facet {int(uncovered[0])})")
+        tets, volume_mesh = _tets_by_winding_number(arrays[0], plc.triangles, why, d["delaunay_cells"])
     return TetMesh(plc.points.copy(), tets, plc.triangles.copy(), plc.markers_of_facets(plc.facet_ids),
                    plc.segments.copy(), regions, {"volume_mesh": volume_mesh},
                    face_facets=plc.facet_ids.copy())
 
 
-def _tets_by_winding_number(points: np.ndarray, triangles: np.ndarray, why: str) -> tuple[np.ndarray, str]:
+def _tets_by_winding_number(points: np.ndarray, triangles: np.ndarray, why: str,
+                            cells: np.ndarray) -> tuple[np.ndarray, str]:
     """The Delaunay cells of ``points`` (n, 3), scaled into a safe range, that the closed oriented surface
     ``triangles`` (m, 3) winds around (exact; see the module docstring), and the ``volume_mesh`` text, which
     starts "by winding number"; (0, 4) cells and a text starting "not built" when the surface is not closed
-    and oriented. ``why``: why the flood fill was not used. Cost: O(n log n) for the Delaunay
-    tetrahedralization, plus the ray casts (linear on surfaces without long vertical stacks)."""
+    and oriented. ``why``: why the flood fill was not used. ``cells``: the Delaunay cells when
+    delaunay_restricted_to_plc already built them, else (0, 4). Cost: O(n log n) for the Delaunay
+    tetrahedralization (when not given), plus the ray casts (linear on surfaces without long vertical
+    stacks)."""
     edge = _core.plc_unbalanced_edge(points, triangles)
     if edge is not None:
         return np.zeros((0, 4), dtype=np.int64), (
             f"not built: {why}, and the surface is not closed and oriented (edge {edge} is traversed more "
             f"often one way than the other: an open surface, internal or dangling facets), so winding "
             f"numbers do not say what is inside; --backend tetgen builds one")
-    return _core.delaunay_cells_inside_surface(points, triangles), (
+    given = cells if len(cells) else None  # the general path of delaunay_restricted_to_plc gives none
+    return _core.delaunay_cells_inside_surface(points, triangles, given), (
         f"by winding number (exact): {why}; the cells whose centroid the surface winds around, no regions")
 
 
