@@ -39,8 +39,8 @@ def test_spiky_star_polygons_are_certified_exactly(seed, n):
 
 def spiky_star_with_holes(seed: int, n: int, k: int) -> Domain:
     """``spiky_star`` with ``k`` small random spiky holes (star polygons of 8 vertices, radii in [0.02, 0.05])
-    at radius 0.36, inside the star's kernel (every vertex has radius >= 0.5), spaced so
-    that they do not meet: their edges are obstacles of the walks from the star's long edges near radius 0.5."""
+    at radius 0.36, inside the star's kernel (every vertex has radius >= 0.5), spaced so that they do not
+    meet: their edges are obstacles of the walks from the star's long edges."""
     rng = np.random.default_rng(seed)
     outer = spiky_star(seed, n)
     points, segments, holes = [outer.points], [outer.segments], []
