@@ -35,3 +35,33 @@ def test_spiky_star_polygons_are_certified_exactly(seed, n):
     assert res.stats["obtuse_boundary_sides"] == 0
     assert obtuse_boundary_sides(res.mesh) == 0  # exact, in rationals
     assert all(e["steiner_points"] >= e["lower_bound"] for e in res.stats["edges"])
+
+
+def spiky_star_with_holes(seed: int, n: int, k: int) -> Domain:
+    """``spiky_star`` with ``k`` small random spiky holes (star polygons of 8 vertices, radii in [0.02, 0.05])
+    at radius 0.36, inside the star's kernel (every vertex has radius >= 0.5), spaced so that they do not
+    meet: their edges are obstacles of the walks from the star's long edges."""
+    rng = np.random.default_rng(seed)
+    outer = spiky_star(seed, n)
+    points, segments, holes = [outer.points], [outer.segments], []
+    base = len(outer.points)
+    for j in range(k):
+        centre = 0.36 * np.array([np.cos(2 * np.pi * j / k), np.sin(2 * np.pi * j / k)])
+        a = 2 * np.pi * (np.arange(8) + rng.uniform(0, 0.5, 8)) / 8  # gaps below pi: the centre is inside
+        r = rng.uniform(0.02, 0.05, 8)
+        points.append(centre + np.c_[r * np.cos(a), r * np.sin(a)])
+        segments.append(base + np.c_[np.arange(8), (np.arange(8) + 1) % 8])
+        holes.append(centre)
+        base += 8
+    return Domain(points=np.vstack(points), segments=np.vstack(segments), holes=np.array(holes))
+
+
+@settings(derandomize=True, deadline=4000, max_examples=15)
+@given(st.integers(0, 2**31), st.integers(20, 150), st.integers(1, 5))
+def test_spiky_stars_with_holes_are_certified_exactly(seed, n, k):
+    domain = spiky_star_with_holes(seed, n, k)
+    res = nonobtuse.refine(domain)
+    assert res.status == "converged"
+    assert obtuse_boundary_sides(res.mesh) == 0  # exact, in rationals
+    assert all(e["steiner_points"] >= e["lower_bound"] for e in res.stats["edges"])
+    assert len(res.stats["edges"]) == len(domain.segments)

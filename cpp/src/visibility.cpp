@@ -3,25 +3,10 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
-#include <initializer_list>
-#include <tuple>
 
 namespace nonobtuse::refine2d {
 
 namespace {
-
-// A convex quadrilateral around the side [s, e] whose every point within `margin` of it lies inside: the corners
-// s - m t + m n, s - m t - m n, e + m t - m n, e + m t + m n (t along the side, n its left normal, m = 2^-30 of
-// the largest coordinate), rounded; rounding moves them by ulps, far less than m. Every subsegment end that
-// greedy_count asks about lies within ulps of the side, hence inside.
-std::array<Point, 4> fat_side(const Point& s, const Point& e) {
-  const double m = 0x1p-30 * std::max({std::abs(s.x()), std::abs(s.y()), std::abs(e.x()), std::abs(e.y())});
-  const double dx = e.x() - s.x(), dy = e.y() - s.y(), len = std::sqrt(dx * dx + dy * dy);
-  const double tx = m * dx / len, ty = m * dy / len;  // m t; m n = (-ty, tx)
-  return {Point(s.x() - tx - ty, s.y() - ty + tx), Point(s.x() - tx + ty, s.y() - ty - tx),
-          Point(e.x() + tx + ty, e.y() + ty - tx), Point(e.x() + tx - ty, e.y() + ty + tx)};
-}
 
 // Exact: every closed segment from a point of the convex hull of `source` to x meets the closed segment c (x lies
 // in c's umbra). The points y for which [y, x] meets c form a convex set (those on c or beyond it seen from x: a
@@ -161,97 +146,11 @@ DiskWalk walk_diametral_disk(const State& st, const Side& side, int lane, Walked
 }
 
 bool sees(const State& st, const Side& start, const Point& a, const Point& b, Vertex_handle v, Sight sight) {
-  if (sight.in_front != nullptr) return !covered_from(v->point(), a, b, sight.in_front->of(v));
+  if (sight.in_front != nullptr) return !sight.in_front->of(v).covered(a, b);
   if (sight.obstacles != nullptr) return !covered_from(v->point(), a, b, *sight.obstacles);
   bool found = false;
   walk_disk(st, st.domain_faces(start), a, b, [&](Face_handle f) { return found = f->has_vertex(v); });
   return found;
-}
-
-// Exact: the closed segment [c1, c2] (c1 != c2) meets the closed triangle (p, q, r) (not degenerate). Two
-// disjoint compact convex sets are strictly separated by a line parallel to an edge of one of them (separating
-// axes), so they are disjoint iff both ends lie strictly beyond one edge's line, or the three corners strictly on
-// one side of the segment's line. Orientations only: filtered predicates, no constructions (CGAL's do_intersect
-// constructs line intersections, exactly in rationals whenever an end lies on a side's line).
-bool segment_meets_triangle(const Point& c1, const Point& c2, const Point& p, const Point& q, const Point& r) {
-  for (const auto& [u, w, x] : {std::tie(p, q, r), std::tie(q, r, p), std::tie(r, p, q)}) {
-    const auto outside = -CGAL::orientation(u, w, x);
-    if (CGAL::orientation(u, w, c1) == outside && CGAL::orientation(u, w, c2) == outside) return false;
-  }
-  const auto o = CGAL::orientation(c1, c2, p);
-  return o == CGAL::COLLINEAR || CGAL::orientation(c1, c2, q) != o || CGAL::orientation(c1, c2, r) != o;
-}
-
-// The closed angular intervals the obstacles shade, seen from v, cover the open wedge from a to b. An obstacle
-// shades the directions of its part in front of (a, b), inside the triangle (v, a, b): a constraint meets the line
-// ab inside [a, b] at most at a or b (constraints do not cross the edge; a or b may be its vertices), so one ending
-// at a or b is in front iff its other end is strictly on v's side, and any other iff it meets the triangle; then
-// its own angular span clipped to the wedge is in front.
-bool covered_from(const Point& v, const Point& a, const Point& b, const std::vector<Segment2>& obstacles) {
-  const bool ccw = CGAL::orientation(v, a, b) == CGAL::LEFT_TURN;
-  const Point &lo = ccw ? a : b, &hi = ccw ? b : a;  // the wedge, counter-clockwise from lo to hi (< 180 degrees)
-  // Counter-clockwise order of directions from v; valid for directions less than 180 degrees apart, which holds
-  // for every pair compared below (each obstacle kept meets the wedge and spans less than 180 degrees).
-  // Equal points first: their orientation is exactly zero, which the filter cannot certify (exact arithmetic).
-  auto before = [&v](const Point& p, const Point& q) { return p != q && CGAL::orientation(v, p, q) == CGAL::LEFT_TURN; };
-  std::vector<Segment2> shades;
-  const auto v_side = CGAL::orientation(a, b, v);
-  auto in_front = [&](const Point& c1, const Point& c2) {
-    if (c1 == a || c1 == b) return CGAL::orientation(a, b, c2) == v_side;
-    if (c2 == a || c2 == b) return CGAL::orientation(a, b, c1) == v_side;
-    return segment_meets_triangle(c1, c2, v, a, b);
-  };
-  for (const auto& [c1, c2] : obstacles) {
-    auto o = CGAL::orientation(v, c1, c2);
-    if (c1 == v || c2 == v || o == CGAL::COLLINEAR || !in_front(c1, c2)) continue;
-    const Point &from = o == CGAL::LEFT_TURN ? c1 : c2, &to = o == CGAL::LEFT_TURN ? c2 : c1;
-    const Point &first = before(from, lo) ? lo : from, &last = before(hi, to) ? hi : to;
-    if (before(first, last)) shades.emplace_back(first, last);
-  }
-  std::sort(shades.begin(), shades.end(), [&](const auto& x, const auto& y) { return before(x.first, y.first); });
-  const Point* reach = &lo;  // the directions from lo up to *reach are shaded (none strictly inside yet)
-  for (const auto& [first, last] : shades) {
-    if (before(*reach, first)) return false;  // an open gap of directions between *reach and first
-    if (before(*reach, last)) reach = &last;
-  }
-  return !before(*reach, hi);
-}
-
-std::vector<Segment2> obstacles_near_triangle(const Point& v, const Point& s, const Point& e,
-                                              const std::vector<Segment2>& obstacles) {
-  const std::array<Point, 3> corner = {v, s, e};
-  auto largest = [](const Point& p) { return std::max(std::abs(p.x()), std::abs(p.y())); };
-  const double corners_largest = std::max({largest(v), largest(s), largest(e)});
-  // (p - o) x (q - o) in doubles.
-  auto cross = [](const Point& o, const Point& p, const Point& q) {
-    return (p.x() - o.x()) * (q.y() - o.y()) - (p.y() - o.y()) * (q.x() - o.x());
-  };
-  auto length = [](const Point& o, const Point& p) { return std::sqrt(CGAL::to_double(CGAL::squared_distance(o, p))); };
-  // All of `points` strictly beyond the line o -> p (of length `len`) on the side `sign` (+1 left, -1 right) by
-  // more than margin; false whenever a value is not finite (the obstacle is kept).
-  auto beyond = [&](const Point& o, const Point& p, double len, double sign, double margin,
-                    std::initializer_list<Point> points) {
-    for (const Point& q : points)
-      if (!(sign * cross(o, p, q) > margin * len)) return false;
-    return true;
-  };
-  std::array<double, 3> side_length, outside;  // edge k of (v, s, e): corner k -> corner k + 1
-  for (int k = 0; k < 3; ++k) {
-    side_length[k] = length(corner[k], corner[(k + 1) % 3]);
-    outside[k] = cross(corner[k], corner[(k + 1) % 3], corner[(k + 2) % 3]) > 0 ? -1.0 : 1.0;  // away from the third
-  }
-  std::vector<Segment2> out;
-  for (const Segment2& c : obstacles) {
-    const double margin = 0x1p-30 * std::max({corners_largest, largest(c.first), largest(c.second)});
-    bool apart = false;
-    for (int k = 0; k < 3 && !apart; ++k)
-      apart = beyond(corner[k], corner[(k + 1) % 3], side_length[k], outside[k], margin, {c.first, c.second});
-    const double len = apart ? 0.0 : length(c.first, c.second);
-    apart = apart || beyond(c.first, c.second, len, 1.0, margin, {v, s, e}) ||
-            beyond(c.first, c.second, len, -1.0, margin, {v, s, e});
-    if (!apart) out.push_back(c);
-  }
-  return out;
 }
 
 }  // namespace nonobtuse::refine2d
