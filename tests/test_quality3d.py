@@ -16,7 +16,7 @@ from nonobtuse import _core
 from nonobtuse.cli import EXIT_INVALID, EXIT_OK, main
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import check_gabriel, load_plc, read_tetmesh_json
-from nonobtuse.mesh3d.plc import PLC
+from nonobtuse.mesh3d.plc import PLC, TetMesh
 from nonobtuse.mesh3d.quality3d import refine_quality3d
 
 DATA3D = Path(__file__).resolve().parent / "data" / "3d"
@@ -255,9 +255,10 @@ def test_interior_pass_keeps_the_boundary_and_labels():
     assert (face < 0).all() and (segment < 0).all()
 
 
-def test_interior_pass_leaves_out_removed_points_and_keeps_the_regions():
-    """The points a pass inserted, removed by the next: the points are the repair's again, in order, and each
-    region keeps its volume (its cells seeded where the removed points were)."""
+def test_interior_pass_splits_the_boundary_and_keeps_the_regions():
+    """One pass with facet ids on a repaired two-region mesh: centers in closed diametral spheres split the
+    boundary inside the pass; the boundary returned is Gabriel (exact), the input points come first, in
+    order, and each region keeps its volume."""
     from nonobtuse.mesh3d import refine_gabriel
     from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes
 
@@ -265,19 +266,18 @@ def test_interior_pass_leaves_out_removed_points_and_keeps_the_regions():
     attrs, labels = np.unique(np.asarray(g.mesh.tet_regions), return_inverse=True)
     faces, segments = np.asarray(g.mesh.boundary_faces), np.asarray(g.mesh.segments).reshape(-1, 2)
     free = np.full(len(attrs), np.inf)
-    grown = _core.refine_interior(g.mesh.points, np.asarray(g.mesh.tets), labels.ravel(), faces, segments,
-                                  2.0, free, 10**6, 60.0)
-    added = np.arange(len(g.mesh.points), len(grown.points))
-    assert len(added) > 0
-    r = _core.refine_interior(grown.points, grown.tets, grown.tet_labels, faces, segments, 0.0, free, 0, 60.0,
-                              added)
-    assert r.status == "converged" and r.inserted == 0
-    assert np.array_equal(r.points, g.mesh.points)
+    r = _core.refine_interior(g.mesh.points, np.asarray(g.mesh.tets), labels.ravel(), faces, segments, 1.5,
+                              free, 10**6, 60.0, face_facets=np.asarray(g.mesh.face_facets))
+    assert r.status in ("converged", "blocked") and r.boundary_rounds > 0 and r.boundary_points > 0
+    assert np.array_equal(r.points[: len(g.mesh.points)], g.mesh.points)
+    assert len(r.faces) > len(faces) and len(r.face_facets) == len(r.faces)
+    assert set(np.asarray(r.face_facets).tolist()) == set(np.asarray(g.mesh.face_facets).tolist())
+    assert check_gabriel(TetMesh(r.points, r.tets, r.faces, np.zeros(len(r.faces)), r.segments)).ok
     before = signed_tet_volumes(g.mesh.points, np.asarray(g.mesh.tets))
     after = signed_tet_volumes(r.points, r.tets)
     assert (after > 0).all()
     for k in range(len(attrs)):
         assert after[r.tet_labels == k].sum() == pytest.approx(before[labels.ravel() == k].sum(), rel=1e-12)
-    with pytest.raises(InvalidInputError, match="corner of a face"):
-        _core.refine_interior(grown.points, grown.tets, grown.tet_labels, faces, segments, 0.0, free, 0, 60.0,
-                              faces[:1, 0])
+    with pytest.raises(InvalidInputError, match="face_facets"):
+        _core.refine_interior(g.mesh.points, np.asarray(g.mesh.tets), labels.ravel(), faces, segments, 1.5,
+                              free, 10**6, 60.0, face_facets=np.zeros(2, dtype=np.int64))
