@@ -18,6 +18,7 @@
 
 #include "nonobtuse/quality3d.h"
 #include "quality3d_boundary.h"
+#include "quality3d_rows.h"
 #include "quality3d_spheres.h"
 
 namespace nonobtuse {
@@ -28,6 +29,9 @@ using gabriel3d::K;
 using gabriel3d::P3;
 using gabriel3d::to_cgal;
 using quality3d::BoundarySplitter;
+using quality3d::canonical_tet;
+using quality3d::check_input;
+using quality3d::sorted_corners;
 using quality3d::SphereIndex;
 using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
 using Cb = CGAL::Triangulation_cell_base_with_info_3<int, K, CGAL::Delaunay_triangulation_cell_base_3<K>>;
@@ -35,45 +39,6 @@ using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
 using DT = CGAL::Delaunay_triangulation_3<K, Tds>;
 using Cell = DT::Cell_handle;
 using Vertex = DT::Vertex_handle;
-
-std::array<int, 4> sorted_corners(std::array<int, 4> k) {
-  std::sort(k.begin(), k.end());
-  return k;
-}
-
-// The least of the 12 even permutations of t (they keep its orientation): one row per tet, whatever its history.
-std::array<int, 4> canonical_tet(const std::array<int, 4>& t) {
-  static constexpr int kEven[12][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 0, 3, 2}, {1, 2, 0, 3}, {1, 3, 2, 0},
-                                       {2, 0, 1, 3}, {2, 1, 3, 0}, {2, 3, 0, 1}, {3, 0, 2, 1}, {3, 1, 0, 2}, {3, 2, 1, 0}};
-  std::array<int, 4> best = t;
-  for (const auto& p : kEven) best = std::min(best, std::array<int, 4>{t[p[0]], t[p[1]], t[p[2]], t[p[3]]});
-  return best;
-}
-
-void check_input(const InteriorMesh& mesh, const InteriorBounds& bounds) {
-  const auto n = static_cast<int>(mesh.points.size());
-  auto in_range = [&](int v, const char* what, std::size_t row) {
-    if (v < 0 || v >= n)
-      throw InvalidInput(std::string(what) + " " + std::to_string(row) + " refers to point " + std::to_string(v) +
-                         ", but there are " + std::to_string(n) + " points");
-  };
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
-    for (int v : mesh.tets[t]) in_range(v, "tet", t);
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-    for (int v : mesh.faces[f]) in_range(v, "face", f);
-  for (std::size_t s = 0; s < mesh.segments.size(); ++s)
-    for (int v : mesh.segments[s]) in_range(v, "segment", s);
-  if (!mesh.face_facets.empty() && mesh.face_facets.size() != mesh.faces.size())
-    throw InvalidInput("face_facets has " + std::to_string(mesh.face_facets.size()) + " entries for " +
-                       std::to_string(mesh.faces.size()) + " faces");
-  if (mesh.tet_labels.size() != mesh.tets.size())
-    throw InvalidInput("tet_labels has " + std::to_string(mesh.tet_labels.size()) + " entries for " +
-                       std::to_string(mesh.tets.size()) + " tets");
-  for (std::size_t t = 0; t < mesh.tet_labels.size(); ++t)
-    if (mesh.tet_labels[t] < 0 || static_cast<std::size_t>(mesh.tet_labels[t]) >= bounds.volume_bounds.size())
-      throw InvalidInput("tet " + std::to_string(t) + " has label " + std::to_string(mesh.tet_labels[t]) +
-                         ", but there are " + std::to_string(bounds.volume_bounds.size()) + " volume bounds");
-}
 
 class InteriorRefiner {
  public:
