@@ -281,3 +281,23 @@ def test_interior_pass_splits_the_boundary_and_keeps_the_regions():
     with pytest.raises(InvalidInputError, match="face_facets"):
         _core.refine_interior(g.mesh.points, np.asarray(g.mesh.tets), labels.ravel(), faces, segments, 1.5,
                               free, 10**6, 60.0, face_facets=np.zeros(2, dtype=np.int64))
+
+
+def test_interior_pass_hands_back_the_state_before_a_boundary_step_it_cannot_finish():
+    """A regular tet (cospherical points everywhere) with a small volume bound: a boundary step whose split
+    boundary the pass's tetrahedralization cannot hold hands back the state before it (Gabriel, exact; the
+    tet's volume) with the split boundary over all points for the repair."""
+    from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes
+
+    points = np.array([[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]], dtype=np.float64)
+    faces = np.array([[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]])
+    segments = np.array([[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]])
+    r = _core.refine_interior(points, np.array([[0, 1, 2, 3]]), np.zeros(1, dtype=np.int64), faces, segments,
+                              2.0, np.array([0.05]), 10**6, 60.0, face_facets=np.arange(4))
+    assert r.status in ("not_conforming", "boundary_stopped") and r.boundary_rounds > 0
+    kept = r.points[: r.certified_points]
+    assert r.certified_points < len(r.points) and len(r.split_faces) > len(r.faces)
+    assert check_gabriel(TetMesh(kept, r.tets, r.faces, np.zeros(len(r.faces)), r.segments)).ok
+    assert int(np.asarray(r.tets).max()) < r.certified_points
+    assert signed_tet_volumes(kept, r.tets).sum() == pytest.approx(8 / 3, rel=1e-12)
+    assert int(np.asarray(r.split_faces).max()) < len(r.points)

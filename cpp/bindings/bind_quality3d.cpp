@@ -35,6 +35,13 @@ void bind_quality3d(py::module_& m) {
       .def_property_readonly("faces", [](const InteriorRefinement& r) { return from_index_rows<3>(r.faces); })
       .def_property_readonly("face_facets", [](const InteriorRefinement& r) { return from_vector(r.face_facets); })
       .def_property_readonly("segments", [](const InteriorRefinement& r) { return from_index_rows<2>(r.segments); })
+      .def_property_readonly("split_faces",
+                             [](const InteriorRefinement& r) { return from_index_rows<3>(r.split_faces); })
+      .def_property_readonly("split_face_facets",
+                             [](const InteriorRefinement& r) { return from_vector(r.split_face_facets); })
+      .def_property_readonly("split_segments",
+                             [](const InteriorRefinement& r) { return from_index_rows<2>(r.split_segments); })
+      .def_readonly("certified_points", &InteriorRefinement::certified_points)
       .def_readonly("status", &InteriorRefinement::status)
       .def_readonly("inserted", &InteriorRefinement::inserted)
       .def_readonly("placed", &InteriorRefinement::placed)

@@ -84,6 +84,8 @@ class InteriorRefiner {
       }
       if (!splitter_) break;
       const std::size_t mark = pts_.size();
+      InteriorRefinement certified;  // the state before this step: returned if the step fails
+      collect(certified);
       const bool gabriel = split_boundary();
       if (splitter_->points().size() == mark) {  // nothing split: the cells left stay blocked
         if (out_of_time()) out.status = "budget_exhausted";
@@ -93,9 +95,19 @@ class InteriorRefiner {
       const Regions before = regions();
       insert_boundary_points(mark);
       if (!gabriel || !extract_boundary() || !relabel(before)) {
-        out.status = gabriel ? "not_conforming" : "boundary_stopped";
         conforming_ = false;
-        break;
+        InteriorRefinement split;
+        collect(split);
+        certified.status = gabriel ? "not_conforming" : "boundary_stopped";
+        certified.certified_points = static_cast<long long>(mark);
+        certified.points = std::move(split.points);
+        certified.split_faces = std::move(split.faces);
+        certified.split_face_facets = std::move(split.face_facets);
+        certified.split_segments = std::move(split.segments);
+        certified.boundary_rounds = out.boundary_rounds;
+        certified.boundary_points = split.boundary_points;
+        certified.refused_splits = split.refused_splits;
+        return certified;
       }
       spheres_ = std::make_unique<SphereIndex>(pts_, faces_, segments_);
     }
@@ -440,13 +452,14 @@ class InteriorRefiner {
       out.tet_labels.push_back(c->info());
     }
     out.inserted = inserted_;
+    out.certified_points = static_cast<long long>(pts_.size());
     out.faces = faces_;
     out.segments = segments_;
     out.face_facets = mesh_.face_facets;
     if (!splitter_) return;
     out.boundary_points = splitter_->added;
     out.refused_splits = splitter_->refused;
-    if (out.boundary_rounds == 0) return;  // the input's faces and facet ids
+    if (face_facets_.empty() && conforming_) return;  // no boundary step yet: the input's faces and facet ids
     std::vector<int> facets = face_facets_;
     if (!conforming_) {  // the facets' triangulations: the boundary for a repair to make Delaunay
       splitter_->subfacets(out.faces, facets);
@@ -486,6 +499,7 @@ InteriorRefinement refine_interior(const InteriorMesh& mesh, const InteriorBound
     out.faces = mesh.faces;
     out.face_facets = mesh.face_facets;
     out.segments = mesh.segments;
+    out.certified_points = static_cast<long long>(mesh.points.size());
     out.status = "not_conforming";
     return out;
   }

@@ -57,8 +57,9 @@ struct InteriorBounds {
 // frees (in a closed diametral sphere whose split was refused, on a mesh vertex or outside the domain: blocked_rows);
 // "budget_exhausted": max_points or time_limit; "not_conforming": a subfacet or subsegment is not a face or an edge
 // of the Delaunay tetrahedralization (cospherical points): before any boundary split, nothing was inserted (the
-// input returned); after one, the tets are not to be used and faces/segments are the split boundary (the facets'
-// triangulations) for a repair that tetrahedralizes it; "boundary_stopped": a split that would restore the Gabriel
+// input returned); after one, the state before that boundary step is returned (the first certified_points points,
+// tets, faces and segments: Gabriel and conforming) with the split boundary (split_*: the facets' triangulations,
+// over all points) for a repair that tetrahedralizes it; "boundary_stopped": a split that would restore the Gabriel
 // property was refused (min_length, max_boundary_points, an existing point, time_limit): the same.
 struct InteriorRefinement {
   // the input points in order, then the points of InteriorMesh::insert placed, then the inserted circumcenters and
@@ -74,6 +75,12 @@ struct InteriorRefinement {
   std::vector<Triangle> faces;
   std::vector<int> face_facets;
   std::vector<Segment> segments;
+  // After "not_conforming" or "boundary_stopped" from a boundary step: the points tets and faces use (the rest are
+  // that step's boundary points) and the split boundary; else certified_points is points.size() and split_* empty.
+  long long certified_points = 0;
+  std::vector<Triangle> split_faces;
+  std::vector<int> split_face_facets;
+  std::vector<Segment> split_segments;
   std::string status;
   long long inserted = 0;         // circumcenters
   long long placed = 0;           // points of InteriorMesh::insert

@@ -48,8 +48,10 @@ class Quality3DResult:
             stats["last_repair"] says how the last repair ended.
     stats:  boundary_points, interior_points, steiner_points (all points not in the input), tets,
             worst_radius_edge, max_volume, min_volume, radius_edge_over_2 (see :func:`tet_quality`), bad_tets
-            (tets over a bound at the end), blocked_centers (circumcenters of the last round in a closed
-            diametral sphere), inserted_by_passes (circumcenters the interior passes inserted), rounds,
+            (tets over a bound at the end), blocked_centers (tets over a bound the last interior pass left:
+            centers that no split frees), inserted_by_passes (circumcenters the interior passes inserted),
+            boundary_points_by_passes / boundary_rounds / refused_splits (the passes' own boundary splits,
+            their steps, and the splits refused at min_length or the budget), rounds,
             surface (how the facets were split first), tetgen / tetgen_points / tetgen_points_dropped
             (TetGen's interior points, and those dropped for lying in a closed diametral sphere),
             encroached_facets / encroached_segments (the exact certificate), volume_mesh, negative_couplings,
@@ -156,7 +158,8 @@ def refine_quality3d(
     limits, blocked = dict(g.stats), 0
     while status == "converged":
         surface, interior = refiner.split_mesh(mesh)
-        grown, passed, blocked = refiner.interior_pass(mesh, budget - len(interior), tetgen_points, limits)
+        grown, passed, blocked, split = refiner.interior_pass(mesh, budget - len(interior), tetgen_points,
+                                                              limits)
         placed, tetgen_points = tetgen_points, tetgen_points[:0]  # placed by this pass, else by the repair
         stats["rounds"] += 1
         seconds = time.perf_counter() - started
@@ -170,7 +173,7 @@ def refine_quality3d(
             break
         # a split boundary the pass cannot tetrahedralize by itself (cospherical points, or a split it
         # refused): the boundary repair splits what is left and tetrahedralizes the interior points with it
-        surface, interior = refiner.split_mesh(grown)
+        surface, interior = refiner.split_mesh(grown if split is None else split)
         if grown is mesh:  # not Delaunay to begin with: bad tets' centers (or stand-ins) through the repair
             added = np.concatenate([placed, refiner.centers_for_repair(mesh, surface)])
             if not len(added):
@@ -182,8 +185,8 @@ def refine_quality3d(
             status = "quality_blocked"  # nothing added: the centers left lie on spheres, which split nothing
             break
         status, stop = repaired.status, repaired.stats["diagnosis"]["stop_reason"]
-        if status == "converged":
-            g, mesh = repaired, repaired.mesh
+        # else the last certified mesh: the pass's before the boundary step it could not finish
+        g, mesh = (repaired, repaired.mesh) if status == "converged" else (g, grown)
     bad = refiner.bad_tets(mesh)[0]
     if status == "converged" and len(bad):  # the pass's measure and numpy's differ in the last ulp
         status = "quality_blocked"

@@ -139,7 +139,7 @@ class InteriorRefiner:
         return self.volume_bounds_of(attrs)[labels]
 
     def interior_pass(self, mesh: TetMesh, budget: int, insert: np.ndarray | None = None,
-                      limits: dict[str, Any] | None = None) -> tuple[TetMesh, str, int]:
+                      limits: dict[str, Any] | None = None) -> tuple[TetMesh, str, int, TetMesh | None]:
         """Delaunay refinement of `mesh` (a Gabriel boundary) in one tetrahedralization
         (``_core.refine_interior``): the points `insert` (k, 3) placed first (each strictly outside every
         closed diametral sphere and in the domain, exact, else dropped), then the circumcenters of the tets
@@ -150,9 +150,10 @@ class InteriorRefiner:
         frees. limits: the boundary repair's stats (its min_length and max_steiner bound the splits). Returns
         the mesh (points: the input's, then the new ones in order; boundary_faces, face_facets and segments
         the split boundary), the pass's status ("converged", "blocked", "budget_exhausted"; "not_conforming"
-        or "boundary_stopped": the split boundary needs the repair, whose input the returned mesh's boundary
-        and interior points are, its tets not to be used; "not_conforming" with `mesh` itself returned: it was
-        not Delaunay to begin with) and the number of tets left over a bound."""
+        with `mesh` itself returned: it was not Delaunay to begin with; "not_conforming" or
+        "boundary_stopped" after a boundary step: the mesh is the pass's state before that step, Gabriel and
+        conforming), the number of tets left over a bound, and, after such a step, the split boundary over
+        all the points (no tets) for the repair to tetrahedralize, else None."""
         attrs, labels = self.region_labels(mesh)
         left = self.time_limit - (time.perf_counter() - self.started)
         limits = limits or {}
@@ -170,14 +171,23 @@ class InteriorRefiner:
         self.boundary_rounds += r.boundary_rounds
         self.refused_splits += r.refused_splits
         if r.status == "not_conforming" and not r.boundary_rounds:
-            return mesh, r.status, 0
+            return mesh, r.status, 0, None
         regions = None if mesh.tet_regions is None else attrs[r.tet_labels]
-        face_facets = np.asarray(r.face_facets, dtype=np.int64)
-        grown = replace(mesh, points=r.points, tets=np.asarray(r.tets, dtype=np.int64), tet_regions=regions,
-                        boundary_faces=np.asarray(r.faces, dtype=np.int64), face_facets=face_facets,
-                        face_markers=self.plc.markers_of_facets(face_facets),
-                        segments=np.asarray(r.segments, dtype=np.int64).reshape(-1, 2))
-        return grown, r.status, len(r.blocked_rows)
+        grown = self._with_boundary(replace(mesh, points=r.points[: r.certified_points],
+                                            tets=np.asarray(r.tets, dtype=np.int64), tet_regions=regions),
+                                    r.faces, r.face_facets, r.segments)
+        split = None
+        if r.certified_points < len(r.points):
+            split = self._with_boundary(replace(mesh, points=r.points, tets=np.zeros((0, 4), dtype=np.int64),
+                                                tet_regions=None), r.split_faces, r.split_face_facets,
+                                        r.split_segments)
+        return grown, r.status, len(r.blocked_rows), split
+
+    def _with_boundary(self, mesh: TetMesh, faces: Any, face_facets: Any, segments: Any) -> TetMesh:
+        facets = np.asarray(face_facets, dtype=np.int64)
+        return replace(mesh, boundary_faces=np.asarray(faces, dtype=np.int64), face_facets=facets,
+                       face_markers=self.plc.markers_of_facets(facets),
+                       segments=np.asarray(segments, dtype=np.int64).reshape(-1, 2))
 
     def bad_tets(self, mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
         """Rows of mesh.tets over a bound, most skewed first, and their circumcenters (floating point)."""
