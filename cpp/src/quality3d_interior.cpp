@@ -100,13 +100,11 @@ class InteriorRefiner {
         collect(split);
         certified.status = gabriel ? "not_conforming" : "boundary_stopped";
         certified.certified_points = static_cast<long long>(mark);
-        certified.points = std::move(split.points);
-        certified.split_faces = std::move(split.faces);
-        certified.split_face_facets = std::move(split.face_facets);
-        certified.split_segments = std::move(split.segments);
-        certified.boundary_rounds = out.boundary_rounds;
-        certified.boundary_points = split.boundary_points;
-        certified.refused_splits = split.refused_splits;
+        certified.points.swap(split.points);  // the step's boundary points after the certified ones
+        std::tie(certified.split_faces, certified.split_face_facets, certified.split_segments) =
+            std::tie(split.faces, split.face_facets, split.segments);
+        std::tie(certified.boundary_rounds, certified.boundary_points, certified.refused_splits) =
+            std::make_tuple(out.boundary_rounds, split.boundary_points, split.refused_splits);
         return certified;
       }
       spheres_ = std::make_unique<SphereIndex>(pts_, faces_, segments_);
