@@ -16,7 +16,7 @@ from nonobtuse import _core
 from nonobtuse.cli import EXIT_INVALID, EXIT_OK, main
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import check_gabriel, load_plc, read_tetmesh_json
-from nonobtuse.mesh3d.plc import PLC
+from nonobtuse.mesh3d.plc import PLC, TetMesh
 from nonobtuse.mesh3d.quality3d import refine_quality3d
 
 DATA3D = Path(__file__).resolve().parent / "data" / "3d"
@@ -255,9 +255,10 @@ def test_interior_pass_keeps_the_boundary_and_labels():
     assert (face < 0).all() and (segment < 0).all()
 
 
-def test_interior_pass_leaves_out_removed_points_and_keeps_the_regions():
-    """The points a pass inserted, removed by the next: the points are the repair's again, in order, and each
-    region keeps its volume (its cells seeded where the removed points were)."""
+def test_interior_pass_splits_the_boundary_and_keeps_the_regions():
+    """One pass with facet ids on a repaired two-region mesh: centers in closed diametral spheres split the
+    boundary inside the pass; the boundary returned is Gabriel (exact), the input points come first, in
+    order, and each region keeps its volume."""
     from nonobtuse.mesh3d import refine_gabriel
     from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes
 
@@ -265,19 +266,38 @@ def test_interior_pass_leaves_out_removed_points_and_keeps_the_regions():
     attrs, labels = np.unique(np.asarray(g.mesh.tet_regions), return_inverse=True)
     faces, segments = np.asarray(g.mesh.boundary_faces), np.asarray(g.mesh.segments).reshape(-1, 2)
     free = np.full(len(attrs), np.inf)
-    grown = _core.refine_interior(g.mesh.points, np.asarray(g.mesh.tets), labels.ravel(), faces, segments,
-                                  2.0, free, 10**6, 60.0)
-    added = np.arange(len(g.mesh.points), len(grown.points))
-    assert len(added) > 0
-    r = _core.refine_interior(grown.points, grown.tets, grown.tet_labels, faces, segments, 0.0, free, 0, 60.0,
-                              added)
-    assert r.status == "converged" and r.inserted == 0
-    assert np.array_equal(r.points, g.mesh.points)
+    r = _core.refine_interior(g.mesh.points, np.asarray(g.mesh.tets), labels.ravel(), faces, segments, 1.5,
+                              free, 10**6, 60.0, face_facets=np.asarray(g.mesh.face_facets))
+    assert r.status in ("converged", "blocked") and r.boundary_rounds > 0 and r.boundary_points > 0
+    assert np.array_equal(r.points[: len(g.mesh.points)], g.mesh.points)
+    assert len(r.faces) > len(faces) and len(r.face_facets) == len(r.faces)
+    assert set(np.asarray(r.face_facets).tolist()) == set(np.asarray(g.mesh.face_facets).tolist())
+    assert check_gabriel(TetMesh(r.points, r.tets, r.faces, np.zeros(len(r.faces)), r.segments)).ok
     before = signed_tet_volumes(g.mesh.points, np.asarray(g.mesh.tets))
     after = signed_tet_volumes(r.points, r.tets)
     assert (after > 0).all()
     for k in range(len(attrs)):
         assert after[r.tet_labels == k].sum() == pytest.approx(before[labels.ravel() == k].sum(), rel=1e-12)
-    with pytest.raises(InvalidInputError, match="corner of a face"):
-        _core.refine_interior(grown.points, grown.tets, grown.tet_labels, faces, segments, 0.0, free, 0, 60.0,
-                              faces[:1, 0])
+    with pytest.raises(InvalidInputError, match="face_facets"):
+        _core.refine_interior(g.mesh.points, np.asarray(g.mesh.tets), labels.ravel(), faces, segments, 1.5,
+                              free, 10**6, 60.0, face_facets=np.zeros(2, dtype=np.int64))
+
+
+def test_interior_pass_hands_back_the_state_before_a_boundary_step_it_cannot_finish():
+    """A regular tet (cospherical points everywhere) with a small volume bound: a boundary step whose split
+    boundary the pass's tetrahedralization cannot hold hands back the state before it (Gabriel, exact; the
+    tet's volume) with the split boundary over all points for the repair."""
+    from nonobtuse.mesh3d.control_volumes3d import signed_tet_volumes
+
+    points = np.array([[1, 1, 1], [1, -1, -1], [-1, 1, -1], [-1, -1, 1]], dtype=np.float64)
+    faces = np.array([[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]])
+    segments = np.array([[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]])
+    r = _core.refine_interior(points, np.array([[0, 1, 2, 3]]), np.zeros(1, dtype=np.int64), faces, segments,
+                              2.0, np.array([0.05]), 10**6, 60.0, face_facets=np.arange(4))
+    assert r.status in ("not_conforming", "boundary_stopped") and r.boundary_rounds > 0
+    kept = r.points[: r.certified_points]
+    assert r.certified_points < len(r.points) and len(r.split_faces) > len(r.faces)
+    assert check_gabriel(TetMesh(kept, r.tets, r.faces, np.zeros(len(r.faces)), r.segments)).ok
+    assert int(np.asarray(r.tets).max()) < r.certified_points
+    assert signed_tet_volumes(kept, r.tets).sum() == pytest.approx(8 / 3, rel=1e-12)
+    assert int(np.asarray(r.split_faces).max()) < len(r.points)

@@ -32,38 +32,55 @@ void bind_quality3d(py::module_& m) {
       .def_property_readonly("blocked_rows", [](const InteriorRefinement& r) { return from_vector(r.blocked_rows); })
       .def_property_readonly("blocked_centers",
                              [](const InteriorRefinement& r) { return from_points3(r.blocked_centers); })
-      .def_property_readonly("stand_ins", [](const InteriorRefinement& r) { return from_points3(r.stand_ins); })
+      .def_property_readonly("faces", [](const InteriorRefinement& r) { return from_index_rows<3>(r.faces); })
+      .def_property_readonly("face_facets", [](const InteriorRefinement& r) { return from_vector(r.face_facets); })
+      .def_property_readonly("segments", [](const InteriorRefinement& r) { return from_index_rows<2>(r.segments); })
+      .def_property_readonly("split_faces",
+                             [](const InteriorRefinement& r) { return from_index_rows<3>(r.split_faces); })
+      .def_property_readonly("split_face_facets",
+                             [](const InteriorRefinement& r) { return from_vector(r.split_face_facets); })
+      .def_property_readonly("split_segments",
+                             [](const InteriorRefinement& r) { return from_index_rows<2>(r.split_segments); })
+      .def_readonly("certified_points", &InteriorRefinement::certified_points)
       .def_readonly("status", &InteriorRefinement::status)
       .def_readonly("inserted", &InteriorRefinement::inserted)
-      .def_readonly("placed", &InteriorRefinement::placed);
+      .def_readonly("placed", &InteriorRefinement::placed)
+      .def_readonly("boundary_points", &InteriorRefinement::boundary_points)
+      .def_readonly("boundary_rounds", &InteriorRefinement::boundary_rounds)
+      .def_readonly("refused_splits", &InteriorRefinement::refused_splits);
   m.def(
       "refine_interior",
       [](const DoubleArray& points, const IndexArray& tets, const IndexArray& tet_labels, const IndexArray& faces,
          const IndexArray& segments, double radius_edge, const DoubleArray& volume_bounds, long long max_points,
-         double time_limit, const IndexArray& remove, const DoubleArray& insert) {
+         double time_limit, const DoubleArray& insert, const IndexArray& face_facets, long long max_boundary_points,
+         double min_length) {
         InteriorMesh mesh;
         mesh.points = to_points3(points, "points");
         mesh.tets = to_index_rows<4>(tets, mesh.points.size(), "tets");
         mesh.faces = to_index_rows<3>(faces, mesh.points.size(), "faces");
         mesh.segments = to_index_rows<2>(segments, mesh.points.size(), "segments");
         mesh.tet_labels.assign(tet_labels.data(), tet_labels.data() + tet_labels.size());
-        mesh.remove.assign(remove.data(), remove.data() + remove.size());
+        mesh.face_facets.assign(face_facets.data(), face_facets.data() + face_facets.size());
         mesh.insert = to_points3(insert, "insert");
         InteriorBounds bounds;
         bounds.radius_edge = radius_edge;
         bounds.volume_bounds.assign(volume_bounds.data(), volume_bounds.data() + volume_bounds.size());
         bounds.max_points = max_points;
         bounds.time_limit = time_limit;
+        bounds.max_boundary_points = max_boundary_points;
+        bounds.min_length = min_length;
         py::gil_scoped_release release;
         return refine_interior(mesh, bounds);
       },
       py::arg("points"), py::arg("tets"), py::arg("tet_labels"), py::arg("faces"), py::arg("segments"),
       py::arg("radius_edge"), py::arg("volume_bounds"), py::arg("max_points"), py::arg("time_limit"),
-      py::arg("remove") = IndexArray(0), py::arg("insert") = DoubleArray(std::vector<py::ssize_t>{0, 3}),
+      py::arg("insert") = DoubleArray(std::vector<py::ssize_t>{0, 3}), py::arg("face_facets") = IndexArray(0),
+      py::arg("max_boundary_points") = 1000000, py::arg("min_length") = 0.0,
       "Delaunay refinement of the interior of a mesh (n,3) points, (t,4) tets, (t,) labels with a Gabriel\n"
       "boundary (f,3) faces, (k,2) segments: circumcenters of tets over radius_edge (<= 0: none) or\n"
-      "volume_bounds[label] inserted outside every closed diametral sphere, after removing the points\n"
-      "remove (r,) and inserting the points insert (p,3) outside them (see quality3d.h).");
+      "volume_bounds[label] inserted outside every closed diametral sphere, after inserting the points\n"
+      "insert (p,3) outside them; with face_facets (f,) the facet id of each face, a center in a closed\n"
+      "sphere splits the boundary instead (see quality3d.h).");
 }
 
 }  // namespace nonobtuse::bindings

@@ -1,5 +1,5 @@
-// 3D interior quality: Delaunay refinement of the interior of a mesh with a fixed Gabriel boundary, the
-// triangulation kept between insertions (see refine_interior in quality3d.h).
+// 3D interior quality: Delaunay refinement of the interior of a mesh with a Gabriel boundary, the triangulation kept
+// between insertions, the boundary split where circumcenters encroach it (see refine_interior in quality3d.h).
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
@@ -10,17 +10,29 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <numeric>
 #include <queue>
+#include <set>
 #include <string>
 #include <tuple>
 
-#include "gabriel3d_index.h"
 #include "nonobtuse/quality3d.h"
+#include "quality3d_boundary.h"
+#include "quality3d_rows.h"
+#include "quality3d_spheres.h"
 
 namespace nonobtuse {
 namespace {
 
-using namespace gabriel3d;
+using gabriel3d::from_cgal;
+using gabriel3d::K;
+using gabriel3d::P3;
+using gabriel3d::to_cgal;
+using quality3d::BoundarySplitter;
+using quality3d::canonical_tet;
+using quality3d::check_input;
+using quality3d::sorted_corners;
+using quality3d::SphereIndex;
 using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
 using Cb = CGAL::Triangulation_cell_base_with_info_3<int, K, CGAL::Delaunay_triangulation_cell_base_3<K>>;
 using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
@@ -28,150 +40,10 @@ using DT = CGAL::Delaunay_triangulation_3<K, Tds>;
 using Cell = DT::Cell_handle;
 using Vertex = DT::Vertex_handle;
 
-// The closed diametral spheres of the subfacets and subsegments, found from a query point: the spheres' search
-// balls (which contain them, see search_ball) are grouped by radius in power-of-two classes, each a kd-tree over
-// the ball centers; a query asks each class for the centers within the class's largest radius of the point, and the
-// exact predicate decides.
-class SphereIndex {
- public:
-  SphereIndex(const std::vector<P3>& pts, const std::vector<Triangle>& faces, const std::vector<Segment>& segments)
-      : pts_(pts), faces_(faces), segments_(segments) {
-    std::map<int, std::size_t> class_of;
-    auto add = [&](const SearchBall& ball, int row) {
-      if (ball.everything || !std::isfinite(ball.radius)) {
-        always_.push_back(row);
-        return;
-      }
-      int e = 0;
-      std::frexp(ball.radius, &e);
-      auto [it, fresh] = class_of.emplace(e, classes_.size());
-      if (fresh) classes_.push_back({std::ldexp(1.0, e), {}, {}, nullptr});
-      Class& c = classes_[it->second];
-      c.centers.emplace_back(ball.center[0], ball.center[1], ball.center[2]);
-      c.rows.push_back(row);
-    };
-    for (std::size_t f = 0; f < faces.size(); ++f)
-      add(search_ball(pts[faces[f][0]], pts[faces[f][1]], pts[faces[f][2]]), static_cast<int>(f));
-    for (std::size_t s = 0; s < segments.size(); ++s)
-      add(search_ball(pts[segments[s][0]], pts[segments[s][1]]), -1 - static_cast<int>(s));
-    for (Class& c : classes_) c.index = std::make_unique<PointIndex>(c.centers);
-  }
-
-  static constexpr int kNone = std::numeric_limits<int>::min();
-
-  // The first subfacet (its row) or subsegment (-1 - its row) whose closed diametral sphere holds q, or kNone
-  // (exact).
-  int find(const P3& q) const {
-    for (int row : always_)
-      if (holds(row, q)) return row;
-    for (const Class& c : classes_) {
-      int found = kNone;
-      SearchBall around{{q.x(), q.y(), q.z()}, c.radius, false};
-      c.index->for_each_in(around, [&](int i) {
-        if (found == kNone && holds(c.rows[i], q)) found = c.rows[i];
-      });
-      if (found != kNone) return found;
-    }
-    return kNone;
-  }
-
-  bool hits(const P3& q) const { return find(q) != kNone; }
-
-  // The center and radius of the diametral sphere of row (floating point), and the unit direction from the center
-  // towards `side` across the subfacet's plane (for a subsegment, perpendicular to it).
-  std::tuple<P3, double, K::Vector_3> sphere_towards(int row, const P3& side) const {
-    P3 center;
-    K::Vector_3 up;
-    if (row >= 0) {
-      const Triangle& f = faces_[row];
-      const P3 &a = pts_[f[0]], &b = pts_[f[1]], &c = pts_[f[2]];
-      center = CGAL::circumcenter(a, b, c);
-      up = CGAL::cross_product(b - a, c - a);
-      if ((side - center) * up < 0) up = -up;
-    } else {
-      const Segment& g = segments_[-1 - row];
-      const P3 &a = pts_[g[0]], &b = pts_[g[1]];
-      center = CGAL::midpoint(a, b);
-      const K::Vector_3 along = b - a, away = side - center;
-      up = away - along * ((away * along) / (along * along));
-    }
-    const P3& corner = pts_[row >= 0 ? faces_[row][0] : segments_[-1 - row][0]];
-    const double length = std::sqrt(up * up);
-    return {center, std::sqrt(CGAL::squared_distance(center, corner)), length > 0 ? up / length : up};
-  }
-
-  // Is q strictly inside the diametral sphere of row? (exact)
-  bool strictly_inside(int row, const P3& q) const {
-    if (row >= 0) {
-      const Triangle& f = faces_[row];
-      return CGAL::side_of_bounded_sphere(pts_[f[0]], pts_[f[1]], pts_[f[2]], q) == CGAL::ON_BOUNDED_SIDE;
-    }
-    const Segment& g = segments_[-1 - row];
-    return CGAL::side_of_bounded_sphere(pts_[g[0]], pts_[g[1]], q) == CGAL::ON_BOUNDED_SIDE;
-  }
-
- private:
-  struct Class {
-    double radius;  // every search ball of the class has a smaller radius
-    std::vector<P3> centers;
-    std::vector<int> rows;  // face row, or -1 - segment row
-    std::unique_ptr<PointIndex> index;
-  };
-  bool holds(int row, const P3& q) const {
-    if (row >= 0) {
-      const Triangle& f = faces_[row];
-      return CGAL::side_of_bounded_sphere(pts_[f[0]], pts_[f[1]], pts_[f[2]], q) != CGAL::ON_UNBOUNDED_SIDE;
-    }
-    const Segment& s = segments_[-1 - row];
-    return CGAL::side_of_bounded_sphere(pts_[s[0]], pts_[s[1]], q) != CGAL::ON_UNBOUNDED_SIDE;
-  }
-  const std::vector<P3>& pts_;
-  const std::vector<Triangle>& faces_;
-  const std::vector<Segment>& segments_;
-  std::vector<Class> classes_;
-  std::vector<int> always_;
-};
-
-std::array<int, 4> sorted_corners(std::array<int, 4> k) {
-  std::sort(k.begin(), k.end());
-  return k;
-}
-
-void check_input(const InteriorMesh& mesh, const InteriorBounds& bounds) {
-  const auto n = static_cast<int>(mesh.points.size());
-  auto in_range = [&](int v, const char* what, std::size_t row) {
-    if (v < 0 || v >= n)
-      throw InvalidInput(std::string(what) + " " + std::to_string(row) + " refers to point " + std::to_string(v) +
-                         ", but there are " + std::to_string(n) + " points");
-  };
-  for (std::size_t t = 0; t < mesh.tets.size(); ++t)
-    for (int v : mesh.tets[t]) in_range(v, "tet", t);
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-    for (int v : mesh.faces[f]) in_range(v, "face", f);
-  for (std::size_t s = 0; s < mesh.segments.size(); ++s)
-    for (int v : mesh.segments[s]) in_range(v, "segment", s);
-  std::vector<bool> on_boundary(mesh.points.size(), false);
-  for (const Triangle& f : mesh.faces)
-    for (int v : f) on_boundary[v] = true;
-  for (const Segment& s : mesh.segments)
-    for (int v : s) on_boundary[v] = true;
-  for (std::size_t r = 0; r < mesh.remove.size(); ++r) {
-    in_range(mesh.remove[r], "removed point", r);
-    if (on_boundary[mesh.remove[r]])
-      throw InvalidInput("removed point " + std::to_string(mesh.remove[r]) + " is a corner of a face or segment");
-  }
-  if (mesh.tet_labels.size() != mesh.tets.size())
-    throw InvalidInput("tet_labels has " + std::to_string(mesh.tet_labels.size()) + " entries for " +
-                       std::to_string(mesh.tets.size()) + " tets");
-  for (std::size_t t = 0; t < mesh.tet_labels.size(); ++t)
-    if (mesh.tet_labels[t] < 0 || static_cast<std::size_t>(mesh.tet_labels[t]) >= bounds.volume_bounds.size())
-      throw InvalidInput("tet " + std::to_string(t) + " has label " + std::to_string(mesh.tet_labels[t]) +
-                         ", but there are " + std::to_string(bounds.volume_bounds.size()) + " volume bounds");
-}
-
 class InteriorRefiner {
  public:
-  InteriorRefiner(const InteriorMesh& mesh, const InteriorBounds& bounds) : mesh_(mesh), bounds_(bounds) {
+  InteriorRefiner(const InteriorMesh& mesh, const InteriorBounds& bounds)
+      : mesh_(mesh), bounds_(bounds), faces_(mesh.faces), segments_(mesh.segments) {
     pts_.reserve(mesh.points.size());
     for (const auto& p : mesh.points) pts_.push_back(to_cgal(p));
     for (const Triangle& f : mesh.faces)
@@ -180,22 +52,21 @@ class InteriorRefiner {
                            ", " + std::to_string(f[2]) + ": no diametral sphere");
     for (const Segment& s : mesh.segments)
       if (pts_[s[0]] == pts_[s[1]]) throw InvalidInput("a segment has coincident ends " + std::to_string(s[0]));
-    spheres_ = std::make_unique<SphereIndex>(pts_, mesh.faces, mesh.segments);
+    if (!mesh.face_facets.empty())
+      splitter_ = std::make_unique<BoundarySplitter>(mesh.points, mesh.faces, mesh.face_facets, mesh.segments,
+                                                     bounds.min_length, bounds.max_boundary_points);
+    spheres_ = std::make_unique<SphereIndex>(pts_, faces_, segments_);
   }
 
   // Builds the Delaunay tetrahedralization and labels its cells; false when a subfacet or subsegment is not in it.
   bool build() {
-    kept_.assign(pts_.size(), true);
-    for (int r : mesh_.remove) kept_[r] = false;
     std::vector<std::pair<P3, int>> input;
-    for (std::size_t i = 0; i < pts_.size(); ++i)
-      if (kept_[i]) input.emplace_back(pts_[i], static_cast<int>(i));
+    for (std::size_t i = 0; i < pts_.size(); ++i) input.emplace_back(pts_[i], static_cast<int>(i));
     dt_.insert(input.begin(), input.end());
     vertex_.assign(pts_.size(), Vertex());
     for (auto v = dt_.finite_vertices_begin(); v != dt_.finite_vertices_end(); ++v) vertex_[v->info()] = v;
-    for (std::size_t i = 0; i < pts_.size(); ++i)
-      if (kept_[i] && vertex_[i] == Vertex())
-        throw InvalidInput("two points are equal: the tetrahedralization has fewer vertices");
+    if (std::count(vertex_.begin(), vertex_.end(), Vertex()))
+      throw InvalidInput("two points are equal: the tetrahedralization has fewer vertices");
     if (!conforming()) return false;
     label_cells();
     return true;
@@ -204,22 +75,39 @@ class InteriorRefiner {
   InteriorRefinement run() {
     InteriorRefinement out;
     for (const Point3& p : mesh_.insert) out.placed += place(to_cgal(p), Cell());
-    queue_ = {};  // every cell is queued next, once
-    for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c) push_if_bad(c);
-    const auto started = std::chrono::steady_clock::now();
+    started_ = std::chrono::steady_clock::now();
     out.status = "converged";
-    while (!queue_.empty()) {
-      if (inserted_ >= bounds_.max_points ||
-          (inserted_ % 64 == 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
-                                      bounds_.time_limit)) {
+    for (;;) {
+      if (!refine_cells()) {
         out.status = "budget_exhausted";
         break;
       }
-      Entry e = queue_.top();
-      queue_.pop();
-      Cell c;
-      if (!dt_.is_cell(e.v[0], e.v[1], e.v[2], e.v[3], c)) continue;  // destroyed by an insertion since
-      try_insert(c);
+      if (!splitter_) break;
+      const std::size_t mark = pts_.size();
+      InteriorRefinement certified;  // the state before this step: returned if the step fails
+      collect(certified);
+      const bool gabriel = split_boundary();
+      if (splitter_->points().size() == mark) {  // nothing split: the cells left stay blocked
+        if (out_of_time()) out.status = "budget_exhausted";
+        break;
+      }
+      ++out.boundary_rounds;
+      const Regions before = regions();
+      insert_boundary_points(mark);
+      if (!gabriel || !extract_boundary() || !relabel(before)) {
+        conforming_ = false;
+        InteriorRefinement split;
+        collect(split);
+        certified.status = gabriel ? "not_conforming" : "boundary_stopped";
+        certified.certified_points = static_cast<long long>(mark);
+        certified.points.swap(split.points);  // the step's boundary points after the certified ones
+        std::tie(certified.split_faces, certified.split_face_facets, certified.split_segments) =
+            std::tie(split.faces, split.face_facets, split.segments);
+        std::tie(certified.boundary_rounds, certified.boundary_points, certified.refused_splits) =
+            std::make_tuple(out.boundary_rounds, split.boundary_points, split.refused_splits);
+        return certified;
+      }
+      spheres_ = std::make_unique<SphereIndex>(pts_, faces_, segments_);
     }
     collect(out);
     if (out.status == "converged" && !out.blocked_rows.empty()) out.status = "blocked";
@@ -234,51 +122,34 @@ class InteriorRefiner {
     bool operator<(const Entry& o) const { return std::tie(ratio, key) < std::tie(o.ratio, o.key); }
   };
 
+  bool out_of_time() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count() > bounds_.time_limit;
+  }
+
   // Is every subfacet a face and every subsegment an edge of dt_?
   bool conforming() const {
     Cell c;
     int i = 0, j = 0, k = 0;
-    for (const Triangle& f : mesh_.faces)
+    for (const Triangle& f : faces_)
       if (!dt_.is_facet(vertex_[f[0]], vertex_[f[1]], vertex_[f[2]], c, i, j, k)) return false;
-    for (const Segment& s : mesh_.segments)
+    for (const Segment& s : segments_)
       if (!dt_.is_edge(vertex_[s[0]], vertex_[s[1]], c, i, j)) return false;
     return true;
   }
 
-  // Domain cells: those of the input tets, then by flood fill across faces that are not subfacets (a Delaunay
-  // tetrahedralization with every subfacet as a face holds the same domain split differently where points are
-  // cospherical).
-  void label_cells() {
-    std::map<std::array<int, 4>, int> label_of;
-    std::map<int, int> removed_label;  // a removed point's star lies in one region (it is on no subfacet)
-    for (std::size_t t = 0; t < mesh_.tets.size(); ++t) {
-      label_of.emplace(sorted_corners(mesh_.tets[t]), mesh_.tet_labels[t]);
-      for (int v : mesh_.tets[t])
-        if (!kept_[v]) removed_label[v] = mesh_.tet_labels[t];
-    }
-    std::map<std::array<int, 3>, bool> subfacet;
-    for (const Triangle& f : mesh_.faces) {
-      std::array<int, 3> k = f;
+  std::set<std::array<int, 3>> subfacet_keys() const {
+    std::set<std::array<int, 3>> keys;
+    for (std::array<int, 3> k : faces_) {
       std::sort(k.begin(), k.end());
-      subfacet[k] = true;
+      keys.insert(k);
     }
-    std::vector<Cell> stack;
-    for (auto c = dt_.all_cells_begin(); c != dt_.all_cells_end(); ++c) {
-      c->info() = -1;
-      if (dt_.is_infinite(c)) continue;
-      auto it = label_of.find(corners(c));
-      if (it != label_of.end()) {
-        c->info() = it->second;
-        stack.push_back(c);
-      }
-    }
-    for (auto [v, label] : removed_label) {  // the cell now holding a removed point is in its region
-      Cell c = dt_.locate(pts_[v]);
-      if (!dt_.is_infinite(c) && c->info() < 0) {
-        c->info() = label;
-        stack.push_back(c);
-      }
-    }
+    return keys;
+  }
+
+  // Floods the labels of the cells labelled (>= 0) into the unlabelled finite cells (-1) across faces that are not
+  // subfacets.
+  void flood_labels(std::vector<Cell> stack) {
+    const auto subfacet = subfacet_keys();
     while (!stack.empty()) {
       Cell c = stack.back();
       stack.pop_back();
@@ -296,21 +167,49 @@ class InteriorRefiner {
     }
   }
 
+  // Domain cells: those of the input tets, then by flood fill across faces that are not subfacets (a Delaunay
+  // tetrahedralization with every subfacet as a face holds the same domain split differently where points are
+  // cospherical).
+  void label_cells() {
+    std::map<std::array<int, 4>, int> label_of;
+    for (std::size_t t = 0; t < mesh_.tets.size(); ++t)
+      label_of.emplace(sorted_corners(mesh_.tets[t]), mesh_.tet_labels[t]);
+    std::vector<Cell> stack;
+    for (auto c = dt_.all_cells_begin(); c != dt_.all_cells_end(); ++c) {
+      c->info() = -1;
+      if (dt_.is_infinite(c)) continue;
+      auto it = label_of.find(corners(c));
+      if (it != label_of.end()) {
+        c->info() = it->second;
+        stack.push_back(c);
+      }
+    }
+    flood_labels(std::move(stack));
+  }
+
+  // The circumcenter of c from its corners in index order: the rounding does not depend on the cell's history.
+  P3 circumcenter(Cell c) const {
+    const std::array<int, 4> k = corners(c);
+    return CGAL::circumcenter(pts_[k[0]], pts_[k[1]], pts_[k[2]], pts_[k[3]]);
+  }
+
   static std::array<int, 4> corners(Cell c) {
     return sorted_corners({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
   }
 
   // Radius-edge ratio and whether the domain cell c is over a bound (floating point).
+  // The corners in index order: the rounding does not depend on the cell's history (the order of a cell's
+  // vertices follows the insertions, and the spatial sort of a bulk insertion is randomized).
   std::pair<double, bool> measure(Cell c) const {
-    const P3 &a = c->vertex(0)->point(), &b = c->vertex(1)->point(), &d = c->vertex(2)->point(),
-             &e = c->vertex(3)->point();
+    const std::array<int, 4> k = corners(c);
+    const P3 &a = pts_[k[0]], &b = pts_[k[1]], &d = pts_[k[2]], &e = pts_[k[3]];
     double shortest = std::numeric_limits<double>::infinity();
     const P3* v[4] = {&a, &b, &d, &e};
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) shortest = std::min(shortest, CGAL::squared_distance(*v[i], *v[j]));
     const double radius2 = CGAL::squared_radius(a, b, d, e);
     const double ratio = std::sqrt(radius2 / shortest);
-    const double volume = CGAL::volume(a, b, d, e);
+    const double volume = std::abs(CGAL::volume(a, b, d, e));
     const bool over = (bounds_.radius_edge > 0 && ratio > bounds_.radius_edge) ||
                       volume > bounds_.volume_bounds[c->info()] || !std::isfinite(ratio);
     return {ratio, over};
@@ -324,6 +223,22 @@ class InteriorRefiner {
                  {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
   }
 
+  // Inserts the circumcenters of the cells over a bound, worst first, until none can be; false at max_points or
+  // time_limit.
+  bool refine_cells() {
+    queue_ = {};  // every cell is queued next, once
+    for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c) push_if_bad(c);
+    while (!queue_.empty()) {
+      if (inserted_ >= bounds_.max_points || (inserted_ % 64 == 0 && out_of_time())) return false;
+      Entry e = queue_.top();
+      queue_.pop();
+      Cell c;
+      if (!dt_.is_cell(e.v[0], e.v[1], e.v[2], e.v[3], c)) continue;  // destroyed by an insertion since
+      try_insert(c);
+    }
+    return true;
+  }
+
   // Split rule. Termination (Shewchuk, Si's TetGen): a circumcenter is inserted only strictly outside every closed
   // diametral sphere, so the boundary is never changed here, and it is at distance r (the tet's circumradius) from
   // every vertex (the circumsphere is empty). A tet over the radius-edge bound R has r > R * (its shortest edge), so
@@ -332,10 +247,11 @@ class InteriorRefiner {
   // insertion radii grow along every chain of tets that trigger one another and cannot shrink below the boundary's
   // own spacing; a tet over the volume bound V has r >= (3V / 4 pi)^(1/3) (a tet lies in its circumsphere). So the
   // points inserted here are well spaced in a bounded domain, and finitely many; max_points and time_limit bound the
-  // loop anyway. Near small input angles (a center in a closed diametral sphere, outside the domain or on a vertex)
-  // nothing is inserted: the tet is blocked and handed back, as TetGen leaves such tets and counts them.
+  // loop anyway. A center in a closed diametral sphere goes to split_boundary; outside the domain or on a vertex
+  // (near small input angles, or rounding) nothing is inserted: the tet is blocked and handed back, as TetGen leaves
+  // such tets and counts them.
   void try_insert(Cell c) {
-    if (place(dt_.dual(c), c)) ++inserted_;
+    if (place(circumcenter(c), c)) ++inserted_;
   }
 
   // Inserts p when it is finite, strictly outside every closed diametral sphere, in a domain cell and on no vertex
@@ -352,6 +268,8 @@ class InteriorRefiner {
     Vertex v = dt_.insert(p, lt, at, li, lj);
     v->info() = index;
     pts_.push_back(p);
+    vertex_.push_back(v);
+    if (splitter_) splitter_->add_interior_point(p);
     std::vector<Cell> incident;
     dt_.finite_incident_cells(v, std::back_inserter(incident));
     for (Cell n : incident) n->info() = label;  // the cavity is in one region: it crosses no subfacet
@@ -359,65 +277,211 @@ class InteriorRefiner {
     return true;
   }
 
-  void collect(InteriorRefinement& out) const {
-    std::vector<int> index(pts_.size(), -1);  // compacted past the removed points
-    out.points.reserve(pts_.size());
-    for (std::size_t i = 0; i < pts_.size(); ++i)
-      if (i >= kept_.size() || kept_[i]) {  // inserted points come after the input's
-        index[i] = static_cast<int>(out.points.size());
-        out.points.push_back(from_cgal(pts_[i]));
-      }
+  // Split rule at the boundary (Ruppert; Shewchuk, "Tetrahedral mesh generation by Delaunay refinement", 1998; Si's
+  // TetGen). A circumcenter of a tet over a bound that lies in the closed diametral sphere of a subsegment splits that
+  // subsegment at its midpoint; in that of a subfacet, the subfacet at its circumcenter z, unless z encroaches
+  // subsegments of its facet, which are split instead. Then every subsegment and subfacet that any vertex encroaches
+  // is split by the same rule, subsegments first, until the boundary is Gabriel again, and the next refine_cells
+  // inserts the circumcenters that are now free. Termination (Shewchuk's insertion radii, for R >= 2 and input angles
+  // of at least 90 degrees): a vertex's insertion radius (its distance to the nearest vertex when inserted) is at
+  // least r > R l >= 2 l for a circumcenter made for a tet with shortest edge l, at least r / sqrt 2 for a subfacet
+  // circumcenter that such a circumcenter encroached, and at least 1 / sqrt 2 of that for a subsegment midpoint that
+  // the subfacet circumcenter encroached; around the chain circumcenter -> subfacet -> subsegment -> circumcenter the
+  // factor is R / 2 >= 1, so radii never shrink below the local feature size and finitely many points fit. Near
+  // smaller input angles the chains can shrink: splits stop at min_length and max_boundary_points (refused, counted),
+  // their tets stay blocked, as TetGen leaves such tets and counts them; time_limit bounds every step.
+  bool split_boundary() {
+    struct Blocked {
+      double ratio;
+      std::array<int, 4> key;
+      P3 center;
+    };
+    std::vector<Blocked> blocked;
     for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c) {
       if (c->info() < 0) continue;
-      const int row = static_cast<int>(out.tets.size());
-      out.tets.push_back({index[c->vertex(0)->info()], index[c->vertex(1)->info()], index[c->vertex(2)->info()],
-                          index[c->vertex(3)->info()]});
-      out.tet_labels.push_back(c->info());
-      if (measure(c).second) {
-        const P3 center = dt_.dual(c);
-        out.blocked_rows.push_back(row);
-        out.blocked_centers.push_back(from_cgal(center));
-        out.stand_ins.push_back(stand_in(c, center));
-      }
+      auto [ratio, over] = measure(c);
+      const P3 center = over ? circumcenter(c) : P3();
+      if (over && std::isfinite(center.x()) && std::isfinite(center.y()) && std::isfinite(center.z()) &&
+          spheres_->hits(center))
+        blocked.push_back({std::isfinite(ratio) ? ratio : std::numeric_limits<double>::max(), corners(c), center});
     }
-    out.inserted = inserted_;
+    std::sort(blocked.begin(), blocked.end(), [](const Blocked& x, const Blocked& y) {
+      return std::tie(y.ratio, x.key) < std::tie(x.ratio, y.key);  // worst first
+    });
+    for (const Blocked& b : blocked) {
+      if (out_of_time()) return false;
+      const int row = spheres_->find(b.center);  // the spheres as the step began
+      if (row < 0) {
+        const Segment& s = segments_[-1 - row];
+        if (splitter_->is_subsegment(s[0], s[1])) splitter_->split_subsegment(s[0], s[1]);
+        continue;
+      }
+      const auto [a, p, q] = faces_[row];
+      const int f = splitter_->common_facet(a, p, q);
+      // still a Delaunay face of its facet when no point (of an earlier split of this step) encroaches it
+      if (f >= 0 && !splitter_->encroached(a, p, q)) splitter_->split_subfacet(f, a, p, q);
+    }
+    return splitter_->restore_gabriel([&] { return out_of_time(); });
   }
 
-  // Ruppert's and Shewchuk's rule for a circumcenter in a closed diametral sphere: split that subfacet or
-  // subsegment, once. The caller's boundary repair splits what its points encroach until none does, so the point
-  // that stands for the center is put high in the sphere, on the side of the tet: at height (1 - 2^-k) r above the
-  // sphere's center for k = 4 down to 1, the first strictly inside the sphere and strictly inside a domain cell
-  // (both exact). Once the subfacet is split at its circumcenter, the children's spheres have that point as a
-  // corner's center distance away in the plane, so a point that high leaves them: one split, not a cascade down to
-  // the center's distance from the plane. NaN when no such point is found (or the center is in no sphere).
-  Point3 stand_in(Cell c, const P3& center) const {
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    if (!std::isfinite(center.x()) || !std::isfinite(center.y()) || !std::isfinite(center.z())) return {nan, nan, nan};
-    const int row = spheres_->find(center);
-    if (row == SphereIndex::kNone) return {nan, nan, nan};
-    const P3 side = CGAL::centroid(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
-                                   c->vertex(3)->point());
-    auto [sphere_center, radius, up] = spheres_->sphere_towards(row, side);
-    for (int k = 4; k >= 1; --k) {
-      const P3 q = sphere_center + up * (radius * (1.0 - std::ldexp(1.0, -k)));
-      if (!spheres_->strictly_inside(row, q)) continue;
-      DT::Locate_type lt;
-      int li = 0, lj = 0;
-      Cell at = dt_.locate(q, lt, li, lj, c);
-      if (lt == DT::CELL && !dt_.is_infinite(at) && at->info() >= 0) return from_cgal(q);
+  // The splitter's new points (from index mark on) into dt_, their cells unlabelled.
+  void insert_boundary_points(std::size_t mark) {
+    Cell hint;
+    for (std::size_t i = mark; i < splitter_->points().size(); ++i) {
+      const P3& p = splitter_->points()[i];
+      pts_.push_back(p);
+      Vertex v = dt_.insert(p, hint);
+      v->info() = static_cast<int>(i);
+      vertex_.push_back(v);
+      std::vector<Cell> incident;
+      dt_.finite_incident_cells(v, std::back_inserter(incident));
+      for (Cell n : incident) n->info() = -1;
+      hint = v->cell();
     }
-    return {nan, nan, nan};
+  }
+
+  // The subfacets as faces of dt_: the facets' triangulations, with their edges flipped where dt_ chose the other
+  // diagonal of nearly cocircular points (BoundarySplitter::follow). False unless each is a face and every
+  // subsegment an edge of dt_.
+  bool extract_boundary() {
+    Cell c;
+    int i = 0, j = 0, k = 0;
+    auto is_face = [&](int a, int b, int d) { return dt_.is_facet(vertex_[a], vertex_[b], vertex_[d], c, i, j, k); };
+    if (splitter_->follow(is_face) > 0) return false;
+    std::vector<Triangle> faces;
+    std::vector<int> facets;
+    splitter_->subfacets(faces, facets);
+    std::vector<std::pair<Cell, int>> sides;
+    for (const Triangle& t : faces) {
+      is_face(t[0], t[1], t[2]);
+      sides.emplace_back(c, 6 - i - j - k);
+    }
+    std::vector<Segment> segments = splitter_->subsegments();
+    for (const Segment& s : segments)
+      if (!dt_.is_edge(vertex_[s[0]], vertex_[s[1]], c, i, j)) return false;
+    faces_ = std::move(faces);
+    face_facets_ = std::move(facets);
+    face_sides_ = std::move(sides);
+    segments_ = std::move(segments);
+    return true;
+  }
+
+  // The labelled cells before a boundary step: each one's centroid and label, and each label's volume.
+  struct Regions {
+    std::vector<std::pair<P3, int>> seeds;
+    std::vector<double> volumes;
+  };
+  Regions regions() const {
+    Regions r{{}, std::vector<double>(bounds_.volume_bounds.size(), 0.0)};
+    for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c) {
+      if (c->info() < 0) continue;
+      const P3 &a = c->vertex(0)->point(), &b = c->vertex(1)->point(), &d = c->vertex(2)->point(),
+               &e = c->vertex(3)->point();
+      r.seeds.emplace_back(CGAL::centroid(a, b, d, e), c->info());
+      r.volumes[c->info()] += CGAL::volume(a, b, d, e);
+    }
+    return r;
+  }
+
+  // Labels the cells the boundary points made: a flood fill from the cells kept, then, for a region left with less
+  // volume than before (all cells of a part of it were remade), from the cells that hold its old cells' centroids
+  // (inside the region, which the boundary points do not change). False when a region's volume still differs (by
+  // more than rounding). Then orients each subfacet away from a domain cell behind it.
+  bool relabel(const Regions& before) {
+    std::vector<Cell> stack;
+    for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c)
+      if (c->info() >= 0) stack.push_back(c);
+    flood_labels(std::move(stack));
+    auto short_of = [&](const Regions& now, int label) {
+      return now.volumes[label] < before.volumes[label] * (1 - 1e-9);
+    };
+    Regions now = regions();
+    for (const auto& [at, label] : before.seeds) {
+      if (!short_of(now, label)) continue;
+      Cell c = dt_.locate(at);
+      if (dt_.is_infinite(c) || c->info() >= 0) continue;
+      c->info() = label;
+      flood_labels({c});
+      now = regions();
+    }
+    for (std::size_t label = 0; label < before.volumes.size(); ++label)
+      if (short_of(now, static_cast<int>(label)) || now.volumes[label] > before.volumes[label] * (1 + 1e-9))
+        return false;
+    for (std::size_t f = 0; f < faces_.size(); ++f) {
+      Cell cell = face_sides_[f].first;
+      int index = face_sides_[f].second;
+      if (cell->info() < 0) {  // the domain cell is the one across
+        const Cell across = cell->neighbor(index);
+        index = across->index(cell);
+        cell = across;
+      }
+      Triangle& t = faces_[f];
+      if (CGAL::orientation(pts_[t[0]], pts_[t[1]], pts_[t[2]], cell->vertex(index)->point()) == CGAL::POSITIVE)
+        std::swap(t[1], t[2]);
+      std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());  // one row, whatever the history
+    }
+    std::vector<std::size_t> order(faces_.size());  // and one order
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return faces_[x] < faces_[y]; });
+    std::vector<Triangle> faces;
+    std::vector<int> facets;
+    for (std::size_t row : order) faces.push_back(faces_[row]), facets.push_back(face_facets_[row]);
+    faces_ = std::move(faces);
+    face_facets_ = std::move(facets);
+    face_sides_.clear();
+    return true;
+  }
+
+  void collect(InteriorRefinement& out) const {
+    for (const P3& p : pts_) out.points.push_back(from_cgal(p));
+    std::vector<std::pair<std::array<int, 4>, Cell>> cells;  // the cells' order follows their history: sorted
+    for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c)
+      if (c->info() >= 0)
+        cells.emplace_back(canonical_tet({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(),
+                                          c->vertex(3)->info()}),
+                           c);
+    std::sort(cells.begin(), cells.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (const auto& [t, c] : cells) {
+      if (measure(c).second) {
+        out.blocked_rows.push_back(static_cast<int>(out.tets.size()));
+        out.blocked_centers.push_back(from_cgal(circumcenter(c)));
+      }
+      out.tets.push_back(t);
+      out.tet_labels.push_back(c->info());
+    }
+    out.inserted = inserted_;
+    out.certified_points = static_cast<long long>(pts_.size());
+    out.faces = faces_;
+    out.segments = segments_;
+    out.face_facets = mesh_.face_facets;
+    if (!splitter_) return;
+    out.boundary_points = splitter_->added;
+    out.refused_splits = splitter_->refused;
+    if (face_facets_.empty() && conforming_) return;  // no boundary step yet: the input's faces and facet ids
+    std::vector<int> facets = face_facets_;
+    if (!conforming_) {  // the facets' triangulations: the boundary for a repair to make Delaunay
+      splitter_->subfacets(out.faces, facets);
+      out.segments = splitter_->subsegments();
+    }
+    out.face_facets.clear();
+    for (int f : facets) out.face_facets.push_back(splitter_->facet_id(f));
   }
 
   const InteriorMesh& mesh_;
   const InteriorBounds& bounds_;
   std::vector<P3> pts_;
+  std::vector<Triangle> faces_;     // the subfacets (the input's, then those of dt_ after each boundary step)
+  std::vector<int> face_facets_;    // their facets (indices into the splitter's), after a boundary step
+  std::vector<std::pair<Cell, int>> face_sides_;  // a cell of dt_ with each subfacet as its face, and its index
+  std::vector<Segment> segments_;   // the subsegments
+  std::unique_ptr<BoundarySplitter> splitter_;  // none without face_facets: the boundary is fixed
   std::unique_ptr<SphereIndex> spheres_;
   DT dt_;
   std::vector<Vertex> vertex_;
-  std::vector<bool> kept_;  // per input point: false for those in InteriorMesh::remove
   std::priority_queue<Entry> queue_;
   long long inserted_ = 0;
+  bool conforming_ = true;  // false after a boundary step whose subfacets are not all faces of dt_
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
 };
 
 }  // namespace
@@ -430,6 +494,10 @@ InteriorRefinement refine_interior(const InteriorMesh& mesh, const InteriorBound
     out.points = mesh.points;
     out.tets = mesh.tets;
     out.tet_labels = mesh.tet_labels;
+    out.faces = mesh.faces;
+    out.face_facets = mesh.face_facets;
+    out.segments = mesh.segments;
+    out.certified_points = static_cast<long long>(mesh.points.size());
     out.status = "not_conforming";
     return out;
   }

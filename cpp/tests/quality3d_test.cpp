@@ -1,5 +1,7 @@
 #include "nonobtuse/quality3d.h"
 
+#include "nonobtuse/gabriel3d.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -97,40 +99,79 @@ TEST(RefineInterior, CenterInAFacesSphereIsBlockedAndElsewhereInserted) {
   EXPECT_EQ(blocked.status, "blocked");
   ASSERT_EQ(blocked.blocked_rows.size(), 1u);
   EXPECT_NEAR(blocked.blocked_centers[0].x, 0.0, 1e-12);
-  // Its stand-in lies high in that face's sphere, on the tet's side: center (-1/3, -1/3, -1/3), radius
-  // sqrt(24) / 3, direction (1, 1, 1) / sqrt(3), height 15/16 of the radius (inside the tet: x + y + z > -1 and
-  // the other three faces' inequalities hold at 0.55 per coordinate).
-  ASSERT_EQ(blocked.stand_ins.size(), 1u);
-  const double expected = -1.0 / 3 + std::sqrt(24.0) / 3 * 15.0 / 16 / std::sqrt(3.0);
-  EXPECT_NEAR(blocked.stand_ins[0].x, expected, 1e-12);
-  EXPECT_NEAR(blocked.stand_ins[0].y, expected, 1e-12);
-  EXPECT_NEAR(blocked.stand_ins[0].z, expected, 1e-12);
   bounds.max_points = 0;  // the budget is a status
   EXPECT_EQ(refine_interior(m, bounds).status, "budget_exhausted");
 }
 
-TEST(RefineInterior, RemovedPointLeavesItsStarToOneTetAndCompactsIndices) {
-  // A regular tet split at an interior point into four; removing the point leaves the one tet of the corners,
-  // labelled as the star was, and the point's index gone.
+// The regular tet of edge 2 sqrt 2 as a closed boundary: four facets of one face each, six subsegments.
+InteriorMesh regular_tet_boundary() {
   InteriorMesh m;
-  m.points = {{1, 1, 1}, {0.25, 0.5, -0.25}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
-  m.tets = {{1, 2, 3, 4}, {0, 1, 3, 4}, {0, 2, 1, 4}, {0, 2, 3, 1}};
-  m.tet_labels = {0, 0, 0, 0};
-  m.faces = {{2, 3, 4}};
-  m.remove = {1};
+  m.points = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  m.tets = {{0, 1, 2, 3}};
+  m.tet_labels = {0};
+  m.faces = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  m.face_facets = {0, 1, 2, 3};
+  m.segments = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  return m;
+}
+
+double det3(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  const double u[3] = {b.x - a.x, b.y - a.y, b.z - a.z}, v[3] = {c.x - a.x, c.y - a.y, c.z - a.z},
+               w[3] = {d.x - a.x, d.y - a.y, d.z - a.z};
+  return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
+}
+
+TEST(RefineInterior, BlockedCenterSplitsTheBoundaryAndTheResultStaysGabriel) {
+  // The center (0,0,0) lies in every face's diametral sphere. Each face is equilateral, so its circumcenter lies in
+  // the diametral spheres of its three edges (0.29 of the edge from their midpoints, radius 0.5 of it): Shewchuk's
+  // rule splits the edges at their midpoints instead of inserting it.
+  InteriorMesh m = regular_tet_boundary();
   InteriorBounds bounds;
-  bounds.volume_bounds = {100.0};
+  bounds.volume_bounds = {0.5};
   auto r = refine_interior(m, bounds);
   ASSERT_EQ(r.status, "converged");
-  ASSERT_EQ(r.points.size(), 4u);
-  EXPECT_EQ(r.points[1].x, 1.0);  // the old point 2
-  ASSERT_EQ(r.tets.size(), 1u);
-  auto corners = r.tets[0];
-  std::sort(corners.begin(), corners.end());
-  EXPECT_EQ(corners, (std::array<int, 4>{0, 1, 2, 3}));
-  EXPECT_EQ(r.tet_labels, std::vector<int>{0});
-  m.remove = {2};  // a corner of a face
+  EXPECT_GE(r.boundary_rounds, 1);
+  EXPECT_GE(r.boundary_points, 6);
+  for (const auto& [i, j] : m.segments) {
+    const Point3 mid{(m.points[i].x + m.points[j].x) / 2, (m.points[i].y + m.points[j].y) / 2,
+                     (m.points[i].z + m.points[j].z) / 2};
+    EXPECT_TRUE(std::any_of(r.points.begin(), r.points.end(),
+                            [&](const Point3& p) { return p.x == mid.x && p.y == mid.y && p.z == mid.z; }))
+        << "midpoint of " << i << ", " << j;
+  }
+  // The boundary as returned: Gabriel (exact), its subfacets oriented away from the tet's inside, covering the
+  // surface; the tets fill the tet's volume 8/3 and meet the bound.
+  const GabrielReport report = check_gabriel(r.points, r.faces, r.segments);
+  EXPECT_TRUE(report.faces.empty() && report.segments.empty());
+  ASSERT_EQ(r.face_facets.size(), r.faces.size());
+  double volume = 0;
+  for (const auto& t : r.tets) {
+    const double v = det3(r.points[t[0]], r.points[t[1]], r.points[t[2]], r.points[t[3]]) / 6;
+    EXPECT_LE(v, 0.5);
+    volume += v;
+  }
+  EXPECT_NEAR(volume, 8.0 / 3, 1e-12);
+  for (const auto& f : r.faces) EXPECT_LT(det3(r.points[f[0]], r.points[f[1]], r.points[f[2]], {0, 0, 0}), 0);
+  // Without facet ids the boundary is fixed: the tet stays, blocked.
+  m.face_facets.clear();
+  auto fixed = refine_interior(m, bounds);
+  EXPECT_EQ(fixed.status, "blocked");
+  EXPECT_EQ(fixed.points.size(), 4u);
+  m.face_facets = {0, 1};
   EXPECT_THROW(refine_interior(m, bounds), InvalidInput);
+}
+
+TEST(RefineInterior, RefusedBoundarySplitsLeaveTheTetsBlocked) {
+  // min_length longer than the edges: every split is refused and counted; nothing changes.
+  InteriorMesh m = regular_tet_boundary();
+  InteriorBounds bounds;
+  bounds.volume_bounds = {0.5};
+  bounds.min_length = 10.0;
+  auto r = refine_interior(m, bounds);
+  EXPECT_EQ(r.status, "blocked");
+  EXPECT_EQ(r.points.size(), 4u);
+  EXPECT_GT(r.refused_splits, 0);
+  EXPECT_EQ(r.boundary_points, 0);
 }
 
 TEST(RefineInterior, InsertsGivenPointsOnlyInsideTheDomainAndOutsideEverySphere) {

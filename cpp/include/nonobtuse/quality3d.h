@@ -35,12 +35,10 @@ struct InteriorMesh {
   std::vector<std::array<int, 4>> tets;  // the domain's tets, positively oriented
   std::vector<int> tet_labels;           // per tet, an index into InteriorBounds::volume_bounds
   std::vector<Triangle> faces;           // the subfacets
+  // The input facet id of each subfacet (subfacets sharing one form one planar facet), or empty: the boundary is
+  // then fixed (no splits).
+  std::vector<int> face_facets;
   std::vector<Segment> segments;         // the subsegments
-  // Points left out of the Delaunay tetrahedralization (built without them, before any insertion): interior points
-  // (on no face or segment) that stood for blocked circumcenters while the boundary repair split what they
-  // encroach. Leaving a point out keeps every diametral sphere as empty as it was; the cell that then holds it gets
-  // its region's label (its star was in one region, it is on no subfacet), as do the cells of the input's tets.
-  std::vector<int> remove;
   // Points inserted first, in order, each where it is strictly outside every closed diametral sphere, in the domain
   // and on no vertex (exact; e.g. another mesher's interior points), else dropped.
   std::vector<Point3> insert;
@@ -50,41 +48,62 @@ struct InteriorBounds {
   double radius_edge = 0.0;          // circumradius / shortest edge; <= 0: no bound
   std::vector<double> volume_bounds;  // per label; +inf: none
   long long max_points = 1000000;     // points to insert at most
-  double time_limit = 60.0;          // seconds (checked every 64 insertions)
+  double time_limit = 60.0;          // seconds (checked every 64 insertions and before every boundary split)
+  long long max_boundary_points = 1000000;  // boundary points to add at most
+  double min_length = 0.0;           // no boundary split point closer than this to a point; 0: none
 };
 
-// "converged": every tet within the bounds; "blocked": the tets over a bound left have circumcenters in a closed
-// diametral sphere of a subfacet or subsegment, on a mesh vertex or outside the domain (blocked_rows);
+// "converged": every tet within the bounds; "blocked": the tets over a bound left have circumcenters that no split
+// frees (in a closed diametral sphere whose split was refused, on a mesh vertex or outside the domain: blocked_rows);
 // "budget_exhausted": max_points or time_limit; "not_conforming": a subfacet or subsegment is not a face or an edge
-// of the Delaunay tetrahedralization (cospherical points), before or after the removals: nothing was inserted or
-// removed (the input returned).
+// of the Delaunay tetrahedralization (cospherical points): before any boundary split, nothing was inserted (the
+// input returned); after one, the state before that boundary step is returned (the first certified_points points,
+// tets, faces and segments: Gabriel and conforming) with the split boundary (split_*: the facets' triangulations,
+// over all points) for a repair that tetrahedralizes it; "boundary_stopped": a split that would restore the Gabriel
+// property was refused (min_length, max_boundary_points, an existing point, time_limit): the same.
 struct InteriorRefinement {
-  // the input points in order but the removed ones (a point's index drops by the removed indices below it), then
-  // the points of InteriorMesh::insert placed, then the inserted circumcenters; tets index these
+  // the input points in order, then the points of InteriorMesh::insert placed, then the inserted circumcenters and
+  // boundary points as they came; tets index these
   std::vector<Point3> points;
   std::vector<std::array<int, 4>> tets;
   std::vector<int> tet_labels;
   std::vector<int> blocked_rows;       // rows of tets over a bound whose circumcenters could not be inserted
   std::vector<Point3> blocked_centers;  // their circumcenters (floating point)
-  // per blocked row: a point strictly inside the diametral sphere that holds its center and strictly inside a
-  // domain tet, high above the subfacet (see stand_in in quality3d_interior.cpp), or NaN where none was found
-  std::vector<Point3> stand_ins;
+  // The boundary at the end: the subfacets (faces of the Delaunay tetrahedralization, each oriented away from a
+  // domain tet behind it; the input's as given while no boundary split happened) with their input facet ids, and
+  // the subsegments.
+  std::vector<Triangle> faces;
+  std::vector<int> face_facets;
+  std::vector<Segment> segments;
+  // After "not_conforming" or "boundary_stopped" from a boundary step: the points tets and faces use (the rest are
+  // that step's boundary points) and the split boundary; else certified_points is points.size() and split_* empty.
+  long long certified_points = 0;
+  std::vector<Triangle> split_faces;
+  std::vector<int> split_face_facets;
+  std::vector<Segment> split_segments;
   std::string status;
-  long long inserted = 0;  // circumcenters
-  long long placed = 0;    // points of InteriorMesh::insert
+  long long inserted = 0;         // circumcenters
+  long long placed = 0;           // points of InteriorMesh::insert
+  long long boundary_points = 0;  // added by boundary splits
+  long long boundary_rounds = 0;  // boundary steps that split something
+  long long refused_splits = 0;   // boundary splits refused (min_length, max_boundary_points, existing point)
 };
 
-// Delaunay refinement of the interior with the boundary fixed (Shewchuk's rule with the boundary split left to the
-// caller, Ruppert's rule): the tets over a bound, worst radius-edge ratio first, get their circumcenter inserted
-// (Bowyer-Watson, CGAL Delaunay_triangulation_3, the triangulation kept between insertions) when it lies strictly
-// outside every closed diametral sphere of a subfacet and subsegment (exact, on the rounded double), in the domain
-// (exact point location) and on no vertex; otherwise the tet is left for the caller (blocked_rows), which splits
-// the subfacets or subsegments the center encroaches. Such a point keeps every subfacet and subsegment Gabriel and
-// Delaunay, and its cavity crosses no subfacet (a tet beyond subfacet f whose circumsphere held it would have its
-// apex inside f's diametral sphere), so each new tet inherits the label of the tet holding the point.
-// Throws InvalidInput for indices out of range, labels without a bound, collinear faces, degenerate segments or a
-// removed point on a face or segment.
-// Cost: O(k log n) expected for k insertions into n points, plus O(log) sphere lookups per candidate.
+// Delaunay refinement (Shewchuk's, as TetGen's -q): the tets over a bound, worst radius-edge ratio first, get their
+// circumcenter inserted (Bowyer-Watson, CGAL Delaunay_triangulation_3, the triangulation kept between insertions)
+// when it lies strictly outside every closed diametral sphere of a subfacet and subsegment (exact, on the rounded
+// double), in the domain (exact point location) and on no vertex. Such a point keeps every subfacet and subsegment
+// Gabriel and Delaunay, and its cavity crosses no subfacet (a tet beyond subfacet f whose circumsphere held it would
+// have its apex inside f's diametral sphere), so each new tet inherits the label of the tet holding the point. With
+// face_facets, a center in a closed diametral sphere splits that subsegment (midpoint) or subfacet (circumcenter, or
+// the subsegments that encroaches), then every encroached subsegment and subfacet is split until the boundary is
+// Gabriel again (a strictly-inside test, exact), the points go into the same triangulation, and the subfacets are
+// taken from it (Ruppert's rule; quality3d_boundary.h); the centers are then tried again, until none is left or
+// nothing more can be split. The caller's exact check of the result is the certificate.
+// Throws InvalidInput for indices out of range, labels without a bound, collinear faces, degenerate segments,
+// face_facets of the wrong length, or a boundary that build_plc_state refuses.
+// Cost: O(k log n) expected for k insertions into n points, plus O(log) sphere lookups per candidate; per boundary
+// step O(f log n) exact encroachment queries per scan for f subfacets and a pass over the tetrahedralization.
 InteriorRefinement refine_interior(const InteriorMesh& mesh, const InteriorBounds& bounds);
 
 }  // namespace nonobtuse

@@ -4,12 +4,12 @@
 :func:`refine_quality3d` lets TetGen split the facets for the bounds, repairs that boundary
 (:func:`refine_gabriel`: every subfacet and subsegment gets an empty diametral sphere), takes TetGen's
 interior points on it (``-Y``) but those in a closed diametral sphere, then inserts circumcenters of the tets
-over a bound in rounds: each round inserts every circumcenter it can into one Delaunay tetrahedralization
-kept between insertions (strictly outside every closed diametral sphere, exact); a circumcenter in a closed
-diametral sphere is not inserted: the boundary repair, which sees a point standing for it (high in that
-sphere) as an encroaching point, splits the subfacet or subsegment instead (Ruppert's rule), and the next
-round leaves the stand-in out. The returned mesh is a Delaunay
-tetrahedralization with the repaired boundary, certified by the exact check.
+over a bound into one Delaunay tetrahedralization kept between insertions (strictly outside every closed
+diametral sphere, exact); a circumcenter in a closed diametral sphere splits that subfacet or subsegment
+instead, in the same tetrahedralization (Ruppert's and Shewchuk's rule), until the boundary is Gabriel
+again; where that tetrahedralization cannot hold the split boundary, the boundary repair takes over for a
+round. The returned mesh is a Delaunay tetrahedralization with the repaired boundary, certified by the
+exact check.
 """
 
 from __future__ import annotations
@@ -48,8 +48,10 @@ class Quality3DResult:
             stats["last_repair"] says how the last repair ended.
     stats:  boundary_points, interior_points, steiner_points (all points not in the input), tets,
             worst_radius_edge, max_volume, min_volume, radius_edge_over_2 (see :func:`tet_quality`), bad_tets
-            (tets over a bound at the end), blocked_centers (circumcenters of the last round in a closed
-            diametral sphere), inserted_by_passes (circumcenters the interior passes inserted), rounds,
+            (tets over a bound at the end), blocked_centers (tets over a bound the last interior pass left:
+            centers that no split frees), inserted_by_passes (circumcenters the interior passes inserted),
+            boundary_points_by_passes / boundary_rounds / refused_splits (the passes' own boundary splits,
+            their steps, and the splits refused at min_length or the budget), rounds,
             surface (how the facets were split first), tetgen / tetgen_points / tetgen_points_dropped
             (TetGen's interior points, and those dropped for lying in a closed diametral sphere),
             encroached_facets / encroached_segments (the exact certificate), volume_mesh, negative_couplings,
@@ -103,27 +105,26 @@ def refine_quality3d(
     Each round: an interior pass (``_core.refine_interior``: one Delaunay tetrahedralization kept while the
     circumcenters of the tets over a bound are inserted one by one, worst radius-edge ratio first, each
     strictly outside every closed diametral sphere of a subfacet and subsegment and inside the domain, both
-    exact; the boundary is fixed), then, for the tets left whose centers it could not insert, Ruppert's and
-    Shewchuk's rule: a point stands for the center, strictly inside the diametral sphere that holds it, high
-    above its subfacet or subsegment and strictly inside a domain tet (so that one split of it, at its
-    circumcenter, leaves the point outside the children's spheres; else a point strictly inside the tet),
-    the boundary repair (refine_gabriel) splits what these points encroach, and the next round's pass builds
-    its Delaunay tetrahedralization without them (a point strictly inside the tet that encroaches nothing is
-    kept instead): one repair per round. The
-    termination argument is at the split rule in ``cpp/src/quality3d_interior.cpp`` (each inserted point is
-    its tet's circumradius r from every vertex; r > radius_edge * shortest edge, or r >= (3V / 4 pi)^(1/3)
-    for the volume bound V); boundary splits follow refine_gabriel's rule and limits. Tets near small input
-    angles whose centers stay in diametral spheres are left (stats["blocked_centers"], as TetGen counts the
-    tets it skips). When the repaired surface is not conforming in the Delaunay sense (cospherical points,
-    e.g. a cube's squares), the round takes the circumcenters of an independent set of bad tets (no center in
-    another's circumsphere) through the repair instead. The loop is bounded by max_points, time_limit and the
-    boundary repair's budget, and a round that adds nothing ends it ("quality_blocked").
+    exact; a circumcenter in a closed diametral sphere splits that subsegment at its midpoint or that subfacet
+    at its circumcenter, or the subsegments that circumcenter encroaches, then every encroached subsegment and
+    subfacet is split until the boundary is Gabriel again, and the centers are tried again, until none is left
+    or no split frees one). The termination arguments are at the split rules in
+    ``cpp/src/quality3d_interior.cpp`` (insertion radii, radius_edge >= 2 as Shewchuk's; boundary splits
+    bounded by the repair's min_length and max_steiner). Tets near small input angles whose centers stay in
+    diametral spheres are left (stats["blocked_centers"], as TetGen counts the tets it skips). A round ends
+    with a boundary repair (refine_gabriel of the split boundary with the interior points) only when the
+    pass's tetrahedralization cannot hold its split boundary (cospherical points, or a split refused at
+    min_length: stats "boundary_rounds" counts the pass's own boundary steps); when the repaired surface is
+    not Delaunay to begin with (e.g. a cube's squares), the circumcenters of an independent set of bad tets
+    (no center in another's circumsphere) go through the repair (points strictly inside their tets for those
+    in a closed sphere). The loop is bounded by max_points, time_limit and the boundary repair's budget, and a
+    round that adds nothing ends it ("quality_blocked").
     Guarantee: report is the exact check_gabriel of the returned mesh; status "converged" needs it to pass and
     every tet within the bounds (measured in floating point). Deterministic.
-    Cost: per round an interior pass (O(k log n) expected for k insertions) and one boundary repair
-    (refine_gabriel without its control-volume summary, O(n log n) when few splits; the summary once at the
-    end); rounds end when only blocked centers are left, so their number follows the boundary splits, not
-    the interior points.
+    Cost: the interior pass, O(k log n) expected for k insertions, plus per boundary step O(f log n) exact
+    encroachment queries per scan for f subfacets and a pass over the tetrahedralization; a boundary repair
+    (refine_gabriel without its control-volume summary) only where the pass hands over; the summary once at
+    the end.
     Raises InvalidInputError for a malformed PLC or bounds (radius_edge <= 1, max_volume <= 0, not finite), or
     region_volumes without a volume constraint in plc's region list.
     """
@@ -154,58 +155,38 @@ def refine_quality3d(
     mesh, status = g.mesh, g.status
     stop = g.stats["diagnosis"]["stop_reason"]
     budget = 10**6 if max_points is None else int(max_points)
-    on = np.zeros(0, dtype=bool)
-    stand_ins = np.zeros(0, dtype=np.int64)  # rows of mesh.points the last split repair saw: dropped next
+    limits, blocked = dict(g.stats), 0
     while status == "converged":
         surface, interior = refiner.split_mesh(mesh)
-        mesh, rows, centers, high, passed = refiner.interior_pass(mesh, budget - len(interior), stand_ins,
-                                                                  tetgen_points)
-        placed, dropped = tetgen_points, stand_ins  # this pass's only: the next builds without them
-        tetgen_points, stand_ins = tetgen_points[:0], stand_ins[:0]
-        if passed == "not_conforming" and (len(placed) or len(dropped)):
-            # with TetGen's points placed, or without the stand-ins, a subfacet is no Delaunay face
-            # (cospherical points): the repair tetrahedralizes the interior points, stand-ins dropped, instead
-            g = refiner.repair(surface, np.concatenate([refiner.split_mesh(mesh, drop=dropped)[1], placed]))
-            status, stop = g.status, g.stats["diagnosis"]["stop_reason"]
-            mesh = g.mesh if status == "converged" else mesh
-            continue
-        surface, interior = refiner.split_mesh(mesh)
-        on_interior = refiner.closed_hits(surface, interior)
-        if passed == "not_conforming":  # cospherical points: the round goes through the boundary repair
-            rows, centers = refiner.independent_centers(mesh, *refiner.bad_tets(mesh))
-            high = np.full((len(rows), 3), np.nan)
-        on = refiner.closed_hits(surface, centers)
+        grown, passed, blocked, split = refiner.interior_pass(mesh, budget - len(interior), tetgen_points,
+                                                              limits)
+        placed, tetgen_points = tetgen_points, tetgen_points[:0]  # placed by this pass, else by the repair
         stats["rounds"] += 1
         seconds = time.perf_counter() - started
         if callback:
-            callback(stats["rounds"], len(interior), len(rows), int(on.sum()), seconds)
-        if not len(rows) and not on_interior.any():
+            callback(stats["rounds"], len(refiner.split_mesh(grown)[1]), blocked, blocked, seconds)
+        if passed in ("converged", "blocked", "budget_exhausted"):
+            mesh, status = grown, {"blocked": "quality_blocked"}.get(passed, passed)
             break
-        if passed == "budget_exhausted" or len(interior) >= budget or seconds > time_limit:
+        if seconds > time_limit:
             status = "budget_exhausted"
             break
-        # the centers the pass could not insert: stand-ins high in the diametral sphere holding the center
-        # (the pass's, for one split of that subfacet or subsegment: Ruppert's and Shewchuk's rule), else
-        # strictly inside their tets; the repair sees them as encroaching points, or inserts free ones
-        direct = centers[~on] if passed == "not_conforming" else np.zeros((0, 3))
-        found = np.isfinite(high).all(axis=1)
-        stand = (on if passed == "not_conforming" else np.ones(len(rows), dtype=bool)) & ~found
-        triggers, free = refiner.stand_ins(mesh, rows[stand], centers[stand], surface)
-        triggers = np.concatenate([high[found], triggers])
-        triggers = triggers[np.sort(np.unique(triggers, axis=0, return_index=True)[1])]  # one per sphere side
-        keep = np.concatenate([interior[~on_interior], direct, free])[:budget]
-        if len(keep) == len(interior) and not len(triggers):
-            status = "quality_blocked"  # nothing to add
-            break
-        repaired = refiner.repair(surface, np.concatenate([keep, triggers]))
-        if len(keep) == len(interior) and len(repaired.mesh.points) == len(surface.points) + len(keep) + len(
-                triggers):
+        # a split boundary the pass cannot tetrahedralize by itself (cospherical points, or a split it
+        # refused): the boundary repair splits what is left and tetrahedralizes the interior points with it
+        surface, interior = refiner.split_mesh(grown if split is None else split)
+        if grown is mesh:  # not Delaunay to begin with: bad tets' centers (or stand-ins) through the repair
+            added = np.concatenate([placed, refiner.centers_for_repair(mesh, surface)])
+            if not len(added):
+                status = "quality_blocked"
+                break
+            interior = np.concatenate([interior, added])
+        repaired = refiner.repair(surface, interior)
+        if grown is mesh and len(repaired.mesh.points) == len(surface.points) + len(interior):
             status = "quality_blocked"  # nothing added: the centers left lie on spheres, which split nothing
             break
         status, stop = repaired.status, repaired.stats["diagnosis"]["stop_reason"]
-        if status == "converged":  # the split repair's mesh; the next pass drops the triggers from it
-            g, mesh = repaired, repaired.mesh
-            stand_ins = len(surface.points) + len(keep) + np.arange(len(triggers))
+        # else the last certified mesh: the pass's before the boundary step it could not finish
+        g, mesh = (repaired, repaired.mesh) if status == "converged" else (g, grown)
     bad = refiner.bad_tets(mesh)[0]
     if status == "converged" and len(bad):  # the pass's measure and numpy's differ in the last ulp
         status = "quality_blocked"
@@ -217,8 +198,9 @@ def refine_quality3d(
     interior_points = len(mesh.points) - len(refiner.split_mesh(mesh)[0].points)
     stats = {"status": status, "steiner_points": len(mesh.points) - len(plc.points),
              "boundary_points": len(mesh.points) - interior_points, "interior_points": interior_points,
-             **tet_quality(mesh), "bad_tets": int(bad.size), "blocked_centers": int(on.sum()),
-             "inserted_by_passes": refiner.inserted,
+             **tet_quality(mesh), "bad_tets": int(bad.size), "blocked_centers": blocked,
+             "inserted_by_passes": refiner.inserted, "boundary_points_by_passes": refiner.boundary_points,
+             "boundary_rounds": refiner.boundary_rounds, "refused_splits": refiner.refused_splits,
              "encroached_facets": len(report.faces), "encroached_segments": len(report.segments),
              "volume_mesh": g.stats.get("volume_mesh"), "last_repair": stop,
              "negative_couplings": control_volume_summary(mesh)["negative_couplings"], **stats,

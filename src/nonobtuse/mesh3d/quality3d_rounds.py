@@ -61,6 +61,7 @@ class InteriorRefiner:
         self.plc, self.max_volume, self.radius_edge = plc, max_volume, radius_edge
         self.time_limit, self.started, self.gabriel_options = time_limit, started, gabriel_options
         self.inserted = 0  # circumcenters the interior passes inserted
+        self.boundary_points = self.boundary_rounds = self.refused_splits = 0  # the passes' boundary splits
 
     def repair(self, surface: PLC, interior: np.ndarray, share: float = 1.0) -> Any:
         """refine_gabriel of `surface` with `interior` (k, 3) as isolated points (after surface's points),
@@ -72,10 +73,10 @@ class InteriorRefiner:
         return refine_gabriel(plc, time_limit=max(0.0, share * left), control_volumes=False,
                               **self.gabriel_options)
 
-    def split_mesh(self, mesh: TetMesh, drop: np.ndarray | None = None) -> tuple[PLC, np.ndarray]:
+    def split_mesh(self, mesh: TetMesh) -> tuple[PLC, np.ndarray]:
         """The surface PLC of `mesh` (the input points, then the other vertices of its subfacets and
         subsegments, in mesh order; its subfacets as triangles with their facet ids; its subsegments) and its
-        other points (k, 3), the interior points, in mesh order, but the rows `drop` of mesh.points."""
+        other points (k, 3), the interior points, in mesh order."""
         on = np.zeros(len(mesh.points), dtype=bool)
         on[: len(self.plc.points)] = True
         on[np.asarray(mesh.boundary_faces, dtype=np.int64).ravel()] = True
@@ -85,9 +86,7 @@ class InteriorRefiner:
         segments = renumber[np.asarray(mesh.segments, dtype=np.int64).reshape(-1, 2)]
         surface = replace(self.plc, points=mesh.points[on], triangles=faces,
                           facet_ids=np.asarray(mesh.face_facets, dtype=np.int64), segments=segments)
-        inner = ~on
-        inner[np.asarray([] if drop is None else drop, dtype=np.int64)] = False
-        return surface, mesh.points[inner]
+        return surface, mesh.points[~on]
 
     @staticmethod
     def closed_hits(surface: PLC, candidates: np.ndarray) -> np.ndarray:
@@ -139,46 +138,56 @@ class InteriorRefiner:
         attrs, labels = self.region_labels(mesh)
         return self.volume_bounds_of(attrs)[labels]
 
-    def interior_pass(self, mesh: TetMesh, budget: int, remove: np.ndarray | None = None,
-                      insert: np.ndarray | None = None
-                      ) -> tuple[TetMesh, np.ndarray, np.ndarray, np.ndarray, str]:
-        """Circumcenters of the tets of `mesh` (a Gabriel boundary) over a bound inserted into its Delaunay
-        tetrahedralization one by one, the boundary fixed (``_core.refine_interior``: each strictly outside
-        every closed diametral sphere, in the domain, exact), at most `budget` of them within the time left,
-        after removing the interior points `remove` (rows of mesh.points: the stand-ins a split repair saw;
-        removing a point keeps every diametral sphere as empty as it was) and placing the points `insert`
-        (k, 3; each strictly outside every closed diametral sphere and in the domain, exact, else dropped).
-        Returns the mesh (its later points
-        renumbered past the removed ones), the rows (k,) of its tets still over a bound with their
-        circumcenters (k, 3) and stand-ins (k, 3: a point strictly inside the diametral sphere that holds the
-        center, high above its subfacet or subsegment, strictly inside a domain tet; NaN where none), and the
-        pass's status ("converged", "blocked", "budget_exhausted", or "not_conforming": a subfacet or
-        subsegment is no Delaunay face or edge, before or after the removal, `mesh` returned unchanged with no
-        rows)."""
-        remove = np.unique(np.asarray([] if remove is None else remove, dtype=np.int64))
+    def interior_pass(self, mesh: TetMesh, budget: int, insert: np.ndarray | None = None,
+                      limits: dict[str, Any] | None = None) -> tuple[TetMesh, str, int, TetMesh | None]:
+        """Delaunay refinement of `mesh` (a Gabriel boundary) in one tetrahedralization
+        (``_core.refine_interior``): the points `insert` (k, 3) placed first (each strictly outside every
+        closed diametral sphere and in the domain, exact, else dropped), then the circumcenters of the tets
+        over a bound, worst radius-edge ratio first, each strictly outside every closed diametral sphere, in
+        the domain (exact), at most `budget` of them within the time left; a center in a closed diametral
+        sphere splits that subsegment or subfacet (Ruppert's and Shewchuk's rule) and the boundary is split
+        until Gabriel again, in the same tetrahedralization, and so on until no center is left that a split
+        frees. limits: the boundary repair's stats (its min_length and max_steiner bound the splits). Returns
+        the mesh (points: the input's, then the new ones in order; boundary_faces, face_facets and segments
+        the split boundary), the pass's status ("converged", "blocked", "budget_exhausted"; "not_conforming"
+        with `mesh` itself returned: it was not Delaunay to begin with; "not_conforming" or
+        "boundary_stopped" after a boundary step: the mesh is the pass's state before that step, Gabriel and
+        conforming), the number of tets left over a bound, and, after such a step, the split boundary over
+        all the points (no tets) for the repair to tetrahedralize, else None."""
         attrs, labels = self.region_labels(mesh)
         left = self.time_limit - (time.perf_counter() - self.started)
+        limits = limits or {}
         r = _core.refine_interior(
             np.ascontiguousarray(mesh.points, dtype=np.float64),
             np.ascontiguousarray(mesh.tets, dtype=np.int64), labels,
             np.ascontiguousarray(mesh.boundary_faces, dtype=np.int64),
             np.ascontiguousarray(mesh.segments, dtype=np.int64).reshape(-1, 2),
             float(self.radius_edge or 0.0), self.volume_bounds_of(attrs), max(0, int(budget)), max(0.0, left),
-            remove, np.zeros((0, 3)) if insert is None else np.ascontiguousarray(insert, dtype=np.float64))
+            np.zeros((0, 3)) if insert is None else np.ascontiguousarray(insert, dtype=np.float64),
+            np.ascontiguousarray(mesh.face_facets, dtype=np.int64), int(limits.get("max_steiner", 10**6)),
+            float(limits.get("min_length", 0.0)))
         self.inserted += r.inserted
-        if r.status == "not_conforming":
-            return mesh, np.zeros(0, dtype=np.int64), np.zeros((0, 3)), np.zeros((0, 3)), r.status
+        self.boundary_points += r.boundary_points
+        self.boundary_rounds += r.boundary_rounds
+        self.refused_splits += r.refused_splits
+        if r.status == "not_conforming" and not r.boundary_rounds:
+            return mesh, r.status, 0, None
         regions = None if mesh.tet_regions is None else attrs[r.tet_labels]
+        grown = self._with_boundary(replace(mesh, points=r.points[: r.certified_points],
+                                            tets=np.asarray(r.tets, dtype=np.int64), tet_regions=regions),
+                                    r.faces, r.face_facets, r.segments)
+        split = None
+        if r.certified_points < len(r.points):
+            split = self._with_boundary(replace(mesh, points=r.points, tets=np.zeros((0, 4), dtype=np.int64),
+                                                tet_regions=None), r.split_faces, r.split_face_facets,
+                                        r.split_segments)
+        return grown, r.status, len(r.blocked_rows), split
 
-        def renumbered(rows: Any) -> np.ndarray:  # indices of the points kept, past the removed ones
-            rows = np.asarray(rows, dtype=np.int64)
-            return rows - np.searchsorted(remove, rows)
-
-        grown = replace(mesh, points=r.points, tets=np.asarray(r.tets, dtype=np.int64), tet_regions=regions,
-                        boundary_faces=renumbered(mesh.boundary_faces),
-                        segments=renumbered(mesh.segments).reshape(-1, 2))
-        return (grown, np.asarray(r.blocked_rows, dtype=np.int64), np.asarray(r.blocked_centers),
-                np.asarray(r.stand_ins), r.status)
+    def _with_boundary(self, mesh: TetMesh, faces: Any, face_facets: Any, segments: Any) -> TetMesh:
+        facets = np.asarray(face_facets, dtype=np.int64)
+        return replace(mesh, boundary_faces=np.asarray(faces, dtype=np.int64), face_facets=facets,
+                       face_markers=self.plc.markers_of_facets(facets),
+                       segments=np.asarray(segments, dtype=np.int64).reshape(-1, 2))
 
     def bad_tets(self, mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
         """Rows of mesh.tets over a bound, most skewed first, and their circumcenters (floating point)."""
@@ -191,6 +200,17 @@ class InteriorRefiner:
         bad = np.flatnonzero(over)
         bad = bad[np.argsort(-ratio[bad], kind="stable")]
         return bad, centers[bad]
+
+    def centers_for_repair(self, mesh: TetMesh, surface: PLC) -> np.ndarray:
+        """Points (k, 3) for the boundary repair to add where the mesh's own Delaunay tetrahedralization does
+        not hold its boundary (cospherical points, e.g. a cube's squares): the circumcenters of an independent
+        set of the tets over a bound (:meth:`independent_centers`) that lie in no closed diametral sphere, and
+        for the others a point strictly inside the tet (:meth:`stand_ins`), which the repair sees as an
+        encroaching point when it lies in a closed diametral sphere (it splits what that point encroaches)."""
+        rows, centers = self.independent_centers(mesh, *self.bad_tets(mesh))
+        on = self.closed_hits(surface, centers)
+        triggers, free = self.stand_ins(mesh, rows[on], centers[on], surface)
+        return np.concatenate([centers[~on], free, triggers])
 
     @staticmethod
     def independent_centers(mesh: TetMesh, tets: np.ndarray,

@@ -1,0 +1,218 @@
+// The boundary of an interior refinement, split for circumcenters that encroach it (see quality3d_boundary.h).
+#include "quality3d_boundary.h"
+
+#include <algorithm>
+
+namespace nonobtuse::quality3d {
+namespace {
+
+using gabriel3d::FacetCDT;
+using gabriel3d::Key;
+
+PLC3 surface_plc(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+                 const std::vector<int>& face_facets, const std::vector<Segment>& segments) {
+  PLC3 plc;
+  plc.points = points;
+  plc.triangles = faces;
+  plc.facet_ids = face_facets;
+  plc.segments = segments;
+  return plc;
+}
+
+P3 midpoint(const P3& a, const P3& b) {
+  return P3(a.x() + 0.5 * (b.x() - a.x()), a.y() + 0.5 * (b.y() - a.y()), a.z() + 0.5 * (b.z() - a.z()));
+}
+
+}  // namespace
+
+BoundarySplitter::BoundarySplitter(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+                                   const std::vector<int>& face_facets, const std::vector<Segment>& segments,
+                                   double min_length, long long max_points)
+    : s_(gabriel3d::build_plc_state(surface_plc(points, faces, face_facets, segments))),
+      index_(s_.points),
+      min_length_(min_length),
+      max_points_(max_points) {}
+
+void BoundarySplitter::add_interior_point(const P3& p) {
+  const int i = static_cast<int>(s_.points.size());
+  s_.points.push_back(p);
+  s_.point_facets.emplace_back();
+  s_.at.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, i);
+  index_.add(i);
+}
+
+int BoundarySplitter::common_facet(int a, int b, int c) const {
+  for (int f : s_.point_facets[a])
+    if (std::count(s_.point_facets[b].begin(), s_.point_facets[b].end(), f) &&
+        std::count(s_.point_facets[c].begin(), s_.point_facets[c].end(), f))
+      return f;
+  return -1;
+}
+
+void BoundarySplitter::subfacets(std::vector<Triangle>& faces, std::vector<int>& facets) const {
+  std::vector<std::pair<Triangle, int>> rows;
+  for (std::size_t f = 0; f < s_.facets.size(); ++f) {
+    const FacetCDT& cdt = s_.facets[f]->cdt;
+    for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh)
+      if (fh->info().in_domain)
+        rows.push_back({{fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()}, static_cast<int>(f)});
+  }
+  // The face order of a triangulation depends on its history of walks: sorted, with each row's smallest corner
+  // first (the orientation kept).
+  for (auto& [t, f] : rows) std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+  std::sort(rows.begin(), rows.end());
+  faces.clear();
+  facets.clear();
+  for (const auto& [t, f] : rows) faces.push_back(t), facets.push_back(f);
+}
+
+std::vector<Segment> BoundarySplitter::subsegments() const {
+  std::vector<Segment> out;
+  for (const auto& [k, parent] : s_.subsegments) out.push_back({k.first, k.second});
+  return out;
+}
+
+bool BoundarySplitter::encroached(int a, int b, int c) const {
+  return gabriel3d::deepest_encroacher(s_.points, index_, a, b, c).vertex >= 0;
+}
+
+// A split point is refused when it is an existing point, closer than min_length to one, or over the budget: the
+// circumcenter that asked for it stays blocked (counted), and the exact check of the result decides.
+bool BoundarySplitter::may_add(const P3& p) {
+  bool ok = added < max_points_ && !s_.at.count({p.x(), p.y(), p.z()});
+  if (ok && min_length_ > 0) {
+    gabriel3d::SearchBall ball{{p.x(), p.y(), p.z()}, min_length_, false};
+    index_.for_each_in(ball, [&](int i) {
+      ok = ok && CGAL::compare_squared_distance(p, s_.points[i], min_length_ * min_length_) != CGAL::SMALLER;
+    });
+  }
+  refused += !ok;
+  return ok;
+}
+
+void BoundarySplitter::added_point(int i) {
+  index_.add(i);
+  ++added;
+}
+
+bool BoundarySplitter::split_subsegment(int a, int b) {
+  if (a > b) std::swap(a, b);  // the rounded midpoint does not depend on the order
+  const P3 m = midpoint(s_.points[a], s_.points[b]);
+  if (!may_add(m)) return false;
+  added_point(gabriel3d::split_subsegment(s_, a, b, 0.5, m));
+  return true;
+}
+
+bool BoundarySplitter::split_subfacet(int f, int a, int b, int c) {
+  int corner[3] = {a, b, c};  // sorted: the rounded circumcenter does not depend on the order
+  std::sort(corner, corner + 3);
+  a = corner[0], b = corner[1], c = corner[2];
+  const auto center = gabriel3d::rounded_circumcenter(s_.points[a], s_.points[b], s_.points[c]);
+  if (!center) return false;
+  const gabriel3d::Facet& facet = *s_.facets[f];
+  // Shewchuk's rule: a subfacet circumcenter strictly inside a subsegment's diametral sphere is not inserted; the
+  // subsegments of the facet it encroaches are split instead.
+  std::vector<Key> hit;
+  for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e) {
+    if (!facet.cdt.is_constrained(*e)) continue;
+    const int u = e->first->vertex(FacetCDT::cw(e->second))->info();
+    const int w = e->first->vertex(FacetCDT::ccw(e->second))->info();
+    if (CGAL::side_of_bounded_sphere(s_.points[u], s_.points[w], *center) == CGAL::ON_BOUNDED_SIDE)
+      hit.push_back(gabriel3d::key(u, w));
+  }
+  if (!hit.empty()) {
+    std::sort(hit.begin(), hit.end());
+    bool any = false;
+    for (const Key& k : hit) any = split_subsegment(k.first, k.second) || any;
+    return any;
+  }
+  // With no subsegment encroached, the circumcenter of a subfacet lies in its facet (Ruppert's lemma, in the facet's
+  // plane); outside it only through rounding or cocircular points: refused then.
+  FacetCDT::Locate_type lt;
+  int li = 0;
+  auto loc = facet.cdt.locate(facet.project(*center), lt, li, facet.vertex.at(a)->face());
+  const bool inside = (lt == FacetCDT::FACE && loc->info().in_domain) ||
+                      (lt == FacetCDT::EDGE && !facet.cdt.is_constrained({loc, li}) && loc->info().in_domain &&
+                       loc->neighbor(li)->info().in_domain);
+  if (!inside) {
+    ++refused;
+    return false;
+  }
+  if (!may_add(*center)) return false;
+  added_point(gabriel3d::insert_in_facet(s_, f, *center, lt, loc, li));
+  return true;
+}
+
+long BoundarySplitter::follow(const std::function<bool(int, int, int)>& is_face) {
+  long missing = 0;
+  for (auto& facet : s_.facets) {
+    FacetCDT& cdt = facet->cdt;
+    auto face_of = [&](FacetCDT::Face_handle fh) {
+      return is_face(fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info());
+    };
+    // Each flip turns two subfacets into two faces of the tetrahedralization, so the loop ends.
+    for (bool flipped = true; flipped;) {
+      flipped = false;
+      for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end() && !flipped; ++fh) {
+        if (!fh->info().in_domain || face_of(fh)) continue;
+        for (int i = 0; i < 3 && !flipped; ++i) {
+          FacetCDT::Face_handle f = fh, g = fh->neighbor(i);
+          if (cdt.is_constrained({f, i}) || cdt.is_infinite(g) || !g->info().in_domain) continue;
+          const auto p = f->vertex(i), u = f->vertex(FacetCDT::cw(i)), w = f->vertex(FacetCDT::ccw(i));
+          const auto q = g->vertex(g->index(f));
+          // the quadrilateral p u q w is strictly convex in the frame (exact): the flip is valid
+          const bool convex = CGAL::orientation(p->point(), q->point(), u->point()) ==
+                                  -CGAL::orientation(p->point(), q->point(), w->point()) &&
+                              CGAL::orientation(u->point(), w->point(), p->point()) ==
+                                  -CGAL::orientation(u->point(), w->point(), q->point()) &&
+                              !CGAL::collinear(p->point(), q->point(), u->point()) &&
+                              !CGAL::collinear(u->point(), w->point(), p->point());
+          if (!convex || !is_face(p->info(), q->info(), u->info()) || !is_face(p->info(), q->info(), w->info()))
+            continue;
+          cdt.flip(f, i);
+          flipped = true;
+        }
+      }
+    }
+    for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh)
+      missing += fh->info().in_domain && !face_of(fh);
+  }
+  return missing;
+}
+
+bool BoundarySplitter::restore_gabriel(const std::function<bool()>& stop) {
+  for (;;) {
+    // Level 1: subsegments, until none is encroached.
+    for (;;) {
+      std::vector<Key> subs;
+      for (const auto& [k, parent] : s_.subsegments)
+        if (encroached(k.first, k.second, -1)) subs.push_back(k);
+      if (subs.empty()) break;
+      for (const Key& k : subs)
+        if (stop() || !split_subsegment(k.first, k.second)) return false;
+    }
+    // Level 2: the subfacets one scan finds encroached, each split when its turn comes if it is still a face.
+    std::vector<std::array<int, 4>> found;  // facet, corners
+    for (std::size_t f = 0; f < s_.facets.size(); ++f) {
+      const FacetCDT& cdt = s_.facets[f]->cdt;
+      for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
+        if (!fh->info().in_domain) continue;
+        std::array<int, 4> r{static_cast<int>(f), fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()};
+        std::sort(r.begin() + 1, r.end());
+        if (!CGAL::collinear(s_.points[r[1]], s_.points[r[2]], s_.points[r[3]]) && encroached(r[1], r[2], r[3]))
+          found.push_back(r);
+      }
+    }
+    if (found.empty()) return true;
+    std::sort(found.begin(), found.end());
+    for (const auto& [f, a, b, c] : found) {
+      const gabriel3d::Facet& facet = *s_.facets[f];
+      FacetCDT::Face_handle fh;
+      if (!facet.cdt.is_face(facet.vertex.at(a), facet.vertex.at(b), facet.vertex.at(c), fh) || !encroached(a, b, c))
+        continue;  // split already, or no longer encroached
+      if (stop() || !split_subfacet(f, a, b, c)) return false;
+    }
+  }
+}
+
+}  // namespace nonobtuse::quality3d

@@ -1,0 +1,67 @@
+// Internal: the boundary of an interior refinement (quality3d_interior.cpp) as the facets' triangulations
+// (gabriel3d_plc.h), split where circumcenters encroach it and then until it is Gabriel again (Ruppert's and
+// Shewchuk's rule: subsegments before subfacets, a subfacet's circumcenter that encroaches a subsegment splits the
+// subsegment instead).
+#pragma once
+#include <functional>
+#include <vector>
+
+#include "gabriel3d_plc.h"
+
+namespace nonobtuse::quality3d {
+
+using gabriel3d::P3;
+
+class BoundarySplitter {
+ public:
+  // points: every point of the mesh (boundary and interior, in the caller's order); faces with the input facet id of
+  // each (face_facets), segments: the subfacets and subsegments. min_length: no split point closer than this to a
+  // point (0: none); max_points: boundary points to add at most. Throws InvalidInput as build_plc_state does.
+  BoundarySplitter(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
+                   const std::vector<int>& face_facets, const std::vector<Segment>& segments, double min_length,
+                   long long max_points);
+
+  const std::vector<P3>& points() const { return s_.points; }
+  // Appends an interior point (on no facet), so that indices stay the caller's.
+  void add_interior_point(const P3& p);
+  int facet_id(int f) const { return s_.facets[f]->id; }
+  // The facet (index into the state's facets) holding points a, b, c, or -1.
+  int common_facet(int a, int b, int c) const;
+  // Is the triangle (a, b, c) of facet f's points inside the facet (gabriel3d::triangle_on_facet)?
+  bool on_facet(int f, int a, int b, int c) const { return gabriel3d::triangle_on_facet(s_, f, a, b, c); }
+  std::size_t facet_count() const { return s_.facets.size(); }
+  // The subfacets (rows of the facets' triangulations, sorted) with their facet indices; the subsegments (sorted).
+  void subfacets(std::vector<Triangle>& faces, std::vector<int>& facets) const;
+  std::vector<Segment> subsegments() const;
+  bool is_subsegment(int a, int b) const { return s_.subsegments.count(gabriel3d::key(a, b)) > 0; }
+  // Is a point strictly inside the diametral sphere of segment ab (c == -1) or triangle abc? (exact)
+  bool encroached(int a, int b, int c) const;
+
+  // The split for a point in the closed diametral sphere of subsegment ab: its midpoint. False when refused.
+  bool split_subsegment(int a, int b);
+  // The split for a point in the closed diametral sphere of subfacet abc of facet f (a face of its triangulation):
+  // its circumcenter, or the subsegments of the facet that point encroaches. False when nothing was added.
+  bool split_subfacet(int f, int a, int b, int c);
+  // Flips edges of the facets' triangulations towards the faces for which is_face holds (the choice of the 3D
+  // Delaunay tetrahedralization between the diagonals of nearly cocircular points, which the facet's 2D Delaunay
+  // criterion in its frame can decide the other way): an unconstrained edge between a subfacet that is no such
+  // face and its neighbour is flipped when both new triangles are. Returns how many subfacets are still no such face.
+  long follow(const std::function<bool(int, int, int)>& is_face);
+  // Splits every subsegment, then every subfacet, with a point strictly inside its diametral sphere, and again,
+  // until none has (true) or a split is refused or stop() (false).
+  bool restore_gabriel(const std::function<bool()>& stop);
+
+  long long added = 0;    // boundary points
+  long long refused = 0;  // splits refused: min_length, an existing point, the budget, outside the facet
+
+ private:
+  bool may_add(const P3& p);
+  void added_point(int i);
+
+  gabriel3d::PlcState s_;
+  gabriel3d::PointIndex index_;
+  double min_length_;
+  long long max_points_;
+};
+
+}  // namespace nonobtuse::quality3d
