@@ -23,8 +23,12 @@
 // cross-section, whose shortest input edge is 5.4 m; 0.18 on p2t_dude against Triangle's 0.5) and every one drew
 // a cascade of interior points. Measured on bench_quality2d (25 and 30 degrees): vertices against Triangle
 // -pq25D went from median 1.065x, max 2.70x to median 1.00x, max 1.69x (demo 1.76x -> 1.00x, p2t_dude 1.72x ->
-// 1.03x, la 1.49x -> 1.02x). Sides on input edges with an input angle below 60 degrees at an end are left to the
-// greedy rule in that first pass (midpoints and shells spent the whole budget at p2t_deadly_quad's 0.17 degrees). Splitting at the foot of the obtuse apex (clamped to the middle half) instead of the
+// 1.03x, la 1.49x -> 1.02x). Sides on a boundary edge meeting another boundary edge at an input angle below 60
+// degrees are left to the greedy rule in that first pass (midpoints and shells spent the whole budget at
+// p2t_deadly_quad's 0.17 degree corner); where an interface or dangling segment makes the small angle, shells (the
+// greedy rule there drew 1.56x Triangle's vertices on clusters.poly, shells 0.77x). The shell is Triangle's: the
+// smallest power of two at least a third of the subsegment, constructed from the junction (nearest_shell).
+// Splitting at the foot of the obtuse apex (clamped to the middle half) instead of the
 // midpoint was measured too: max 1.28x (clusters) but the demo at 30 degrees 1.18x and more boundary points;
 // midpoints kept. Each new interior vertex is outside the open diametral disk of every constrained edge of its
 // cavity, so every triangle it makes on a subsegment has an acute or right apex: interior points never make a
@@ -45,8 +49,11 @@
 // stop the run). Off-centers keep that argument and in practice
 // terminate up to about 33 degrees (Ungor; Triangle). The boundary splits are midpoints and shells, as in the proof
 // (the first pass splits sides whose open diametral disk holds their apex: Ruppert's encroachment by a vertex);
-// only the greedy repair (of a side no midpoint or shell fixes, or one near a small input angle in the first
-// pass, where the proof's premise fails anyway) adds points the proof does not cover, and the
+// only the greedy repair (of a side no midpoint or shell fixes, or one at a small corner of two boundary edges in
+// the first pass, where the proof's premise fails anyway) adds points the proof does not cover; at a junction with
+// an interface or dangling segment the shells are Shewchuk's (a split at the junction lands at a power of two of
+// at least a third of the subsegment, so two constraints there are split at the same radii and never encroach
+// each other, concentric_shells.cpp), and the
 // strategies other than greedy leave their own boundary points before: the budgets are the hard stop.
 //
 // Small input angles (two input constraints meeting at less than 60 degrees, the domain inside the angle) defeat
@@ -77,7 +84,6 @@
 #include <utility>
 #include <vector>
 
-#include "concentric_shells.h"
 #include "refine2d_strategies.h"
 #include "split_point.h"
 
@@ -110,6 +116,14 @@ Vertex_handle insert_interior(State& st, const Point& p, Face_handle located) {
   while (++fc != done);
   if (st.check_every_split_) st.check_invariants();
   return v;
+}
+
+double nearest_shell(const Point& s, const Point& e) {
+  const double length = std::sqrt(CGAL::to_double(CGAL::squared_distance(s, e))), third = length / 3.0;
+  if (!(third > 0.0) || !std::isfinite(length)) return 0.5;
+  double p = std::ldexp(1.0, std::ilogb(third));  // the largest 2^k <= |e - s| / 3
+  if (p < third) p *= 2.0;
+  return p / length;
 }
 
 namespace {
@@ -159,6 +173,7 @@ class QualityRefiner {
       for (int end : st.edges()[k].edge) edges_at_[end].push_back(k);
     for (auto v = st.cdt().finite_vertices_begin(); v != st.cdt().finite_vertices_end(); ++v)
       if (v->info() < st.n_input() && edges_at_[v->info()].size() >= 2) note_exterior_wedges(v);
+    note_interfaces();
     double area = 0.0, smallest = o.max_area > 0.0 ? o.max_area : std::numeric_limits<double>::infinity();
     for (auto f = st.cdt().finite_faces_begin(); f != st.cdt().finite_faces_end(); ++f)
       if (f->info().in_domain()) area += shape_of(f).area;
@@ -250,6 +265,17 @@ class QualityRefiner {
         const Point d(p.x + (u.x - p.x) / lu + (w.x - p.x) / lw, p.y + (u.y - p.y) / lu + (w.y - p.y) / lw);
         if (!holds_domain_toward(v, d)) exterior_wedge_.insert({z, std::min(at[x], at[y]), std::max(at[x], at[y])});
       }
+  }
+  // Marks in interface_ every input edge with the domain on both sides (an interface or a dangling segment): a
+  // constrained side of a domain face whose reverse is a boundary side too. Cost: one pass over the faces.
+  void note_interfaces() {
+    interface_.assign(st_.edges().size(), false);
+    for (auto f = st_.cdt().finite_faces_begin(); f != st_.cdt().finite_faces_end(); ++f)
+      for (int i = 0; i < 3; ++i)
+        if (f->info().in_domain() && f->is_constrained(i)) {
+          const Side reverse{f->vertex(CDT::cw(i)), f->vertex(CDT::ccw(i))};
+          if (st_.is_boundary_side(reverse)) interface_[st_.edge_of(reverse)] = true;
+        }
   }
   // Whether the face around v that the ray from v toward d enters first is a domain face.
   bool holds_domain_toward(Vertex_handle v, const Point& d) const {
@@ -366,20 +392,25 @@ class QualityRefiner {
   }
 
   // Splits `side` at its midpoint, or at a concentric shell from an input end where an acute input angle is (as
-  // Triangle does). False when it is no subsegment any more (split by an earlier repair) or no point passes the
-  // exact checks.
+  // Triangle does). The point is first constructed plainly from the shell's end (a + t (b - a) in doubles) and
+  // taken when it lies exactly on the subsegment: at an axis-parallel edge that is the exact shell (4 from the
+  // corner of [0, 10], where pick_point's dyadic parameters near 0.4 are ulps off and the right angle such a
+  // point makes with a neighbour comes out obtuse: measured on quality2d_test's L shape at 30 degrees, 5 boundary
+  // points instead of 2 and two triangles left alone). Else pick_point's candidates. False when it is no
+  // subsegment any more (split by an earlier repair) or no point passes the exact checks.
   bool split_subsegment(const Side& side) {
     if (st_.left_face(side) == nullptr) return false;
-    const Point &s = side.s->point(), &e = side.e->point();
     const int k = st_.edge_of(side);
     auto acute_end = [&](Vertex_handle v) { return v->info() < st_.n_input() && small_angle_at(k, v->info(), 90.0); };
-    double t = 0.5;
-    if (acute_end(side.s) && !acute_end(side.e))
-      t = shell_at_or_before(s, e, 0.5);
-    else if (acute_end(side.e) && !acute_end(side.s))
-      t = 1.0 - shell_at_or_before(e, s, 0.5);
-    Point p;
-    if (!pick_point(s, e, t, [&](const Point& c) { return splittable(st_, side, c); }, p)) return false;
+    Vertex_handle from = side.s, to = side.e;
+    if (acute_end(to) && !acute_end(from)) std::swap(from, to);
+    const Point &a = from->point(), &b = to->point();
+    const double t = acute_end(from) && !acute_end(to) ? nearest_shell(a, b) : 0.5;  // from a toward b
+    auto valid = [&](const Point& c) { return splittable(st_, side, c); };
+    Point p(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()));
+    const bool plain =
+        CGAL::orientation(a, b, p) == CGAL::COLLINEAR && CGAL::angle(a, p, b) == CGAL::OBTUSE && valid(p);
+    if (!plain && !pick_point(side.s->point(), side.e->point(), from == side.s ? t : 1.0 - t, valid, p)) return false;
     Vertex_handle v = split(st_, side, p);
     if (v == nullptr) return false;
     push_around(v);
@@ -389,15 +420,21 @@ class QualityRefiner {
   // Restores every boundary side the splits disturbed (split queues them): a violated side is split like an
   // encroached one (Ruppert: midpoints and shells, which keep the spacing even); a side no such point fixes is
   // left to the greedy rule. Cost: per split, the sides of the faces it changed.
-  // With greedy_near_small_angles, a side on an input edge with an input angle below 60 degrees at an end goes to
-  // the greedy rule directly (measured: midpoints and shells at p2t_deadly_quad's 0.17 degree angle spent the whole
-  // Steiner budget, where the greedy rule needs 2 points).
-  void repair_boundary(bool greedy_near_small_angles = false) {
+  // With greedy_at_small_corners, a side on a boundary edge with an input angle below 60 degrees at an end between
+  // it and another boundary edge goes to the greedy rule directly (measured: midpoints and shells at
+  // p2t_deadly_quad's 0.17 degree corner spent the whole Steiner budget, where the greedy rule needs 2 points).
+  // Where an interface or dangling segment makes the small angle, shells: both constraints are split at the same
+  // powers of two from the junction, which never encroach each other (concentric_shells.cpp). The greedy rule
+  // there, free to cut anywhere, put its points a few units from the far ends of clusters.poly's segments and
+  // the interior refinement graded down to them (measured: 46 boundary and 41 interior points against 29 and 7
+  // with shells; Triangle 36 and 15). This is the split of concentric_shells.h's is_acute_junction: shells where
+  // an interior constraint meets the junction, the greedy rule (forbidden intervals) at two boundary edges.
+  void repair_boundary(bool greedy_at_small_corners = false) {
     std::vector<Side> stuck;
     while (st_.has_work() && st_.budget_left()) {
       const Side side = st_.next_side();
       if (!st_.is_violated(side)) continue;
-      if ((greedy_near_small_angles && near_small_angle(side)) || !split_subsegment(side)) stuck.push_back(side);
+      if ((greedy_at_small_corners && at_small_boundary_corner(side)) || !split_subsegment(side)) stuck.push_back(side);
     }
     if (stuck.empty()) return;
     const std::size_t before = st_.added().size();
@@ -411,6 +448,16 @@ class QualityRefiner {
     const int k = st_.edge_of(side);
     const auto& edge = st_.edges()[k].edge;
     return small_angle_at(k, edge[0], kSmallInputAngle) || small_angle_at(k, edge[1], kSmallInputAngle);
+  }
+  // Whether side lies on a boundary edge (the domain on one side) meeting another boundary edge at an input angle
+  // below 60 degrees at one of its ends.
+  bool at_small_boundary_corner(const Side& side) const {
+    const int k = st_.edge_of(side);
+    if (interface_[k]) return false;
+    for (int z : st_.edges()[k].edge)
+      for (int j : edges_at_[z])
+        if (j != k && !interface_[j] && small_angle_between(j, k, kSmallInputAngle) == z) return true;
+    return false;
   }
   // Rule (2) of the top comment (the terminator).
   bool refused_near_small_angle(const Side& side, const Shape& s) const {
@@ -513,6 +560,7 @@ class QualityRefiner {
   double rho_bar_ = 0.0;  // the circumradius-to-shortest-edge bound 1 / (2 sin bound) of good triangles
   long long budget_ = 0;
   std::vector<std::vector<int>> edges_at_;  // input vertex -> the input edges at it (indices into st.edges())
+  std::vector<bool> interface_;  // input edge -> the domain on both its sides
   std::set<std::array<int, 3>> exterior_wedge_;  // (input vertex, input edge, input edge) whose angle holds no domain
   std::priority_queue<Bad> queue_;
   std::set<Key> left_alone_, unresolved_;

@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "nonobtuse/check2d.h"
 #include "nonobtuse/refine2d.h"
+#include "quality2d.h"
 
 namespace nonobtuse {
 namespace {
@@ -46,6 +48,13 @@ Domain2 l_shape() {
   return d;
 }
 
+// The L's first pass by hand. The interface (0, 0)-(4, 4) makes 45 degrees with the edges at both its ends, so
+// the sides split there get shells (an interface meets the junction: no greedy rule). The input CDT has the
+// triangles (0, 0), (10, 0), (4, 4) and (0, 0), (4, 4), (0, 10), obtuse at (4, 4) opposite the edges from (0, 0)
+// (dot products -8 and -8); both are split at the smallest power of two >= 10 / 3 from (0, 0), 4: at (4, 0) and
+// (0, 4), exactly (the plain construction; rounded ulps off, the right angles there at (4, 0) and (0, 4) opposite
+// the interface turned obtuse). Then every triangle has its smallest angle >= atan(2 / 3) = 33.7 degrees (the
+// halves of the 6 x 4 and 4 x 6 rectangles, the isosceles right ones 4 x 4): nothing more goes in.
 TEST(Quality2d, MinAngleReachedAndBoundaryCertified) {
   Quality2DOptions q;
   q.min_angle_degrees = 30.0;
@@ -61,6 +70,31 @@ TEST(Quality2d, MinAngleReachedAndBoundaryCertified) {
   EXPECT_NEAR(worst, r.quality.min_angle_degrees, 1e-9);
   EXPECT_EQ(r.quality.triangles, static_cast<long long>(r.mesh.triangles.size()));
   EXPECT_EQ(r.mesh.points.size(), l_shape().points.size() + r.steiner_points + r.quality.interior_points);
+  // The hand count above: exactly the two shells, nothing inside.
+  EXPECT_EQ(r.steiner_points, 2);
+  EXPECT_EQ(r.quality.interior_points, 0);
+  std::vector<std::pair<double, double>> added;
+  for (std::size_t i = 6; i < r.mesh.points.size(); ++i) added.emplace_back(r.mesh.points[i].x, r.mesh.points[i].y);
+  std::sort(added.begin(), added.end());
+  EXPECT_EQ(added, (std::vector<std::pair<double, double>>{{0.0, 4.0}, {4.0, 0.0}}));
+  EXPECT_NEAR(worst, std::atan(2.0 / 3.0) * 180.0 / M_PI, 1e-9);
+}
+
+// nearest_shell: the smallest power of two >= |e - s| / 3, as a parameter of [s, e].
+TEST(Quality2d, NearestShellIsTheSmallestPowerOfTwoOfAThird) {
+  using refine2d::Point;
+  EXPECT_EQ(refine2d::nearest_shell(Point(0, 0), Point(10, 0)), 0.4);            // 10 / 3 = 3.3 -> 4
+  EXPECT_EQ(refine2d::nearest_shell(Point(0, 0), Point(768, 0)), 256.0 / 768);    // a third that is 2^8 stays
+  EXPECT_EQ(refine2d::nearest_shell(Point(1, 1), Point(4, 5)), 2.0 / 5);          // |e - s| = 5: 1.67 -> 2
+  // A subsegment a power of two long up to rounding (a shell point an ulp short of 256 from its junction) is
+  // halved: 85.3 -> 128, where the largest power of two at or before its midpoint (127.99...) was 64.
+  const double x = std::nextafter(256.0, 0.0);
+  EXPECT_EQ(refine2d::nearest_shell(Point(0, 0), Point(x, 0)), 128.0 / x);
+  for (double length : {1e-9, 0.3, 1.0, 2.9999, 3.0, 3.0001, 1e7}) {  // both pieces at least a third
+    const double t = refine2d::nearest_shell(Point(0, 0), Point(length, 0));
+    EXPECT_GE(t * 3.0, 1.0 - 1e-15) << length;
+    EXPECT_LE(t * 3.0, 2.0 + 1e-15) << length;
+  }
 }
 
 TEST(Quality2d, MaxAreaAndRegionAreas) {
