@@ -129,6 +129,41 @@ std::vector<std::array<int, 2>> triangle_soup_self_intersections(const std::vect
   return out;
 }
 
+namespace {
+
+// Per triangle, whether its corners are those of a face of one of `cells` (a triangle with a repeated corner never
+// is). The triangles are bucketed by their smallest corner (CSR), and every face of every cell looks in its
+// smallest corner's bucket (about two triangles): O(cells + triangles), the cells read in order, instead of a walk
+// around a vertex's ~80 incident cells per triangle (CGAL's is_facet), which took 5 s for 1e6 triangles.
+std::vector<char> faces_among_cells(std::size_t points, const std::vector<PlcTriangle>& triangles,
+                                    const std::vector<std::array<int, 4>>& cells) {
+  std::vector<std::size_t> start(points + 1, 0);
+  auto sorted = [](int a, int b, int c) {
+    if (a > b) std::swap(a, b);
+    if (b > c) std::swap(b, c);
+    if (a > b) std::swap(a, b);
+    return std::array<int, 3>{a, b, c};
+  };
+  for (const auto& t : triangles) ++start[std::min({t[0], t[1], t[2]}) + 1];
+  for (std::size_t v = 0; v < points; ++v) start[v + 1] += start[v];
+  std::vector<std::pair<std::array<int, 3>, std::size_t>> bucket(triangles.size());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    auto k = sorted(triangles[t][0], triangles[t][1], triangles[t][2]);
+    bucket[fill[k[0]]++] = {k, t};
+  }
+  std::vector<char> is_face(triangles.size(), 0);
+  for (const auto& c : cells)
+    for (int i = 0; i < 4; ++i) {
+      auto k = sorted(c[(i + 1) % 4], c[(i + 2) % 4], c[(i + 3) % 4]);
+      for (std::size_t e = start[k[0]]; e < start[k[0] + 1]; ++e)
+        if (bucket[e].first == k) is_face[bucket[e].second] = 1;
+    }
+  return is_face;
+}
+
+}  // namespace
+
 DelaunayFaces delaunay_faces(const std::vector<PlcPoint>& points, const std::vector<PlcTriangle>& triangles) {
   using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
   using Tds = CGAL::Triangulation_data_structure_3<Vb>;
@@ -136,22 +171,19 @@ DelaunayFaces delaunay_faces(const std::vector<PlcPoint>& points, const std::vec
   std::vector<std::pair<P3, int>> pts;
   pts.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) pts.emplace_back(to_cgal(points[i]), static_cast<int>(i));
-  DT dt(pts.begin(), pts.end());
-  std::vector<DT::Vertex_handle> vertex(points.size());
-  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) vertex[v->info()] = v;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (vertex[i] == DT::Vertex_handle())
-      throw InvalidInput("point " + std::to_string(i) + " coincides with another point");
   DelaunayFaces out;
-  out.cells.reserve(dt.number_of_finite_cells());
-  for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-    out.cells.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
+  {
+    DT dt(pts.begin(), pts.end());
+    std::vector<char> seen(points.size(), 0);
+    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) seen[v->info()] = 1;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (!seen[i]) throw InvalidInput("point " + std::to_string(i) + " coincides with another point");
+    out.cells.reserve(dt.number_of_finite_cells());
+    for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+      out.cells.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
+  }  // the triangulation's memory goes before the sort and the face lookup
   std::sort(out.cells.begin(), out.cells.end());
-  out.is_face.reserve(triangles.size());
-  DT::Cell_handle cell;
-  int i = 0, j = 0, k = 0;
-  for (const auto& t : triangles)
-    out.is_face.push_back(dt.dimension() == 3 && dt.is_facet(vertex[t[0]], vertex[t[1]], vertex[t[2]], cell, i, j, k));
+  out.is_face = faces_among_cells(points.size(), triangles, out.cells);
   return out;
 }
 
