@@ -163,6 +163,19 @@ std::vector<char> faces_among_cells(std::size_t points, const std::vector<PlcTri
   return is_face;
 }
 
+// Sorts the cells lexicographically: a counting sort on the first corner, then each first corner's ~20 cells
+// sorted (0.9 -> 0.3 s for 9.85M cells, where std::sort compares whole rows).
+void sort_cells(std::size_t points, std::vector<std::array<int, 4>>& cells) {
+  std::vector<std::size_t> start(points + 1, 0);
+  for (const auto& c : cells) ++start[c[0] + 1];
+  for (std::size_t v = 0; v < points; ++v) start[v + 1] += start[v];
+  std::vector<std::array<int, 4>> out(cells.size());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (const auto& c : cells) out[fill[c[0]]++] = c;
+  for (std::size_t v = 0; v < points; ++v) std::sort(out.begin() + start[v], out.begin() + start[v + 1]);
+  cells.swap(out);
+}
+
 }  // namespace
 
 DelaunayFaces delaunay_faces(const std::vector<PlcPoint>& points, const std::vector<PlcTriangle>& triangles) {
@@ -183,7 +196,7 @@ DelaunayFaces delaunay_faces(const std::vector<PlcPoint>& points, const std::vec
     for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
       out.cells.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
   }  // the triangulation's memory goes before the sort and the face lookup
-  std::sort(out.cells.begin(), out.cells.end());
+  sort_cells(points.size(), out.cells);
   out.is_face = faces_among_cells(points.size(), triangles, out.cells);
   return out;
 }
