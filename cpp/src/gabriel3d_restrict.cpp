@@ -157,6 +157,10 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
   auto flat = [](DT3::Cell_handle c) { return c->info() <= -2; };
   // Components of cells connected across faces that lie on no facet. Outside: the component of the infinite
   // cells and those of hole seeds; every other component is inside (TetGen's convention for enclosed regions).
+  // facet_under is cached, unless no facet is covered by centroid: it is then one lookup in cover.subfacets, and
+  // filling the cache (a node per face) was most of the hash-map time.
+  const bool by_centroid =
+      std::find(cover.by_centroid.begin(), cover.by_centroid.end(), true) != cover.by_centroid.end();
   CornersMap<int> on_facet;  // Delaunay face -> facet index or -1
   auto facet_of = [&](DT3::Cell_handle c, int i) {
     if (flat(c->neighbor(i))) return -2 - c->neighbor(i)->info();
@@ -165,6 +169,7 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
     for (int j = 0, m = 0; j < 4; ++j)
       if (j != i) v[m++] = c->vertex(j)->info();
     Corners k = corners(v[0], v[1], v[2]);
+    if (!by_centroid) return facet_under(s, cover, k);
     auto it = on_facet.find(k);
     if (it == on_facet.end()) it = on_facet.emplace(k, facet_under(s, cover, k)).first;
     return it->second;
