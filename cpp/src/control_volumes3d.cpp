@@ -136,7 +136,8 @@ EdgeNumbering number_edges(std::size_t points, const std::vector<std::array<int,
 }
 
 template <class NT>
-Fraction<NT> piece_fraction(const std::vector<Point3>& p, const std::vector<std::array<int, 4>>& tets, std::size_t q) {
+Fraction<NT> piece_fraction(const std::vector<Point3>& p, const std::vector<std::array<int, 4>>& tets,
+                            std::size_t q) {
   const auto& t = tets[q / 6];
   const int* f = kEdgeFrames[q % 6];
   return dual_piece<NT>(p[t[f[0]]], p[t[f[1]]], p[t[f[2]]], p[t[f[3]]]);
@@ -277,8 +278,9 @@ ControlVolumes3D control_volumes3d(const std::vector<Point3>& points, const std:
   // pieces in tet order and computing its own); the undecided edges come in edge order.
   std::vector<CGAL::Interval_nt_advanced> interval(edges, CGAL::Interval_nt_advanced(0));
   const int half = static_cast<int>(edges / 2);
+  const int all = static_cast<int>(edges);
   fork_join(worth_forking(edges, 2), [&] { dual_area_intervals(points, tets, numbering.edge_of, 0, half, interval); },
-            [&] { dual_area_intervals(points, tets, numbering.edge_of, half, static_cast<int>(edges), interval); });
+            [&] { dual_area_intervals(points, tets, numbering.edge_of, half, all, interval); });
   out.signs.assign(edges, 0);
   std::vector<std::size_t> undecided;
   for (std::size_t g = 0; g < edges; ++g) {
@@ -294,7 +296,8 @@ ControlVolumes3D control_volumes3d(const std::vector<Point3>& points, const std:
   // Exact arithmetic on two threads as well (halves of the undecided edges): a torus of 1e6 faces, whose
   // cross-sections are nearly cocircular, leaves 333k of its 7.3M edges undecided.
   auto exact = [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k) out.signs[undecided[k]] = dual_area_exact_sign(points, tets, undecided_pieces[k]);
+    for (std::size_t k = from; k < to; ++k)
+      out.signs[undecided[k]] = dual_area_exact_sign(points, tets, undecided_pieces[k]);
   };
   const std::size_t middle = undecided.size() / 2;
   fork_join(undecided.size() >= 256, [&] { exact(0, middle); }, [&] { exact(middle, undecided.size()); });
