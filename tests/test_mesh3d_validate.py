@@ -20,7 +20,7 @@ from mesh3d_shapes import (
 )
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import PLC, load_plc, validate_plc
-from nonobtuse.mesh3d.validate3d import edge_faces, unique_rows
+from nonobtuse.mesh3d.validate3d import edge_faces, reversed_faces, unique_rows
 
 
 def load_off(tmp_path, points, faces, **kw):
@@ -233,3 +233,17 @@ def test_unique_rows_is_numpy_unique_of_the_rows(width, k, top, seed):
     for a, b in zip(got[1:], expected[1:]):
         assert a.ravel().tolist() == b.ravel().tolist()
     assert unique_rows(rows).tolist() == np.unique(rows, axis=0).tolist()
+
+
+@settings(max_examples=40, deadline=2000, derandomize=True)
+@given(st.integers(1, 30), st.integers(3, 12), st.integers(0, 2**32 - 1))
+def test_reversed_faces_is_the_edge_table_of_the_reversed_triangles(m, n, seed):
+    # Random triangles (distinct corners; few points, so shared edges) and a random set of them reversed.
+    rng = np.random.default_rng(seed)
+    t = np.array([rng.choice(n, 3, replace=False) for _ in range(m)], dtype=np.int64)
+    flip = rng.random(m) < 0.5
+    reversed_t = t.copy()
+    reversed_t[flip] = reversed_t[flip][:, ::-1]
+    expected, got = edge_faces(reversed_t), reversed_faces(edge_faces(t), flip)
+    for name in ("edges", "count", "of_corner"):
+        assert getattr(got, name).tolist() == getattr(expected, name).tolist()

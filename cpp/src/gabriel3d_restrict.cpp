@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <map>
 #include <numeric>
+#include <unordered_map>
 
 #include "gabriel3d_plc.h"
 
@@ -20,6 +22,19 @@ using DT3 = CGAL::Delaunay_triangulation_3<K, Tds3>;
 
 using Corners = std::array<int, 3>;  // sorted point indices
 
+// Hash maps keyed by corners: looked up for every face of every cell, where std::map's tree walks were about a
+// tenth of refine_gabriel on fandisk (perf). Only find/emplace: iteration order is never used.
+struct CornersHash {
+  std::size_t operator()(const Corners& k) const {
+    std::uint64_t h = static_cast<std::uint32_t>(k[0]);
+    h = h * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(k[1]);
+    h = h * 0x9E3779B97F4A7C15ull + static_cast<std::uint32_t>(k[2]);
+    return static_cast<std::size_t>(h ^ (h >> 29));
+  }
+};
+template <class V>
+using CornersMap = std::unordered_map<Corners, V, CornersHash>;
+
 Corners corners(int a, int b, int c) {
   Corners k{a, b, c};
   std::sort(k.begin(), k.end());
@@ -31,7 +46,7 @@ Corners corners(int a, int b, int c) {
 // a subfacet missing from the Delaunay tetrahedralization (cospherical points, e.g. a cube's square faces), every
 // Delaunay face with its corners on the facet and its centroid inside the facet's domain.
 struct FacetCover {
-  std::map<Corners, int> subfacets;  // subfacet -> facet index
+  CornersMap<int> subfacets;  // subfacet -> facet index
   std::vector<bool> by_centroid;     // per facet
 };
 
@@ -142,7 +157,11 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
   auto flat = [](DT3::Cell_handle c) { return c->info() <= -2; };
   // Components of cells connected across faces that lie on no facet. Outside: the component of the infinite
   // cells and those of hole seeds; every other component is inside (TetGen's convention for enclosed regions).
-  std::map<Corners, int> on_facet;  // Delaunay face -> facet index or -1
+  // facet_under is cached, unless no facet is covered by centroid: it is then one lookup in cover.subfacets, and
+  // filling the cache (a node per face) was most of the hash-map time.
+  const bool by_centroid =
+      std::find(cover.by_centroid.begin(), cover.by_centroid.end(), true) != cover.by_centroid.end();
+  CornersMap<int> on_facet;  // Delaunay face -> facet index or -1
   auto facet_of = [&](DT3::Cell_handle c, int i) {
     if (flat(c->neighbor(i))) return -2 - c->neighbor(i)->info();
     if (dt.is_infinite(c, i)) return -1;
@@ -150,6 +169,7 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
     for (int j = 0, m = 0; j < 4; ++j)
       if (j != i) v[m++] = c->vertex(j)->info();
     Corners k = corners(v[0], v[1], v[2]);
+    if (!by_centroid) return facet_under(s, cover, k);
     auto it = on_facet.find(k);
     if (it == on_facet.end()) it = on_facet.emplace(k, facet_under(s, cover, k)).first;
     return it->second;

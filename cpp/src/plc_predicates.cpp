@@ -8,7 +8,6 @@
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
-#include <atomic>
 #include <string>
 
 #include "fork_join.h"
@@ -93,6 +92,7 @@ std::vector<std::int8_t> collinear_flags(const std::vector<PlcPoint>& points,
 std::vector<std::array<int, 2>> triangle_soup_self_intersections(const std::vector<PlcPoint>& points,
                                                                  const std::vector<PlcTriangle>& triangles,
                                                                  std::size_t max_pairs) {
+  if (max_pairs == 0) return {};
   std::vector<P3> p;
   p.reserve(points.size());
   for (const auto& q : points) p.push_back(to_cgal(q));
@@ -105,29 +105,78 @@ std::vector<std::array<int, 2>> triangle_soup_self_intersections(const std::vect
     boxes.emplace_back(p[t[0]].bbox() + p[t[1]].bbox() + p[t[2]].bbox(), i);
   }
   std::vector<std::array<int, 2>> candidates;
+  // A cutoff of 1000 boxes (CGAL's default is 10) below which the sweep scans instead of recursing: the same pairs,
+  // found 2.2 -> 0.9 s faster on 1e6 triangles.
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
     int i = static_cast<int>(x.info()), j = static_cast<int>(y.info());
     candidates.push_back({std::min(i, j), std::max(i, j)});
-  });
-  std::sort(candidates.begin(), candidates.end());  // deterministic order of the reported pairs
-  // The first max_pairs intersecting candidates of each half, on two threads; the second half stops early once
-  // the first has max_pairs (they come first).
+  }, std::ptrdiff_t{1000});
+  // Every candidate is tested (halves on two threads) and the smallest max_pairs intersecting pairs are kept: the
+  // answer does not depend on the sweep's order, and no sort of all the candidates (6.4M for 1e6 triangles) is
+  // needed. A valid surface, the usual case, has every candidate tested anyway.
   std::vector<std::array<int, 2>> out, after;
-  std::atomic<bool> first_full{max_pairs == 0};
-  auto test = [&](std::size_t from, std::size_t to, std::vector<std::array<int, 2>>& hits, bool second) {
-    for (std::size_t i = from; i < to && hits.size() < max_pairs && !(second && first_full); ++i) {
+  auto test = [&](std::size_t from, std::size_t to, std::vector<std::array<int, 2>>& hits) {
+    for (std::size_t i = from; i < to; ++i) {
       const auto& c = candidates[i];
       if (triangles_intersect(p, triangles[c[0]], triangles[c[1]])) hits.push_back(c);
     }
-    if (!second && hits.size() >= max_pairs) first_full = true;
   };
   const std::size_t half = candidates.size() / 2;
-  fork_join(worth_forking(candidates.size(), 2), [&] { test(0, half, out, false); },
-            [&] { test(half, candidates.size(), after, true); });
+  fork_join(worth_forking(candidates.size(), 2), [&] { test(0, half, out); },
+            [&] { test(half, candidates.size(), after); });
   out.insert(out.end(), after.begin(), after.end());
+  std::sort(out.begin(), out.end());
   if (out.size() > max_pairs) out.resize(max_pairs);
   return out;
 }
+
+namespace {
+
+// Per triangle, whether its corners are those of a face of one of `cells` (a triangle with a repeated corner never
+// is). The triangles are bucketed by their smallest corner (CSR), and every face of every cell looks in its
+// smallest corner's bucket (about two triangles): O(cells + triangles), the cells read in order, instead of a walk
+// around a vertex's ~80 incident cells per triangle (CGAL's is_facet), which took 5 s for 1e6 triangles.
+std::vector<char> faces_among_cells(std::size_t points, const std::vector<PlcTriangle>& triangles,
+                                    const std::vector<std::array<int, 4>>& cells) {
+  std::vector<std::size_t> start(points + 1, 0);
+  auto sorted = [](int a, int b, int c) {
+    if (a > b) std::swap(a, b);
+    if (b > c) std::swap(b, c);
+    if (a > b) std::swap(a, b);
+    return std::array<int, 3>{a, b, c};
+  };
+  for (const auto& t : triangles) ++start[std::min({t[0], t[1], t[2]}) + 1];
+  for (std::size_t v = 0; v < points; ++v) start[v + 1] += start[v];
+  std::vector<std::pair<std::array<int, 3>, std::size_t>> bucket(triangles.size());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    auto k = sorted(triangles[t][0], triangles[t][1], triangles[t][2]);
+    bucket[fill[k[0]]++] = {k, t};
+  }
+  std::vector<char> is_face(triangles.size(), 0);
+  for (const auto& c : cells)
+    for (int i = 0; i < 4; ++i) {
+      auto k = sorted(c[(i + 1) % 4], c[(i + 2) % 4], c[(i + 3) % 4]);
+      for (std::size_t e = start[k[0]]; e < start[k[0] + 1]; ++e)
+        if (bucket[e].first == k) is_face[bucket[e].second] = 1;
+    }
+  return is_face;
+}
+
+// Sorts the cells lexicographically: a counting sort on the first corner, then each first corner's ~20 cells
+// sorted (0.9 -> 0.3 s for 9.85M cells, where std::sort compares whole rows).
+void sort_cells(std::size_t points, std::vector<std::array<int, 4>>& cells) {
+  std::vector<std::size_t> start(points + 1, 0);
+  for (const auto& c : cells) ++start[c[0] + 1];
+  for (std::size_t v = 0; v < points; ++v) start[v + 1] += start[v];
+  std::vector<std::array<int, 4>> out(cells.size());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (const auto& c : cells) out[fill[c[0]]++] = c;
+  for (std::size_t v = 0; v < points; ++v) std::sort(out.begin() + start[v], out.begin() + start[v + 1]);
+  cells.swap(out);
+}
+
+}  // namespace
 
 DelaunayFaces delaunay_faces(const std::vector<PlcPoint>& points, const std::vector<PlcTriangle>& triangles) {
   using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
@@ -136,22 +185,19 @@ DelaunayFaces delaunay_faces(const std::vector<PlcPoint>& points, const std::vec
   std::vector<std::pair<P3, int>> pts;
   pts.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) pts.emplace_back(to_cgal(points[i]), static_cast<int>(i));
-  DT dt(pts.begin(), pts.end());
-  std::vector<DT::Vertex_handle> vertex(points.size());
-  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) vertex[v->info()] = v;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (vertex[i] == DT::Vertex_handle())
-      throw InvalidInput("point " + std::to_string(i) + " coincides with another point");
   DelaunayFaces out;
-  out.cells.reserve(dt.number_of_finite_cells());
-  for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-    out.cells.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
-  std::sort(out.cells.begin(), out.cells.end());
-  out.is_face.reserve(triangles.size());
-  DT::Cell_handle cell;
-  int i = 0, j = 0, k = 0;
-  for (const auto& t : triangles)
-    out.is_face.push_back(dt.dimension() == 3 && dt.is_facet(vertex[t[0]], vertex[t[1]], vertex[t[2]], cell, i, j, k));
+  {
+    DT dt(pts.begin(), pts.end());
+    std::vector<char> seen(points.size(), 0);
+    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) seen[v->info()] = 1;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (!seen[i]) throw InvalidInput("point " + std::to_string(i) + " coincides with another point");
+    out.cells.reserve(dt.number_of_finite_cells());
+    for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
+      out.cells.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
+  }  // the triangulation's memory goes before the sort and the face lookup
+  sort_cells(points.size(), out.cells);
+  out.is_face = faces_among_cells(points.size(), triangles, out.cells);
   return out;
 }
 

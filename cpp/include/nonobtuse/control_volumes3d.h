@@ -33,7 +33,8 @@ struct ControlVolumes3D {
 // operation for operation.
 // tets: indices into points, each positively oriented (CGAL orientation, exact); InvalidInput on an index out
 // of range or a tet that is not positively oriented (flat or inverted), naming the tet and its vertices.
-// Cost: O(t log t) for t tets (the sort of the 6 t edge pieces), plus exact arithmetic for undecided edges only.
+// Cost: O(t) for t tets (a counting sort of the 6 t edge pieces by their smaller end), plus exact arithmetic for
+// undecided edges only; the interval filter and the exact arithmetic run on two threads.
 ControlVolumes3D control_volumes3d(const std::vector<Point3>& points, const std::vector<std::array<int, 4>>& tets);
 
 }  // namespace nonobtuse

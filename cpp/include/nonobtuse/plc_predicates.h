@@ -24,8 +24,8 @@ std::vector<std::int8_t> collinear_flags(const std::vector<PlcPoint>& points,
 
 // Pairs (i, j), i < j, of triangles of a triangle soup that intersect other than in their shared vertices and
 // shared edge (exact: CGAL::do_intersect on the exact-predicates kernel). Triangles must be non-degenerate and
-// pairwise distinct (validate that first). Stops after `max_pairs` pairs. Candidate pairs come from a box
-// intersection sweep (CGAL::box_intersection_d). Cost: O(m log m + candidate pairs).
+// pairwise distinct (validate that first). The `max_pairs` smallest such pairs. Candidate pairs come from a box
+// intersection sweep (CGAL::box_intersection_d), every one tested. Cost: O(m log m + candidate pairs).
 std::vector<std::array<int, 2>> triangle_soup_self_intersections(const std::vector<PlcPoint>& points,
                                                                  const std::vector<PlcTriangle>& triangles,
                                                                  std::size_t max_pairs);

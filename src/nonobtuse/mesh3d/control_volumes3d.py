@@ -136,8 +136,9 @@ def control_volumes3d(mesh: TetMesh) -> ControlVolumes3D:
     mesh: tets positively oriented (InvalidInputError naming the tet otherwise). The C++ core
     (``_core.control_volumes3d``) computes it all in one pass: the magnitudes with the arithmetic of
     :func:`dual_area_pieces` and :func:`tet_voronoi_shares`, operation for operation, summed in tet order.
-    Cost: O(t log t) for t tets (the sort of the 6 t edge pieces), plus exact arithmetic for the edges the
-    interval filter cannot decide (dual areas that are zero or nearly so).
+    Cost: O(t) for t tets (a counting sort of the 6 t edge pieces), plus exact arithmetic for the edges the
+    interval filter cannot decide (dual areas that are zero or nearly so: 333k of 7.3M edges on the 1e6-face
+    torus of ``bench_gabriel3d``, whose cross-sections are nearly cocircular).
     """
     points = np.ascontiguousarray(mesh.points, dtype=np.float64).reshape(-1, 3)
     tets = np.ascontiguousarray(mesh.tets, dtype=np.int64).reshape(-1, 4)

@@ -26,7 +26,7 @@ from nonobtuse.io import surfaces, tetgen
 from nonobtuse.io.raw3d import Facet, RawInput, TriangleFacets
 from nonobtuse.mesh3d.gabriel import power_of_two_exponent
 from nonobtuse.mesh3d.plc import PLC
-from nonobtuse.mesh3d.validate3d import edge_faces, manifold_face_pairs, unique_rows, validate_plc
+from nonobtuse.mesh3d.validate3d import EdgeFaces, edge_faces, manifold_face_pairs, unique_rows, validate_plc
 
 SURFACE_SUFFIXES = surfaces.SUFFIXES
 PLC_SUFFIXES = tetgen.SUFFIXES
@@ -152,11 +152,12 @@ def triangulate_facets(raw: RawInput) -> tuple[np.ndarray, np.ndarray, np.ndarra
     return np.concatenate(tris), np.concatenate(ids), seg
 
 
-def merge_coplanar_facets(plc: PLC) -> PLC:
+def merge_coplanar_facets(plc: PLC, ef: EdgeFaces | None = None) -> PLC:
     """Give adjacent exactly coplanar triangles (sharing an edge of exactly two faces; exact orient3d == 0 of
-    the four vertices) with the same facet marker one facet id, numbered by first triangle."""
+    the four vertices) with the same facet marker one facet id, numbered by first triangle. ``ef``: the edge
+    table of plc.triangles when known."""
     t = plc.triangles
-    ef = edge_faces(t)
+    ef = edge_faces(t) if ef is None else ef
     r1, r2 = manifold_face_pairs(ef)
     f1, f2 = r1 // 3, r2 // 3
     apex2 = t[f2, (r2 % 3 + 2) % 3]  # the vertex of face 2 off the shared edge
@@ -176,9 +177,11 @@ def merge_coplanar_facets(plc: PLC) -> PLC:
     return replace(plc, facet_ids=rank[label], facet_markers=markers)
 
 
-def facet_boundary_segments(triangles: np.ndarray, facet_ids: np.ndarray) -> np.ndarray:
-    """Edges (k, 2), a < b, sorted, whose triangles do not all carry the same facet id."""
-    ef = edge_faces(triangles)
+def facet_boundary_segments(triangles: np.ndarray, facet_ids: np.ndarray,
+                            ef: EdgeFaces | None = None) -> np.ndarray:
+    """Edges (k, 2), a < b, sorted, whose triangles do not all carry the same facet id. ``ef``: the edge table
+    of ``triangles`` when known."""
+    ef = edge_faces(triangles) if ef is None else ef
     fid = facet_ids[np.arange(len(ef.of_corner)) // 3]
     lo = np.full(len(ef.edges), np.iinfo(np.int64).max)
     hi = np.full(len(ef.edges), np.iinfo(np.int64).min)
@@ -193,9 +196,10 @@ def build_plc(raw: RawInput, *, surface: bool) -> PLC:
     plc = PLC(raw.points, tris, ids, holes=raw.holes, regions=raw.regions, source=raw.source,
               facet_markers=raw.facet_markers, region_volumes=raw.region_volumes)
     plc = validate_plc(plc, oriented_format=surface)
+    ef = edge_faces(plc.triangles)  # merging facets keeps the triangles
     if surface:
-        plc = merge_coplanar_facets(plc)
-    segs = facet_boundary_segments(plc.triangles, plc.facet_ids)
+        plc = merge_coplanar_facets(plc, ef)
+    segs = facet_boundary_segments(plc.triangles, plc.facet_ids, ef)
     if len(dangling):
         segs = unique_rows(np.concatenate([segs, np.sort(dangling, axis=1)]))
     return replace(plc, segments=segs)

@@ -72,6 +72,15 @@ def edge_faces(triangles: np.ndarray) -> EdgeFaces:
     return EdgeFaces(edges.reshape(-1, 2), count, of_corner.ravel())
 
 
+def reversed_faces(ef: EdgeFaces, flip: np.ndarray) -> EdgeFaces:
+    """The edge table of the same triangles with the faces where ``flip`` (m,) bool reversed: (a, b, c)
+    becomes (c, b, a), whose rows 0, 1, 2 are the rows 1, 0, 2 of (a, b, c). Exactly
+    ``edge_faces(reversed triangles)`` without its sort. Cost: O(m)."""
+    rows = ef.of_corner.reshape(-1, 3).copy()
+    rows[flip] = rows[flip][:, [1, 0, 2]]
+    return EdgeFaces(ef.edges, ef.count, rows.ravel())
+
+
 def manifold_face_pairs(ef: EdgeFaces) -> tuple[np.ndarray, np.ndarray]:
     """For every edge in exactly two faces, the rows (3f + k, see :func:`directed_edges`) of the edge in
     its two faces."""
@@ -208,14 +217,15 @@ def orientation_flips(plc: PLC, ef: EdgeFaces, *, warn_reversed: bool = True) ->
     return flip.astype(bool), warnings
 
 
-def outward_flips(plc: PLC, triangles: np.ndarray) -> np.ndarray:
+def outward_flips(plc: PLC, triangles: np.ndarray, ef: EdgeFaces | None = None) -> np.ndarray:
     """Per face, whether to reverse it so that each connected component of the (consistently oriented)
     surface (faces joined by edges of exactly two faces) encloses a positive signed volume, i.e. faces
     outward. Cavities (nested shells) come out outward-facing as well. The sign is a floating-point sum; it is
     a convention for writers and viewers, not a certificate, and nothing downstream depends on it. It is
-    computed on the points scaled by a power of two, so it does not overflow at any float64 scale."""
+    computed on the points scaled by a power of two, so it does not overflow at any float64 scale. ``ef``: the
+    edge table of ``triangles`` when known."""
     m = len(triangles)
-    r1, r2 = manifold_face_pairs(edge_faces(triangles))
+    r1, r2 = manifold_face_pairs(edge_faces(triangles) if ef is None else ef)
     graph = coo_matrix((np.ones(len(r1)), (r1 // 3, r2 // 3)), shape=(m, m))
     _, comp = connected_components(graph, directed=False)
     # Scaled by a power of two so the largest |coordinate| lies in [1/2, 1): the triple products neither
@@ -234,7 +244,7 @@ def orient_faces(plc: PLC, ef: EdgeFaces, *, warn_reversed: bool = True) -> tupl
     flip, warnings = orientation_flips(plc, ef, warn_reversed=warn_reversed)
     t = plc.triangles.copy()
     t[flip] = t[flip][:, ::-1]
-    out = outward_flips(plc, t)
+    out = outward_flips(plc, t, reversed_faces(ef, flip))
     t[out] = t[out][:, ::-1]
     return replace(plc, triangles=t), warnings
 
