@@ -6,11 +6,19 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <random>
 #include <vector>
 
 namespace nonobtuse::refine2d {
 namespace {
+
+// The obstacles at `which`, in that order.
+std::vector<Segment2> pick(const std::vector<Segment2>& obstacles, std::initializer_list<int> which) {
+  std::vector<Segment2> out;
+  for (int k : which) out.push_back(obstacles[k]);
+  return out;
+}
 
 // covered_from, hand-worked: v = (0, 4) above the open segment (-2, 0)-(2, 0); the sight line to (x, 0) crosses
 // y = 2 at x / 2 and y = 1 at 3 x / 4. (-3, 2)-(3, 2) blocks every one; (-3, 2)-(0.9, 2) leaves 1.8 < x < 2 open;
@@ -38,11 +46,7 @@ TEST(Shadows, ObstaclesNearTriangleKeepsWhatMayLieInFront) {
   const std::vector<Segment2> obstacles = {
       {Point(-3, 1), Point(3, 1)},         {Point(-3, -1e-3), Point(3, -1e-3)}, {s, Point(-5, 1)},
       {Point(3, 3), Point(4, 0)},          {Point(-1, -1e-12), Point(1, -1e-12)}, {Point(-10, 9), Point(10, 7)}};
-  const std::vector<Segment2> kept = obstacles_near_triangle(v, s, e, obstacles);
-  ASSERT_EQ(kept.size(), 3u);
-  EXPECT_EQ(kept[0], obstacles[0]);
-  EXPECT_EQ(kept[1], obstacles[2]);
-  EXPECT_EQ(kept[2], obstacles[4]);
+  EXPECT_EQ(obstacles_near_triangle(v, s, e, obstacles), pick(obstacles, {0, 2, 4}));
 }
 
 // covered_from decides the same on obstacles_near_triangle(v, s, e, ·) as on all obstacles, for subsegments (a, b)
@@ -183,11 +187,7 @@ TEST(Shadows, UnshadedObstaclesDropWhatIsBehindAnother) {
                                            {Point(-6, 3), Point(-5, 3)}};
   EXPECT_TRUE(in_umbra(fat, Point(1, 2), obstacles[1]));
   EXPECT_FALSE(in_umbra(fat, Point(-6, 3), obstacles[1]));
-  const std::vector<Segment2> kept = unshaded_obstacles(fat, s, e, obstacles);
-  ASSERT_EQ(kept.size(), 3u);
-  EXPECT_EQ(kept[0], obstacles[1]);
-  EXPECT_EQ(kept[1], obstacles[3]);
-  EXPECT_EQ(kept[2], obstacles[4]);
+  EXPECT_EQ(unshaded_obstacles(fat, s, e, obstacles), pick(obstacles, {1, 3, 4}));
 }
 
 // ObstaclesInFront::covered == covered_from on random vertices (of a triangulation: it keys them by vertex) and
