@@ -146,16 +146,17 @@ std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y) {
   return d;
 }
 
-std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain) {
-  if (cdt.number_of_vertices() != 0) throw InternalError("cdt::build: the triangulation is not empty");
-  require_finite_and_proper(domain);
-  // The points go into a Delaunay triangulation over the same data structure, which is then swapped in:
-  // Delaunay_triangulation_2 inserts without the constraint bookkeeping, and both break cocircular ties by the
-  // same symbolic perturbation, so this is the CDT of the points without constraints.
+namespace {
+
+// The points into the empty cdt (info = input index), spatially sorted. They go into a Delaunay triangulation over
+// the same data structure, which is then swapped in: Delaunay_triangulation_2 inserts without the constraint
+// bookkeeping, and both break cocircular ties by the same symbolic perturbation, so this is the CDT of the points
+// without constraints. Throws InvalidInput on duplicate points.
+std::vector<Vertex_handle> insert_points(CDT& cdt, const std::vector<Point2>& points) {
   CGAL::Delaunay_triangulation_2<K, Tds> dt;
-  std::vector<Vertex_handle> vh(domain.points.size());
+  std::vector<Vertex_handle> vh(points.size());
   Face_handle hint;
-  for (const auto& [p, i] : insertion_order(domain.points)) {
+  for (const auto& [p, i] : insertion_order(points)) {
     std::size_t before = dt.number_of_vertices();
     vh[i] = dt.insert(p, hint);
     if (dt.number_of_vertices() == before)
@@ -165,6 +166,15 @@ std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain) {
     hint = vh[i]->face();
   }
   static_cast<CGAL::Triangulation_2<K, Tds>&>(cdt).swap(dt);
+  return vh;
+}
+
+}  // namespace
+
+std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain) {
+  if (cdt.number_of_vertices() != 0) throw InternalError("cdt::build: the triangulation is not empty");
+  require_finite_and_proper(domain);
+  const std::vector<Vertex_handle> vh = insert_points(cdt, domain.points);
   for (std::size_t s = 0; s < domain.segments.size(); ++s) {
     auto [a, b] = domain.segments[s];
     try {
@@ -177,6 +187,32 @@ std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain) {
   if (domain.convex_hull_boundary) insert_hull_constraints(cdt);
   mark_domain(cdt, domain);
   return vh;
+}
+
+bool is_simple_pslg(const std::vector<Point2>& points, const std::vector<Segment>& segments) {
+  CDT cdt;
+  std::vector<Vertex_handle> vh;
+  try {
+    vh = insert_points(cdt, points);
+  } catch (const InvalidInput&) {
+    return false;
+  }
+  if (cdt.dimension() < 2) return false;
+  std::vector<std::uint64_t> keys;
+  keys.reserve(segments.size());
+  for (const auto& [a, b] : segments) {
+    if (a == b) return false;
+    try {
+      cdt.insert_constraint(vh.at(a), vh.at(b));
+    } catch (const CDT::Intersection_of_constraints_exception&) {
+      return false;
+    }
+    keys.push_back(static_cast<std::uint64_t>(std::min(a, b)) << 32 | static_cast<std::uint32_t>(std::max(a, b)));
+  }
+  for (const auto& [a, b] : segments)
+    if (!cdt.is_edge(vh[a], vh[b])) return false;
+  std::sort(keys.begin(), keys.end());
+  return std::adjacent_find(keys.begin(), keys.end()) == keys.end();
 }
 
 bool same_domain(const Domain2& a, const Domain2& b) {

@@ -58,6 +58,16 @@ std::uint32_t hilbert_index(std::uint32_t x, std::uint32_t y);
 // marks the domain. Returns the vertex handle of every input point. Throws InvalidInput on crossing constraints.
 std::vector<Vertex_handle> build(CDT& cdt, const Domain2& domain);
 
+// Exact: no two segments cross or share a piece of positive length, no point lies strictly inside a segment and no
+// segment repeats another (find_segment_intersections would report nothing); false also on duplicate points, a
+// segment joining a point to itself, or all points collinear. Builds the constrained Delaunay triangulation of the
+// points and segments: CGAL's constraint insertion throws at a crossing (Itag: exact predicates, no constructions)
+// and splits a constraint at every point on it, so each segment is then one edge exactly when no point lies
+// strictly inside it, which also rules out overlaps other than repeats (one overlapping another has an end inside
+// it, or both ends equal); repeats are found by sorting. Cost: one triangulation, O(n log n) for n points in
+// practice, where bounding-box candidate pairs can grow as n^2 (the long, nearly parallel edges of a star polygon).
+bool is_simple_pslg(const std::vector<Point2>& points, const std::vector<Segment>& segments);
+
 // Recomputes FaceInfo for every face and cdt.region_attribute: the exterior (flood fill from the infinite faces
 // across unconstrained edges) and hole seeds are out, the rest in; when the domain has regions, components and
 // their attributes by flood fill across unconstrained edges, else one component, attribute 0. Call again after

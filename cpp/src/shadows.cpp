@@ -77,6 +77,18 @@ void sort_by_first(const Before& before, std::vector<Segment2>& shadows) {
 
 }  // namespace
 
+bool segments_meet(const Point& p, const Point& q, const Point& c1, const Point& c2) {
+  if (p == c1 || p == c2 || q == c1 || q == c2) return true;
+  if (std::max(p.x(), q.x()) < std::min(c1.x(), c2.x()) || std::max(c1.x(), c2.x()) < std::min(p.x(), q.x()) ||
+      std::max(p.y(), q.y()) < std::min(c1.y(), c2.y()) || std::max(c1.y(), c2.y()) < std::min(p.y(), q.y()))
+    return false;
+  const auto o1 = CGAL::orientation(p, q, c1), o2 = CGAL::orientation(p, q, c2);
+  if (o1 == o2 && o1 != CGAL::COLLINEAR) return false;
+  const auto o3 = CGAL::orientation(c1, c2, p), o4 = CGAL::orientation(c1, c2, q);
+  // Otherwise they meet; all four on one line with overlapping bounding boxes overlap too.
+  return !(o3 == o4 && o3 != CGAL::COLLINEAR);
+}
+
 // Two disjoint compact convex sets are strictly separated by a line parallel to an edge of one of them (separating
 // axes), so they are disjoint iff both ends lie strictly beyond one edge's line, or the three corners strictly on
 // one side of the segment's line. Orientations only: filtered predicates, no constructions (CGAL's do_intersect
@@ -143,6 +155,44 @@ std::vector<Segment2> obstacles_near_triangle(const Point& v, const Point& s, co
     if (!apart) out.push_back(c);
   }
   return out;
+}
+
+bool in_umbra(const std::array<Point, 4>& source, const Point& x, const Segment2& c) {
+  return std::all_of(source.begin(), source.end(), [&](const Point& y) { return segments_meet(y, x, c.first, c.second); });
+}
+
+std::vector<Segment2> unshaded_obstacles(const std::array<Point, 4>& fat, const Point& s, const Point& e,
+                                         const std::vector<Segment2>& obstacles) {
+  // Squared distance from [s, e] to the nearer end (doubles: the order only guides the search).
+  auto distance2 = [&](const Segment2& c) {
+    return std::min(distance2_to_segment(c.first.x(), c.first.y(), s, e),
+                    distance2_to_segment(c.second.x(), c.second.y(), s, e));
+  };
+  std::vector<std::pair<double, std::size_t>> order;
+  order.reserve(obstacles.size());
+  for (std::size_t k = 0; k < obstacles.size(); ++k) order.emplace_back(distance2(obstacles[k]), k);
+  std::sort(order.begin(), order.end());
+  std::vector<std::size_t> kept;
+  for (const auto& [d2, k] : order) {
+    const Segment2& c = obstacles[k];
+    const std::size_t tries = std::min(kept.size(), kUmbraTries);
+    auto behind = [&](std::size_t j) { return in_umbra(fat, c.first, obstacles[j]) && in_umbra(fat, c.second, obstacles[j]); };
+    if (std::none_of(kept.end() - static_cast<std::ptrdiff_t>(tries), kept.end(), behind)) kept.push_back(k);
+  }
+  std::sort(kept.begin(), kept.end());
+  std::vector<Segment2> out;
+  out.reserve(kept.size());
+  for (std::size_t k : kept) out.push_back(obstacles[k]);
+  return out;
+}
+
+const ShadowIntervals& ObstaclesInFront::shadows(Vertex_handle v, const std::vector<Segment2>& obstacles,
+                                                 ByVertex& built) const {
+  auto it = built.find(v->info());
+  if (it == built.end())
+    it = built.emplace(v->info(), ShadowIntervals(v->point(), fat_, obstacles_near_triangle(v->point(), s_, e_, obstacles)))
+             .first;
+  return it->second;
 }
 
 ShadowIntervals::ShadowIntervals(const Point& v, const std::array<Point, 4>& fat, std::vector<Segment2> obstacles)

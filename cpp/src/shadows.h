@@ -2,6 +2,7 @@
 // only when some point of it sees the vertex). covered_from answers one question from scratch; ShadowIntervals
 // prepares one vertex's shadows on one side once, for the many subsegments of that side the lower bound asks about.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <unordered_map>
 #include <vector>
@@ -10,6 +11,20 @@
 #include "diametral_disk.h"
 
 namespace nonobtuse::refine2d {
+
+// Squared distance from (cx, cy) to the segment [u, w], in doubles (used only to prune walks and to order searches).
+inline double distance2_to_segment(double cx, double cy, const Point& u, const Point& w) {
+  double dx = w.x() - u.x(), dy = w.y() - u.y();
+  double len2 = dx * dx + dy * dy;
+  double t = len2 > 0 ? ((cx - u.x()) * dx + (cy - u.y()) * dy) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  double px = u.x() + t * dx - cx, py = u.y() + t * dy - cy;
+  return px * px + py * py;
+}
+
+// Exact: the closed segments [p, q] and [c1, c2] meet. Shared ends and disjoint bounding boxes are decided by
+// comparisons (an orientation of equal points is exactly zero, which only exact arithmetic certifies).
+bool segments_meet(const Point& p, const Point& q, const Point& c1, const Point& c2);
 
 // Exact: the closed segment [c1, c2] (c1 != c2) meets the closed triangle (p, q, r) (not degenerate). Orientation
 // predicates only.
@@ -71,26 +86,47 @@ class ShadowIntervals {
   std::vector<Segment2> maybe_;
 };
 
-// ShadowIntervals of the side [s, e] from the obstacles_near_triangle(v, s, e, obstacles) of each vertex v asked
-// about, built once, at its first question (most encroachers of a walk are never asked about). Not thread-safe:
-// one per walk.
+// Exact: every closed segment from a point of the convex hull of `source` to x meets the closed segment c (x lies
+// in c's umbra). The points y for which [y, x] meets c form a convex set (those on c or beyond it seen from x: a
+// truncated cone, a ray or the plane), so holding the four corners suffices. The umbra is convex too (an
+// intersection of such sets over the y), so a segment with both ends in it lies in it.
+bool in_umbra(const std::array<Point, 4>& source, const Point& x, const Segment2& c);
+
+// The obstacles, in their order, less those that a quick search finds wholly in the umbra (from fat, in_umbra of both
+// ends) of an obstacle kept before them: nearest to [s, e] first (doubles), each against the last kUmbraTries kept.
+// Which obstacles go is a matter of speed only: ObstaclesInFront uses the result as a subset of all of them.
+// Cost: O(k log k + k kUmbraTries) exact orientations for k obstacles.
+constexpr std::size_t kUmbraTries = 24;
+std::vector<Segment2> unshaded_obstacles(const std::array<Point, 4>& fat, const Point& s, const Point& e,
+                                         const std::vector<Segment2>& obstacles);
+
+// covered_from(v, a, b, obstacles) for the vertices v asked about and subsegments (a, b) of the side [s, e]: the
+// ShadowIntervals of each v, from obstacles_near_triangle(v, s, e, ·), built once, at its first question (most
+// encroachers of a walk are never asked about). First from the unshaded obstacles only: covered by a subset of the
+// obstacles implies covered by all (covered_from's shadows are per obstacle, their union only grows), so a yes
+// there is the answer; a no is asked again of all the obstacles (a second ShadowIntervals of v, built then). On a
+// spiky polygon a side's walk keeps some hundreds of obstacles of which a tenth are not behind another, and nearly
+// every vertex asked about is hidden: one build over the few instead of the many (the first constraint met on a
+// sight line from the side is never dropped, so the second build is rare, but the answer does not rest on that).
+// Not thread-safe: one per walk.
 class ObstaclesInFront {
  public:
   ObstaclesInFront(const Point& s, const Point& e, const std::vector<Segment2>& obstacles)
-      : s_(s), e_(e), fat_(fat_side(s, e)), obstacles_(obstacles) {}
-  const ShadowIntervals& of(Vertex_handle v) const {
-    auto it = near_.find(v->info());
-    if (it == near_.end())
-      it = near_.emplace(v->info(), ShadowIntervals(v->point(), fat_, obstacles_near_triangle(v->point(), s_, e_, obstacles_)))
-               .first;
-    return it->second;
+      : s_(s), e_(e), fat_(fat_side(s, e)), obstacles_(obstacles), unshaded_(unshaded_obstacles(fat_, s, e, obstacles)) {}
+  // covered_from(v->point(), a, b, obstacles), exactly.
+  bool covered(Vertex_handle v, const Point& a, const Point& b) const {
+    return shadows(v, unshaded_, from_unshaded_).covered(a, b) || shadows(v, obstacles_, from_all_).covered(a, b);
   }
 
  private:
+  using ByVertex = std::unordered_map<int, ShadowIntervals>;  // by vertex index
+  const ShadowIntervals& shadows(Vertex_handle v, const std::vector<Segment2>& obstacles, ByVertex& built) const;
+
   Point s_, e_;
   std::array<Point, 4> fat_;
   const std::vector<Segment2>& obstacles_;
-  mutable std::unordered_map<int, ShadowIntervals> near_;  // by vertex index
+  std::vector<Segment2> unshaded_;
+  mutable ByVertex from_unshaded_, from_all_;
 };
 
 }  // namespace nonobtuse::refine2d

@@ -1,6 +1,7 @@
 // Exact validation of a planar straight-line graph: crossings, points inside segments, collinear overlaps, and
 // what the domain covers. Candidate pairs come from bounding boxes (exact: the boxes are built from the input
-// doubles, no rounding), every decision from an exact predicate.
+// doubles, no rounding), or, when they are many, a constrained triangulation first rules everything out; every
+// decision from an exact predicate.
 #include "nonobtuse/validate2d.h"
 
 #include <CGAL/box_intersection_d.h>
@@ -48,13 +49,18 @@ void check_indices(std::size_t n_points, const std::vector<Segment>& segments) {
                            ", but there are " + std::to_string(n_points) + " points");
 }
 
-}  // namespace
+// Thrown by candidate_pairs' callbacks past their budget.
+struct TooManyPairs {};
 
-SegmentIntersections find_segment_intersections(const std::vector<Point2>& points,
-                                                const std::vector<Segment>& segments) {
-  check_indices(points.size(), segments);
-  const std::vector<Point> p = to_cgal_points(points);
+// find_segment_intersections from bounding-box candidate pairs; throws TooManyPairs after more than max_pairs
+// candidates (no limit when negative).
+SegmentIntersections candidate_pairs(const std::vector<Point>& p, const std::vector<Segment>& segments,
+                                     long long max_pairs) {
   SegmentIntersections out;
+  long long pairs = 0;
+  auto count = [&] {
+    if (max_pairs >= 0 && ++pairs > max_pairs) throw TooManyPairs{};
+  };
 
   std::vector<Box> seg_boxes;
   seg_boxes.reserve(segments.size());
@@ -65,6 +71,7 @@ SegmentIntersections find_segment_intersections(const std::vector<Point2>& point
   // when an orientation vanishes (left to the point pass below), else a proper crossing when each segment's
   // endpoints lie strictly on opposite sides of the other's line.
   CGAL::box_self_intersection_d(seg_boxes.begin(), seg_boxes.end(), [&](const Box& x, const Box& y) {
+    count();
     int s = std::min(x.info(), y.info()), t = std::max(x.info(), y.info());
     const Point &a = p[segments[s][0]], &b = p[segments[s][1]];
     const Point &c = p[segments[t][0]], &d = p[segments[t][1]];
@@ -86,6 +93,7 @@ SegmentIntersections find_segment_intersections(const std::vector<Point2>& point
   for (std::size_t i = 0; i < p.size(); ++i) point_boxes.emplace_back(p[i].bbox(), int(i));
   CGAL::box_intersection_d(point_boxes.begin(), point_boxes.end(), seg_boxes.begin(), seg_boxes.end(),
                            [&](const Box& pt, const Box& sg) {
+                             count();
                              const Point &q = p[pt.info()], &a = p[segments[sg.info()][0]],
                                          &b = p[segments[sg.info()][1]];
                              if (CGAL::orientation(a, b, q) == CGAL::COLLINEAR &&
@@ -97,6 +105,23 @@ SegmentIntersections find_segment_intersections(const std::vector<Point2>& point
   std::sort(out.points_on_segments.begin(), out.points_on_segments.end());
   std::sort(out.overlaps.begin(), out.overlaps.end());
   return out;
+}
+
+}  // namespace
+
+SegmentIntersections find_segment_intersections(const std::vector<Point2>& points,
+                                                const std::vector<Segment>& segments) {
+  check_indices(points.size(), segments);
+  const std::vector<Point> p = to_cgal_points(points);
+  // Most inputs give a few candidate pairs per segment. Past that budget (a star polygon's long, nearly parallel
+  // edges give pairs growing as n^2), one constrained triangulation decides whether there is anything to report
+  // (cdt::is_simple_pslg, exact), and only then are all the pairs examined.
+  try {
+    return candidate_pairs(p, segments, 8 * static_cast<long long>(points.size() + segments.size()) + 1024);
+  } catch (const TooManyPairs&) {
+  }
+  if (cdt::is_simple_pslg(points, segments)) return {};
+  return candidate_pairs(p, segments, -1);
 }
 
 namespace {

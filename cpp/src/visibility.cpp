@@ -8,13 +8,6 @@ namespace nonobtuse::refine2d {
 
 namespace {
 
-// Exact: every closed segment from a point of the convex hull of `source` to x meets the closed segment c (x lies
-// in c's umbra). The points y for which [y, x] meets c form a convex set (those on c or beyond it seen from x: a
-// truncated cone, a ray or the plane), so holding the four corners suffices.
-bool in_umbra(const std::array<Point, 4>& source, const Point& x, const Segment2& c) {
-  return std::all_of(source.begin(), source.end(), [&](const Point& y) { return segments_meet(y, x, c.first, c.second); });
-}
-
 // A face waiting in walk_seen, with the last constraints met on the way to it (indices into the constraints met).
 constexpr int kRecent = 4;
 // Skipping a face is never needed for correctness, only for speed: the first kFreeFaces faces of a walk are
@@ -92,18 +85,6 @@ void walk_seen(const State& st, const Side& side, bool right_in_domain, Visit&& 
 
 }  // namespace
 
-bool segments_meet(const Point& p, const Point& q, const Point& c1, const Point& c2) {
-  if (p == c1 || p == c2 || q == c1 || q == c2) return true;
-  if (std::max(p.x(), q.x()) < std::min(c1.x(), c2.x()) || std::max(c1.x(), c2.x()) < std::min(p.x(), q.x()) ||
-      std::max(p.y(), q.y()) < std::min(c1.y(), c2.y()) || std::max(c1.y(), c2.y()) < std::min(p.y(), q.y()))
-    return false;
-  const auto o1 = CGAL::orientation(p, q, c1), o2 = CGAL::orientation(p, q, c2);
-  if (o1 == o2 && o1 != CGAL::COLLINEAR) return false;
-  const auto o3 = CGAL::orientation(c1, c2, p), o4 = CGAL::orientation(c1, c2, q);
-  // Otherwise they meet; all four on one line with overlapping bounding boxes overlap too.
-  return !(o3 == o4 && o3 != CGAL::COLLINEAR);
-}
-
 DiskWalk walk_diametral_disk(const State& st, const Side& side, int lane, Walked walked) {
   DiskWalk out;
   const Point &s = side.s->point(), &e = side.e->point();
@@ -146,7 +127,7 @@ DiskWalk walk_diametral_disk(const State& st, const Side& side, int lane, Walked
 }
 
 bool sees(const State& st, const Side& start, const Point& a, const Point& b, Vertex_handle v, Sight sight) {
-  if (sight.in_front != nullptr) return !sight.in_front->of(v).covered(a, b);
+  if (sight.in_front != nullptr) return !sight.in_front->covered(v, a, b);
   if (sight.obstacles != nullptr) return !covered_from(v->point(), a, b, *sight.obstacles);
   bool found = false;
   walk_disk(st, st.domain_faces(start), a, b, [&](Face_handle f) { return found = f->has_vertex(v); });

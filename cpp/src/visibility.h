@@ -50,22 +50,8 @@ enum class Walked { Reach, Seen };
 // Walks on different lanes (0 or 1) may run concurrently, each on one thread; lane 0 is the refinement's.
 DiskWalk walk_diametral_disk(const State& st, const Side& side, int lane = 0, Walked walked = Walked::Reach);
 
-// Exact: the closed segments [p, q] and [c1, c2] meet. Shared ends and disjoint bounding boxes are decided by
-// comparisons (an orientation of equal points is exactly zero, which only exact arithmetic certifies).
-bool segments_meet(const Point& p, const Point& q, const Point& c1, const Point& c2);
-
 // Whether v, strictly inside the open diametral disk of [a, b] on `start`'s edge, counts against it (Sight).
 bool sees(const State& st, const Side& start, const Point& a, const Point& b, Vertex_handle v, Sight sight);
-
-// Squared distance from (cx, cy) to the segment [u, w], in doubles (used only to prune walks).
-inline double distance2_to_segment(double cx, double cy, const Point& u, const Point& w) {
-  double dx = w.x() - u.x(), dy = w.y() - u.y();
-  double len2 = dx * dx + dy * dy;
-  double t = len2 > 0 ? ((cx - u.x()) * dx + (cy - u.y()) * dy) / len2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  double px = u.x() + t * dx - cx, py = u.y() + t * dy - cy;
-  return px * px + py * py;
-}
 
 // Depth-first walk on `lane` from the faces `start` across the unconstrained edges (u, w) for which
 // crosses(u, w) holds; visit(face) returns true to stop.

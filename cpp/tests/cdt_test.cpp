@@ -19,6 +19,26 @@ Domain2 square_with_hole() {
   return d;
 }
 
+// is_simple_pslg, hand-worked on the square with a hole (simple) and with one change each: a segment through a hole
+// corner ((0, 0)-(3, 3) passes (1, 1)), the hole's two diagonals (they cross at (2, 2)), a point inside the side
+// (0, 0)-(4, 0), that side repeated (reversed); one diagonal alone and a free point in the hole stay simple.
+TEST(Cdt, IsSimplePslg) {
+  const Domain2 d = square_with_hole();
+  EXPECT_TRUE(cdt::is_simple_pslg(d.points, d.segments));
+  auto with = [&](std::vector<Point2> extra_points, std::vector<Segment> extra) {
+    Domain2 e = d;
+    e.points.insert(e.points.end(), extra_points.begin(), extra_points.end());
+    e.segments.insert(e.segments.end(), extra.begin(), extra.end());
+    return cdt::is_simple_pslg(e.points, e.segments);
+  };
+  EXPECT_FALSE(with({}, {{0, 6}}));
+  EXPECT_FALSE(with({}, {{5, 7}, {4, 6}}));
+  EXPECT_FALSE(with({{2, 0}}, {}));
+  EXPECT_FALSE(with({}, {{1, 0}}));
+  EXPECT_TRUE(with({}, {{5, 7}}));
+  EXPECT_TRUE(with({{2, 2}}, {}));
+}
+
 // The curve's first 4^8 cells fill the 256 x 256 corner at the origin, each next to the one before; it ends at
 // (2^16 - 1, 0).
 TEST(HilbertIndex, ConsecutiveCellsAreNeighbours) {

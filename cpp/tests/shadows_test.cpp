@@ -6,11 +6,19 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <initializer_list>
 #include <random>
 #include <vector>
 
 namespace nonobtuse::refine2d {
 namespace {
+
+// The obstacles at `which`, in that order.
+std::vector<Segment2> pick(const std::vector<Segment2>& obstacles, std::initializer_list<int> which) {
+  std::vector<Segment2> out;
+  for (int k : which) out.push_back(obstacles[k]);
+  return out;
+}
 
 // covered_from, hand-worked: v = (0, 4) above the open segment (-2, 0)-(2, 0); the sight line to (x, 0) crosses
 // y = 2 at x / 2 and y = 1 at 3 x / 4. (-3, 2)-(3, 2) blocks every one; (-3, 2)-(0.9, 2) leaves 1.8 < x < 2 open;
@@ -38,11 +46,7 @@ TEST(Shadows, ObstaclesNearTriangleKeepsWhatMayLieInFront) {
   const std::vector<Segment2> obstacles = {
       {Point(-3, 1), Point(3, 1)},         {Point(-3, -1e-3), Point(3, -1e-3)}, {s, Point(-5, 1)},
       {Point(3, 3), Point(4, 0)},          {Point(-1, -1e-12), Point(1, -1e-12)}, {Point(-10, 9), Point(10, 7)}};
-  const std::vector<Segment2> kept = obstacles_near_triangle(v, s, e, obstacles);
-  ASSERT_EQ(kept.size(), 3u);
-  EXPECT_EQ(kept[0], obstacles[0]);
-  EXPECT_EQ(kept[1], obstacles[2]);
-  EXPECT_EQ(kept[2], obstacles[4]);
+  EXPECT_EQ(obstacles_near_triangle(v, s, e, obstacles), pick(obstacles, {0, 2, 4}));
 }
 
 // covered_from decides the same on obstacles_near_triangle(v, s, e, ·) as on all obstacles, for subsegments (a, b)
@@ -167,6 +171,56 @@ TEST(Shadows, ShadowIntervalsAgreeWithCoveredFrom) {
   EXPECT_GT(open, 1000);
   EXPECT_GT(prepared, 250);
   EXPECT_GT(merged, 50);
+}
+
+// unshaded_obstacles, hand-worked on the side (-2, 0)-(2, 0) and the long A = (-3, 1)-(3, 1): the lines from the
+// side's ends (+-2, 0) to (+-1, 2) and to (+-4, 3) cross y = 1 within |x| <= 2.67 < 3, so (-1, 2)-(1, 2) and
+// (-4, 3)-(4, 3) lie wholly behind A and go; the line from (-2, 0) to (-6, 3) crosses y = 1 at x = -3.33, beside A, so
+// (-6, 3)-(-5, 3) stays, and so does (2.5, 0.5)-(3.5, 0.5), nearer than A. Kept in their input order.
+TEST(Shadows, UnshadedObstaclesDropWhatIsBehindAnother) {
+  const Point s(-2, 0), e(2, 0);
+  const auto fat = fat_side(s, e);
+  const std::vector<Segment2> obstacles = {{Point(-1, 2), Point(1, 2)},
+                                           {Point(-3, 1), Point(3, 1)},
+                                           {Point(-4, 3), Point(4, 3)},
+                                           {Point(2.5, 0.5), Point(3.5, 0.5)},
+                                           {Point(-6, 3), Point(-5, 3)}};
+  EXPECT_TRUE(in_umbra(fat, Point(1, 2), obstacles[1]));
+  EXPECT_FALSE(in_umbra(fat, Point(-6, 3), obstacles[1]));
+  EXPECT_EQ(unshaded_obstacles(fat, s, e, obstacles), pick(obstacles, {1, 3, 4}));
+}
+
+// ObstaclesInFront::covered == covered_from on random vertices (of a triangulation: it keys them by vertex) and
+// obstacles above the side (-2, 0)-(2, 0), many behind others (seeded).
+TEST(Shadows, ObstaclesInFrontAgreeWithCoveredFrom) {
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> coordinate(-4, 4), height(0.1, 4), length(0.1, 2);
+  const Point s(-2, 0), e(2, 0);
+  int covered = 0, open = 0;
+  for (int round = 0; round < 40; ++round) {
+    std::vector<Segment2> obstacles;
+    for (int k = 0; k < 30; ++k) {
+      const Point c1(coordinate(rng), height(rng));
+      const double angle = coordinate(rng), l = length(rng);
+      const Point c2(c1.x() + l * std::cos(angle), std::max(0.05, c1.y() + l * std::sin(angle)));
+      obstacles.emplace_back(c1, c2);
+    }
+    const ObstaclesInFront in_front(s, e, obstacles);
+    CDT cdt;
+    for (int k = 0; k < 10; ++k) {
+      const Vertex_handle v = cdt.insert(Point(coordinate(rng), height(rng)));
+      v->info() = k;
+      for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j <= 4; ++j) {
+          const Point a(-2 + i, 0), b(-2 + j, 0);
+          const bool expected = covered_from(v->point(), a, b, obstacles);
+          ASSERT_EQ(in_front.covered(v, a, b), expected) << "round " << round << " v " << v->point();
+          ++(expected ? covered : open);
+        }
+    }
+  }
+  EXPECT_GT(covered, 100);
+  EXPECT_GT(open, 100);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace nonobtuse {
 namespace {
 
@@ -117,6 +119,26 @@ TEST(Validate2dCoverage, CollinearPointsCoverNothing) {
   EXPECT_EQ(c.segments_outside, (std::vector<int>{0}));
   EXPECT_EQ(c.regions, (std::vector<SeedPlace>{SeedPlace::Outside}));
   EXPECT_EQ(c.holes, (std::vector<SeedPlace>{SeedPlace::Outside}));
+}
+
+// Past the candidate-pair budget (a fan of 400 long, nearly parallel segments: about 80,000 box pairs, over
+// 8 * (800 + 400) + 1024) the report is the same: empty for the fan, and the 100 crossings of a chord added to it found.
+TEST(Validate2d, ManyBoxPairsStillReportExactly) {
+  std::vector<Point2> p;
+  std::vector<Segment> s;
+  for (int i = 0; i < 400; ++i) {
+    const double a = 0.7 + 1e-4 * i;
+    p.push_back({0.5 * std::cos(a), 0.5 * std::sin(a)});
+    p.push_back({std::cos(a), std::sin(a)});
+    s.push_back({2 * i, 2 * i + 1});
+  }
+  EXPECT_TRUE(find_segment_intersections(p, s).crossings.empty());
+  p.push_back({0.75 * std::cos(0.68), 0.75 * std::sin(0.68)});
+  p.push_back({0.75 * std::cos(0.70995), 0.75 * std::sin(0.70995)});
+  s.push_back({800, 801});
+  const auto r = find_segment_intersections(p, s);
+  EXPECT_EQ(r.crossings.size(), 100u);  // the segments at angles 0.7 .. 0.7099 cross it
+  EXPECT_TRUE(r.points_on_segments.empty());
 }
 
 TEST(Validate2dCoverage, SegmentThroughAPointIsInvalidInput) {

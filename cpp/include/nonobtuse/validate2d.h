@@ -26,7 +26,9 @@ struct SegmentIntersections {
 // two distinct points. Two segments that meet only at a common endpoint, or where an endpoint of one lies inside
 // the other (reported in points_on_segments instead), are not crossings.
 // Every list is sorted. Cost: candidate pairs by bounding-box intersection (CGAL::box_intersection_d,
-// O((n + k) log^2 n) for n boxes and k overlapping box pairs), then O(1) exact predicates per candidate pair.
+// O((n + k) log^2 n) for n boxes and k overlapping box pairs), then O(1) exact predicates per candidate pair; past
+// 8 pairs per point and segment, one constrained Delaunay triangulation first (near-linear), and the pairs only
+// when it finds something to report.
 // Throws InvalidInput when a segment index is out of range.
 SegmentIntersections find_segment_intersections(const std::vector<Point2>& points,
                                                 const std::vector<Segment>& segments);
