@@ -30,6 +30,8 @@ void bind_quality3d(py::module_& m) {
       .def_property_readonly("tets", [](const InteriorRefinement& r) { return from_index_rows<4>(r.tets); })
       .def_property_readonly("tet_labels", [](const InteriorRefinement& r) { return from_vector(r.tet_labels); })
       .def_property_readonly("blocked_rows", [](const InteriorRefinement& r) { return from_vector(r.blocked_rows); })
+      .def_property_readonly("small_angle_rows",
+                             [](const InteriorRefinement& r) { return from_vector(r.small_angle_rows); })
       .def_property_readonly("blocked_centers",
                              [](const InteriorRefinement& r) { return from_points3(r.blocked_centers); })
       .def_property_readonly("faces", [](const InteriorRefinement& r) { return from_index_rows<3>(r.faces); })

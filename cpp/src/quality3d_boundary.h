@@ -37,6 +37,20 @@ class BoundarySplitter {
   // Is a point strictly inside the diametral sphere of segment ab (c == -1) or triangle abc? (exact)
   bool encroached(int a, int b, int c) const;
 
+  // The small-angle rule (its termination argument is at refine_interior's boundary split rule): is the split that
+  // a point in the closed diametral sphere of subsegment ab (f == -1) or of subfacet abc of facet f asks for, i.e.
+  // the subsegment, or the subsegments of f that abc's circumcenter encroaches, or else abc itself, (i) at a small
+  // input angle: a subsegment with a sharp end or of a sharp segment, or a subfacet with a sharp corner; or (ii)
+  // shorter than `shortest`: halves of a subsegment shorter than it, or a subfacet circumcenter closer than it to
+  // the corners (Shewchuk's terminator: the split would make a feature smaller than the tet it is made for)?
+  // Sharp (floating-point angles on the boundary this splitter was built from): a segment of s_ through two facets
+  // at a dihedral angle below kSharpDihedralDegrees (between the half-planes, so a reflex angle over 360 - that
+  // counts too), and its points; an apex, a point where two subsegments meet below kSmallApexDegrees or a
+  // subsegment leans over a facet through it below that (gabriel3d::segment_facet_angles); and the midpoint of a
+  // subsegment with a sharp end or of a sharp segment (so the mark follows the splits along a segment from its sharp
+  // end). Lengths compared exactly against the double `shortest`.
+  bool near_small_angle(int f, int a, int b, int c, double shortest) const;
+
   // The split for a point in the closed diametral sphere of subsegment ab: its midpoint. False when refused.
   bool split_subsegment(int a, int b);
   // The split for a point in the closed diametral sphere of subfacet abc of facet f (a face of its triangulation):
@@ -56,12 +70,25 @@ class BoundarySplitter {
 
  private:
   bool may_add(const P3& p);
-  void added_point(int i);
+  void added_point(int i, bool sharp);
+  // The constrained edges of facet f whose diametral spheres hold z strictly inside, sorted.
+  std::vector<gabriel3d::Key> encroached_subsegments(int f, const P3& z) const;
+  bool sharp_subsegment(int a, int b) const;
 
   gabriel3d::PlcState s_;
   gabriel3d::PointIndex index_;
   double min_length_;
   long long max_points_;
+  std::vector<char> sharp_segment_;  // per segment of s_ (the parents of subsegments): at a small dihedral angle
+  std::vector<char> sharp_point_;    // per point: sharp (near_small_angle)
+  void mark_sharp_apexes();
 };
+
+// Facets meeting at a segment below this dihedral angle make it sharp (Shewchuk's 3D Delaunay refinement proof needs
+// 90 degrees; 85 keeps the right angles of tessellated CAD models, measured at 89.9998 on joint.off, out).
+constexpr double kSharpDihedralDegrees = 85.0;
+// Segments meeting below this angle, or a segment leaning over a facet below it, make their apex sharp (Ruppert's
+// 60 degrees, as 2D's small input angles).
+constexpr double kSmallApexDegrees = 60.0;
 
 }  // namespace nonobtuse::quality3d

@@ -110,7 +110,7 @@ class InteriorRefiner {
       spheres_ = std::make_unique<SphereIndex>(pts_, faces_, segments_);
     }
     collect(out);
-    if (out.status == "converged" && !out.blocked_rows.empty()) out.status = "blocked";
+    if (out.status == "converged" && out.blocked_rows.size() > out.small_angle_rows.size()) out.status = "blocked";
     return out;
   }
 
@@ -197,10 +197,16 @@ class InteriorRefiner {
     return sorted_corners({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
   }
 
-  // Radius-edge ratio and whether the domain cell c is over a bound (floating point).
+  // A domain cell's shape and size against the bounds (floating point).
+  struct Quality {
+    double ratio;     // circumradius / shortest edge (inf for a flat cell)
+    double shortest;  // shortest edge
+    bool over;        // over a bound (or flat)
+    bool over_volume;
+  };
   // The corners in index order: the rounding does not depend on the cell's history (the order of a cell's
   // vertices follows the insertions, and the spatial sort of a bulk insertion is randomized).
-  std::pair<double, bool> measure(Cell c) const {
+  Quality measure(Cell c) const {
     const std::array<int, 4> k = corners(c);
     const P3 &a = pts_[k[0]], &b = pts_[k[1]], &d = pts_[k[2]], &e = pts_[k[3]];
     double shortest = std::numeric_limits<double>::infinity();
@@ -209,17 +215,32 @@ class InteriorRefiner {
       for (int j = i + 1; j < 4; ++j) shortest = std::min(shortest, CGAL::squared_distance(*v[i], *v[j]));
     const double radius2 = CGAL::squared_radius(a, b, d, e);
     const double ratio = std::sqrt(radius2 / shortest);
-    const double volume = std::abs(CGAL::volume(a, b, d, e));
-    const bool over = (bounds_.radius_edge > 0 && ratio > bounds_.radius_edge) ||
-                      volume > bounds_.volume_bounds[c->info()] || !std::isfinite(ratio);
-    return {ratio, over};
+    const bool over_volume = std::abs(CGAL::volume(a, b, d, e)) > bounds_.volume_bounds[c->info()];
+    const bool over = (bounds_.radius_edge > 0 && ratio > bounds_.radius_edge) || over_volume || !std::isfinite(ratio);
+    return {ratio, std::sqrt(shortest), over, over_volume};
+  }
+
+  // The small-angle rule (as Triangle and TetGen leave what no insertion can fix near small input angles): a cell
+  // over the radius-edge bound alone whose circumcenter lies in the closed diametral sphere at `row` (a subfacet,
+  // or -1 - a subsegment) is left alone when the split that sphere asks for is at a small input angle or shorter
+  // than the cell's shortest edge (BoundarySplitter::near_small_angle). A cell over the volume bound is always
+  // split for (its splits are no smaller than (3V / 4 pi)^(1/3) / sqrt 2, below).
+  bool left_alone(const Quality& q, int row) const {
+    if (!splitter_ || q.over_volume || !std::isfinite(q.ratio) || row == SphereIndex::kNone) return false;
+    if (row < 0) {
+      const Segment& s = segments_[-1 - row];
+      return splitter_->near_small_angle(-1, s[0], s[1], -1, q.shortest);
+    }
+    const auto [a, p, r] = faces_[row];
+    const int f = splitter_->common_facet(a, p, r);
+    return f >= 0 && splitter_->near_small_angle(f, a, p, r, q.shortest);
   }
 
   void push_if_bad(Cell c) {
     if (dt_.is_infinite(c) || c->info() < 0) return;
-    auto [ratio, over] = measure(c);
-    if (!over) return;
-    queue_.push({std::isfinite(ratio) ? ratio : std::numeric_limits<double>::max(), corners(c),
+    const Quality q = measure(c);
+    if (!q.over) return;
+    queue_.push({std::isfinite(q.ratio) ? q.ratio : std::numeric_limits<double>::max(), corners(c),
                  {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
   }
 
@@ -257,7 +278,7 @@ class InteriorRefiner {
   // Inserts p when it is finite, strictly outside every closed diametral sphere, in a domain cell and on no vertex
   // (exact), labelling its cavity and queueing the bad cells in it; false otherwise.
   bool place(const P3& p, Cell hint) {
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) return false;
+    if (!finite(p)) return false;
     DT::Locate_type lt;
     int li = 0, lj = 0;
     Cell at = dt_.locate(p, lt, li, lj, hint);
@@ -287,9 +308,17 @@ class InteriorRefiner {
   // least r > R l >= 2 l for a circumcenter made for a tet with shortest edge l, at least r / sqrt 2 for a subfacet
   // circumcenter that such a circumcenter encroached, and at least 1 / sqrt 2 of that for a subsegment midpoint that
   // the subfacet circumcenter encroached; around the chain circumcenter -> subfacet -> subsegment -> circumcenter the
-  // factor is R / 2 >= 1, so radii never shrink below the local feature size and finitely many points fit. Near
-  // smaller input angles the chains can shrink: splits stop at min_length and max_boundary_points (refused, counted),
-  // their tets stay blocked, as TetGen leaves such tets and counts them; time_limit bounds every step.
+  // factor is R / 2 >= 1, so radii never shrink below the local feature size and finitely many points fit.
+  // Small input angles (the small-angle rule, left_alone): a tet over the radius-edge bound alone is not split for
+  // when its split would lie at a sharp segment (a dihedral angle below 90 degrees, where the chain's factor drops
+  // below 1) or would be shorter than the tet's shortest edge l. The second clause never fires where the argument
+  // above holds (the split's radius is at least r / sqrt 2 > sqrt 2 l, or r / 2 > l for the subsegments a subfacet
+  // circumcenter encroaches), so the rule only stops chains that would shrink: every split made for a tet has
+  // insertion radius >= l and lies away from the sharp segments, and a tet over the volume bound V makes splits of
+  // radius >= (3V / 4 pi)^(1/3) / 2. What stays unbounded are the cascades restore_gabriel runs between features at
+  // small angles that such a split reaches; they stop at min_length and max_boundary_points (refused, counted, the
+  // step handed back), and time_limit bounds every step. The tets left alone are counted (small_angle_rows), as
+  // Triangle's terminator and TetGen's -q leave them.
   bool split_boundary() {
     struct Blocked {
       double ratio;
@@ -299,11 +328,12 @@ class InteriorRefiner {
     std::vector<Blocked> blocked;
     for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c) {
       if (c->info() < 0) continue;
-      auto [ratio, over] = measure(c);
-      const P3 center = over ? circumcenter(c) : P3();
-      if (over && std::isfinite(center.x()) && std::isfinite(center.y()) && std::isfinite(center.z()) &&
-          spheres_->hits(center))
-        blocked.push_back({std::isfinite(ratio) ? ratio : std::numeric_limits<double>::max(), corners(c), center});
+      const Quality q = measure(c);
+      const P3 center = q.over ? circumcenter(c) : P3();
+      if (!q.over || !finite(center)) continue;
+      const int row = spheres_->find(center);
+      if (row != SphereIndex::kNone && !left_alone(q, row))
+        blocked.push_back({std::isfinite(q.ratio) ? q.ratio : std::numeric_limits<double>::max(), corners(c), center});
     }
     std::sort(blocked.begin(), blocked.end(), [](const Blocked& x, const Blocked& y) {
       return std::tie(y.ratio, x.key) < std::tie(x.ratio, y.key);  // worst first
@@ -323,6 +353,8 @@ class InteriorRefiner {
     }
     return splitter_->restore_gabriel([&] { return out_of_time(); });
   }
+
+  static bool finite(const P3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
 
   // The splitter's new points (from index mark on) into dt_, their cells unlabelled.
   void insert_boundary_points(std::size_t mark) {
@@ -442,9 +474,13 @@ class InteriorRefiner {
                            c);
     std::sort(cells.begin(), cells.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     for (const auto& [t, c] : cells) {
-      if (measure(c).second) {
+      const Quality q = measure(c);
+      if (q.over) {
+        const P3 center = circumcenter(c);
+        if (finite(center) && left_alone(q, spheres_->find(center)))
+          out.small_angle_rows.push_back(static_cast<int>(out.tets.size()));
         out.blocked_rows.push_back(static_cast<int>(out.tets.size()));
-        out.blocked_centers.push_back(from_cgal(circumcenter(c)));
+        out.blocked_centers.push_back(from_cgal(center));
       }
       out.tets.push_back(t);
       out.tet_labels.push_back(c->info());

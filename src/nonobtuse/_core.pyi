@@ -589,6 +589,9 @@ class InteriorRefinement:
     def segments(self) -> numpy.typing.NDArray[numpy.int64]:
         ...
     @property
+    def small_angle_rows(self) -> numpy.typing.NDArray[numpy.int32]:
+        ...
+    @property
     def split_face_facets(self) -> numpy.typing.NDArray[numpy.int32]:
         ...
     @property

@@ -53,8 +53,9 @@ struct InteriorBounds {
   double min_length = 0.0;           // no boundary split point closer than this to a point; 0: none
 };
 
-// "converged": every tet within the bounds; "blocked": the tets over a bound left have circumcenters that no split
-// frees (in a closed diametral sphere whose split was refused, on a mesh vertex or outside the domain: blocked_rows);
+// "converged": every tet within the bounds but those left alone near small input angles (small_angle_rows);
+// "blocked": other tets over a bound are left, their circumcenters freed by no split (in a closed diametral sphere
+// whose split was refused, on a mesh vertex or outside the domain: blocked_rows);
 // "budget_exhausted": max_points or time_limit; "not_conforming": a subfacet or subsegment is not a face or an edge
 // of the Delaunay tetrahedralization (cospherical points): before any boundary split, nothing was inserted (the
 // input returned); after one, the state before that boundary step is returned (the first certified_points points,
@@ -68,6 +69,11 @@ struct InteriorRefinement {
   std::vector<std::array<int, 4>> tets;
   std::vector<int> tet_labels;
   std::vector<int> blocked_rows;       // rows of tets over a bound whose circumcenters could not be inserted
+  // The blocked rows left alone near small input angles (the small-angle rule: a tet over the radius-edge bound
+  // alone, its circumcenter in the closed diametral sphere of a subsegment or subfacet whose split would lie at a
+  // segment where facets meet below 90 degrees, or would be shorter than the tet's shortest edge; see
+  // quality3d_boundary.h), sorted.
+  std::vector<int> small_angle_rows;
   std::vector<Point3> blocked_centers;  // their circumcenters (floating point)
   // The boundary at the end: the subfacets (faces of the Delaunay tetrahedralization, each oriented away from a
   // domain tet behind it; the input's as given while no boundary split happened) with their input facet ids, and

@@ -41,14 +41,19 @@ class Quality3DResult:
             boundary_faces (subfacets) with face_facets and face_markers of their input facets; segments the
             subsegments.
     status: "converged" (the exact Gabriel check of mesh passes and every tet meets the bounds, floating
-            point), "quality_blocked" (certificate passes; a round could add nothing: the centers left lie on
-            diametral spheres), "budget_exhausted" (max_points or time_limit), or the boundary repair's status
+            point, but those left alone near small input angles), "quality_blocked" (certificate passes; a
+            round could add nothing: the centers left lie on diametral spheres), "budget_exhausted" (max_points or time_limit), or the boundary repair's status
             when one did not converge ("budget_exhausted", "min_length_reached", "stalled"): mesh is then
             the last interior pass's on the last converged repair's boundary (certified) when there was one;
             stats["last_repair"] says how the last repair ended.
     stats:  boundary_points, interior_points, steiner_points (all points not in the input), tets,
-            worst_radius_edge, max_volume, min_volume, radius_edge_over_2 (see :func:`tet_quality`), bad_tets
-            (tets over a bound at the end), blocked_centers (tets over a bound the last interior pass left:
+            worst_radius_edge, max_volume, min_volume, radius_edge_over_2 (see :func:`tet_quality`), and the
+            same with the suffix _outside_small_angles (over the tets not left alone), bad_tets (tets over a
+            bound at the end), small_angle_tets (those of them the small-angle rule left alone: a tet over
+            the radius-edge bound alone whose circumcenter lies in the closed diametral sphere of a
+            subsegment or subfacet whose split would lie at a segment where facets meet below 90 degrees or
+            be shorter than the tet's shortest edge; ``cpp/src/quality3d_boundary.h``),
+            bad_tets_outside_small_angles, blocked_centers (tets over a bound the last interior pass left:
             centers that no split frees), inserted_by_passes (circumcenters the interior passes inserted),
             boundary_points_by_passes / boundary_rounds / refused_splits (the passes' own boundary splits,
             their steps, and the splits refused at min_length or the budget), rounds,
@@ -188,7 +193,9 @@ def refine_quality3d(
         # else the last certified mesh: the pass's before the boundary step it could not finish
         g, mesh = (repaired, repaired.mesh) if status == "converged" else (g, grown)
     bad = refiner.bad_tets(mesh)[0]
-    if status == "converged" and len(bad):  # the pass's measure and numpy's differ in the last ulp
+    small_angle = refiner.small_angle_rows(mesh)
+    outside = np.setdiff1d(bad, small_angle)
+    if status == "converged" and len(outside):  # the pass's measure and numpy's differ in the last ulp
         status = "quality_blocked"
     # mesh is the last interior pass's, on the last converged repair's boundary, when a later repair stopped
     # (its status is returned with that mesh)
@@ -198,7 +205,9 @@ def refine_quality3d(
     interior_points = len(mesh.points) - len(refiner.split_mesh(mesh)[0].points)
     stats = {"status": status, "steiner_points": len(mesh.points) - len(plc.points),
              "boundary_points": len(mesh.points) - interior_points, "interior_points": interior_points,
-             **tet_quality(mesh), "bad_tets": int(bad.size), "blocked_centers": blocked,
+             **tet_quality(mesh), **tet_quality(mesh, small_angle, "_outside_small_angles"),
+             "bad_tets": int(bad.size), "small_angle_tets": int(small_angle.size),
+             "bad_tets_outside_small_angles": int(outside.size), "blocked_centers": blocked,
              "inserted_by_passes": refiner.inserted, "boundary_points_by_passes": refiner.boundary_points,
              "boundary_rounds": refiner.boundary_rounds, "refused_splits": refiner.refused_splits,
              "encroached_facets": len(report.faces), "encroached_segments": len(report.segments),

@@ -38,19 +38,21 @@ def shortest_edges(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
     return np.sqrt(d2.min(0))
 
 
-def tet_quality(mesh: TetMesh) -> dict[str, Any]:
-    """Shape and size of mesh.tets, floating point: tets, worst_radius_edge (circumradius over shortest edge;
-    a regular tet has 0.612), max_volume, min_volume, and radius_edge_over_2 (the fraction of tets above
-    2)."""
+def tet_quality(mesh: TetMesh, leave_out: np.ndarray | None = None, suffix: str = "") -> dict[str, Any]:
+    """Shape and size of mesh.tets but the rows `leave_out`, floating point: tets, worst_radius_edge
+    (circumradius over shortest edge; a regular tet has 0.612), max_volume, min_volume, and
+    radius_edge_over_2 (the fraction of tets above 2); each key ends with `suffix`."""
     tets = np.asarray(mesh.tets, dtype=np.int64).reshape(-1, 4)
+    if leave_out is not None:
+        tets = np.delete(tets, np.asarray(leave_out, dtype=np.int64), axis=0)
+    keys = ["tets", "worst_radius_edge", "max_volume", "min_volume", "radius_edge_over_2"]
     if not len(tets):
-        return {"tets": 0, "worst_radius_edge": None, "max_volume": None, "min_volume": None,
-                "radius_edge_over_2": None}
+        return {k + suffix: v for k, v in zip(keys, [0, None, None, None, None])}
     _, radius, volume = tet_circumspheres(np.asarray(mesh.points, dtype=np.float64), tets)
     ratio = radius / shortest_edges(np.asarray(mesh.points, dtype=np.float64), tets)
-    return {"tets": len(tets), "worst_radius_edge": float(ratio.max()), "max_volume": float(volume.max()),
-            "min_volume": float(volume.min()), "radius_edge_over_2": float((ratio > 2.0).mean())}
-
+    values = [len(tets), float(ratio.max()), float(volume.max()), float(volume.min()),
+              float((ratio > 2.0).mean())]
+    return {k + suffix: v for k, v in zip(keys, values)}
 
 
 class InteriorRefiner:
@@ -61,6 +63,8 @@ class InteriorRefiner:
         self.plc, self.max_volume, self.radius_edge = plc, max_volume, radius_edge
         self.time_limit, self.started, self.gabriel_options = time_limit, started, gabriel_options
         self.inserted = 0  # circumcenters the interior passes inserted
+        # the last pass's mesh and its rows of tets left alone near small input angles (the small-angle rule)
+        self.small_angle: tuple[TetMesh | None, np.ndarray] = (None, np.zeros(0, dtype=np.int64))
         self.boundary_points = self.boundary_rounds = self.refused_splits = 0  # the passes' boundary splits
 
     def repair(self, surface: PLC, interior: np.ndarray, share: float = 1.0) -> Any:
@@ -147,7 +151,10 @@ class InteriorRefiner:
         the domain (exact), at most `budget` of them within the time left; a center in a closed diametral
         sphere splits that subsegment or subfacet (Ruppert's and Shewchuk's rule) and the boundary is split
         until Gabriel again, in the same tetrahedralization, and so on until no center is left that a split
-        frees. limits: the boundary repair's stats (its min_length and max_steiner bound the splits). Returns
+        frees; a tet over the radius-edge bound alone whose split would lie at a small input angle or be
+        shorter than its shortest edge is left alone (the small-angle rule, ``quality3d.h``; its rows in
+        :attr:`small_angle`). limits: the boundary repair's stats (its min_length and max_steiner bound the
+        splits). Returns
         the mesh (points: the input's, then the new ones in order; boundary_faces, face_facets and segments
         the split boundary), the pass's status ("converged", "blocked", "budget_exhausted"; "not_conforming"
         with `mesh` itself returned: it was not Delaunay to begin with; "not_conforming" or
@@ -176,6 +183,7 @@ class InteriorRefiner:
         grown = self._with_boundary(replace(mesh, points=r.points[: r.certified_points],
                                             tets=np.asarray(r.tets, dtype=np.int64), tet_regions=regions),
                                     r.faces, r.face_facets, r.segments)
+        self.small_angle = (grown, np.asarray(r.small_angle_rows, dtype=np.int64))
         split = None
         if r.certified_points < len(r.points):
             split = self._with_boundary(replace(mesh, points=r.points, tets=np.zeros((0, 4), dtype=np.int64),
@@ -188,6 +196,12 @@ class InteriorRefiner:
         return replace(mesh, boundary_faces=np.asarray(faces, dtype=np.int64), face_facets=facets,
                        face_markers=self.plc.markers_of_facets(facets),
                        segments=np.asarray(segments, dtype=np.int64).reshape(-1, 2))
+
+    def small_angle_rows(self, mesh: TetMesh) -> np.ndarray:
+        """The rows of mesh.tets the last interior pass left alone near small input angles, when mesh is
+        that pass's mesh; else none."""
+        grown, rows = self.small_angle
+        return rows if grown is mesh else np.zeros(0, dtype=np.int64)
 
     def bad_tets(self, mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
         """Rows of mesh.tets over a bound, most skewed first, and their circumcenters (floating point)."""
