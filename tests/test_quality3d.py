@@ -293,7 +293,8 @@ def test_interior_pass_hands_back_the_state_before_a_boundary_step_it_cannot_fin
     faces = np.array([[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]])
     segments = np.array([[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]])
     r = _core.refine_interior(points, np.array([[0, 1, 2, 3]]), np.zeros(1, dtype=np.int64), faces, segments,
-                              2.0, np.array([0.05]), 10**6, 60.0, face_facets=np.arange(4))
+                              2.0, np.array([0.05]), 10**6, 60.0, face_facets=np.arange(4),
+                              sharp_dihedral_degrees=0.0, small_apex_degrees=0.0)  # the small-angle rule off
     assert r.status in ("not_conforming", "boundary_stopped") and r.boundary_rounds > 0
     kept = r.points[: r.certified_points]
     assert r.certified_points < len(r.points) and len(r.split_faces) > len(r.faces)

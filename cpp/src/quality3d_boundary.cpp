@@ -29,7 +29,8 @@ P3 midpoint(const P3& a, const P3& b) {
 
 BoundarySplitter::BoundarySplitter(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
                                    const std::vector<int>& face_facets, const std::vector<Segment>& segments,
-                                   double min_length, long long max_points)
+                                   double min_length, long long max_points, double sharp_dihedral,
+                                   double small_apex)
     : s_(gabriel3d::build_plc_state(surface_plc(points, faces, face_facets, segments))),
       index_(s_.points),
       min_length_(min_length),
@@ -37,18 +38,18 @@ BoundarySplitter::BoundarySplitter(const std::vector<Point3>& points, const std:
       sharp_segment_(s_.segments.size(), 0),
       sharp_point_(s_.points.size(), 0) {
   for (const auto& angle : gabriel3d::dihedral_angles(s_)) {
-    if (angle.degrees >= kSharpDihedralDegrees) continue;
+    if (angle.degrees >= sharp_dihedral) continue;
     const int a = angle.vertices[0], b = angle.vertices[1];
     sharp_segment_[s_.subsegments.at(gabriel3d::key(a, b))] = 1;
     sharp_point_[a] = sharp_point_[b] = 1;
   }
-  mark_sharp_apexes();
+  mark_sharp_apexes(small_apex);
 }
 
-void BoundarySplitter::mark_sharp_apexes() {
+void BoundarySplitter::mark_sharp_apexes(double small_apex) {
   std::vector<std::vector<int>> ends(s_.points.size());  // the other ends of the subsegments at each point
   for (const auto& [k, parent] : s_.subsegments) ends[k.first].push_back(k.second), ends[k.second].push_back(k.first);
-  const double cos_limit = std::cos(kSmallApexDegrees * 3.14159265358979323846 / 180.0);
+  const double cos_limit = std::cos(small_apex * 3.14159265358979323846 / 180.0);
   for (std::size_t v = 0; v < ends.size(); ++v)
     for (std::size_t i = 0; i < ends[v].size() && !sharp_point_[v]; ++i)
       for (std::size_t j = i + 1; j < ends[v].size(); ++j) {
@@ -56,7 +57,7 @@ void BoundarySplitter::mark_sharp_apexes() {
         if (d * e > cos_limit * std::sqrt(d.squared_length() * e.squared_length())) sharp_point_[v] = 1;
       }
   for (const auto& angle : gabriel3d::segment_facet_angles(s_))
-    if (angle.degrees < kSmallApexDegrees) sharp_point_[angle.vertices[0]] = 1;
+    if (angle.degrees < small_apex) sharp_point_[angle.vertices[0]] = 1;
 }
 
 void BoundarySplitter::add_interior_point(const P3& p) {

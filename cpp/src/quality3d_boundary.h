@@ -16,10 +16,11 @@ class BoundarySplitter {
  public:
   // points: every point of the mesh (boundary and interior, in the caller's order); faces with the input facet id of
   // each (face_facets), segments: the subfacets and subsegments. min_length: no split point closer than this to a
-  // point (0: none); max_points: boundary points to add at most. Throws InvalidInput as build_plc_state does.
+  // point (0: none); max_points: boundary points to add at most; sharp_dihedral, small_apex: the small-angle rule's
+  // angles in degrees (near_small_angle; 0: none). Throws InvalidInput as build_plc_state does.
   BoundarySplitter(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
                    const std::vector<int>& face_facets, const std::vector<Segment>& segments, double min_length,
-                   long long max_points);
+                   long long max_points, double sharp_dihedral, double small_apex);
 
   const std::vector<P3>& points() const { return s_.points; }
   // Appends an interior point (on no facet), so that indices stay the caller's.
@@ -44,8 +45,8 @@ class BoundarySplitter {
   // shorter than `shortest`: halves of a subsegment shorter than it, or a subfacet circumcenter closer than it to
   // the corners (Shewchuk's terminator: the split would make a feature smaller than the tet it is made for)?
   // Sharp (floating-point angles on the boundary this splitter was built from): a segment of s_ through two facets
-  // at a dihedral angle below kSharpDihedralDegrees (between the half-planes, so a reflex angle over 360 - that
-  // counts too), and its points; an apex, a point where two subsegments meet below kSmallApexDegrees or a
+  // at a dihedral angle below sharp_dihedral (between the half-planes, so a reflex angle over 360 - that
+  // counts too), and its points; an apex, a point where two subsegments meet below small_apex or a
   // subsegment leans over a facet through it below that (gabriel3d::segment_facet_angles); and the midpoint of a
   // subsegment with a sharp end or of a sharp segment (so the mark follows the splits along a segment from its sharp
   // end). Lengths compared exactly against the double `shortest`.
@@ -81,14 +82,7 @@ class BoundarySplitter {
   long long max_points_;
   std::vector<char> sharp_segment_;  // per segment of s_ (the parents of subsegments): at a small dihedral angle
   std::vector<char> sharp_point_;    // per point: sharp (near_small_angle)
-  void mark_sharp_apexes();
+  void mark_sharp_apexes(double small_apex);
 };
-
-// Facets meeting at a segment below this dihedral angle make it sharp (Shewchuk's 3D Delaunay refinement proof needs
-// 90 degrees; 85 keeps the right angles of tessellated CAD models, measured at 89.9998 on joint.off, out).
-constexpr double kSharpDihedralDegrees = 85.0;
-// Segments meeting below this angle, or a segment leaning over a facet below it, make their apex sharp (Ruppert's
-// 60 degrees, as 2D's small input angles).
-constexpr double kSmallApexDegrees = 60.0;
 
 }  // namespace nonobtuse::quality3d

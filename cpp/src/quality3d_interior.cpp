@@ -54,7 +54,8 @@ class InteriorRefiner {
       if (pts_[s[0]] == pts_[s[1]]) throw InvalidInput("a segment has coincident ends " + std::to_string(s[0]));
     if (!mesh.face_facets.empty())
       splitter_ = std::make_unique<BoundarySplitter>(mesh.points, mesh.faces, mesh.face_facets, mesh.segments,
-                                                     bounds.min_length, bounds.max_boundary_points);
+                                                     bounds.min_length, bounds.max_boundary_points,
+                                                     bounds.sharp_dihedral_degrees, bounds.small_apex_degrees);
     spheres_ = std::make_unique<SphereIndex>(pts_, faces_, segments_);
   }
 
@@ -221,19 +222,21 @@ class InteriorRefiner {
   }
 
   // The small-angle rule (as Triangle and TetGen leave what no insertion can fix near small input angles): a cell
-  // over the radius-edge bound alone whose circumcenter lies in the closed diametral sphere at `row` (a subfacet,
-  // or -1 - a subsegment) is left alone when the split that sphere asks for is at a small input angle or shorter
-  // than the cell's shortest edge (BoundarySplitter::near_small_angle). A cell over the volume bound is always
-  // split for (its splits are no smaller than (3V / 4 pi)^(1/3) / sqrt 2, below).
+  // over a bound whose circumcenter lies in the closed diametral sphere at `row` (a subfacet, or -1 - a subsegment)
+  // is left alone when the split that sphere asks for is at a sharp feature, or, for a cell over the radius-edge
+  // bound alone, shorter than the cell's shortest edge (BoundarySplitter::near_small_angle). A cell over the volume
+  // bound is left near sharp features too: its split there starts the same shrinking chain across the small angle
+  // (slit-2.smesh: one pass went from 26 to 10,166 boundary points at its 8 degree slit before).
   bool left_alone(const Quality& q, int row) const {
-    if (!splitter_ || q.over_volume || !std::isfinite(q.ratio) || row == SphereIndex::kNone) return false;
+    if (!splitter_ || !std::isfinite(q.ratio) || row == SphereIndex::kNone) return false;
+    const double shortest = q.over_volume ? 0.0 : q.shortest;  // 0: no split is shorter
     if (row < 0) {
       const Segment& s = segments_[-1 - row];
-      return splitter_->near_small_angle(-1, s[0], s[1], -1, q.shortest);
+      return splitter_->near_small_angle(-1, s[0], s[1], -1, shortest);
     }
     const auto [a, p, r] = faces_[row];
     const int f = splitter_->common_facet(a, p, r);
-    return f >= 0 && splitter_->near_small_angle(f, a, p, r, q.shortest);
+    return f >= 0 && splitter_->near_small_angle(f, a, p, r, shortest);
   }
 
   void push_if_bad(Cell c) {
@@ -309,12 +312,12 @@ class InteriorRefiner {
   // circumcenter that such a circumcenter encroached, and at least 1 / sqrt 2 of that for a subsegment midpoint that
   // the subfacet circumcenter encroached; around the chain circumcenter -> subfacet -> subsegment -> circumcenter the
   // factor is R / 2 >= 1, so radii never shrink below the local feature size and finitely many points fit.
-  // Small input angles (the small-angle rule, left_alone): a tet over the radius-edge bound alone is not split for
-  // when its split would lie at a sharp segment (a dihedral angle below 90 degrees, where the chain's factor drops
-  // below 1) or would be shorter than the tet's shortest edge l. The second clause never fires where the argument
+  // Small input angles (the small-angle rule, left_alone): a tet is not split for when its split would lie at a
+  // sharp feature (a dihedral angle below 85 degrees or an apex below 60, where the chain's factor drops below 1), or,
+  // over the radius-edge bound alone, would be shorter than the tet's shortest edge l. The second clause never fires where the argument
   // above holds (the split's radius is at least r / sqrt 2 > sqrt 2 l, or r / 2 > l for the subsegments a subfacet
   // circumcenter encroaches), so the rule only stops chains that would shrink: every split made for a tet has
-  // insertion radius >= l and lies away from the sharp segments, and a tet over the volume bound V makes splits of
+  // insertion radius >= l and lies away from the sharp features, and a tet over the volume bound V makes splits of
   // radius >= (3V / 4 pi)^(1/3) / 2. What stays unbounded are the cascades restore_gabriel runs between features at
   // small angles that such a split reaches; they stop at min_length and max_boundary_points (refused, counted, the
   // step handed back), and time_limit bounds every step. The tets left alone are counted (small_angle_rows), as

@@ -128,6 +128,8 @@ TEST(RefineInterior, BlockedCenterSplitsTheBoundaryAndTheResultStaysGabriel) {
   InteriorMesh m = regular_tet_boundary();
   InteriorBounds bounds;
   bounds.volume_bounds = {0.5};
+  // the small-angle rule off: it would leave the tet alone (70.5 degree dihedrals, edges 54.7 degrees over faces)
+  bounds.sharp_dihedral_degrees = bounds.small_apex_degrees = 0;
   auto r = refine_interior(m, bounds);
   ASSERT_EQ(r.status, "converged");
   EXPECT_GE(r.boundary_rounds, 1);
@@ -166,6 +168,7 @@ TEST(RefineInterior, RefusedBoundarySplitsLeaveTheTetsBlocked) {
   InteriorMesh m = regular_tet_boundary();
   InteriorBounds bounds;
   bounds.volume_bounds = {0.5};
+  bounds.sharp_dihedral_degrees = bounds.small_apex_degrees = 0;
   bounds.min_length = 10.0;
   auto r = refine_interior(m, bounds);
   EXPECT_EQ(r.status, "blocked");

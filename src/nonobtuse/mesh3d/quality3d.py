@@ -42,17 +42,19 @@ class Quality3DResult:
             subsegments.
     status: "converged" (the exact Gabriel check of mesh passes and every tet meets the bounds, floating
             point, but those left alone near small input angles), "quality_blocked" (certificate passes; a
-            round could add nothing: the centers left lie on diametral spheres), "budget_exhausted" (max_points or time_limit), or the boundary repair's status
-            when one did not converge ("budget_exhausted", "min_length_reached", "stalled"): mesh is then
-            the last interior pass's on the last converged repair's boundary (certified) when there was one;
-            stats["last_repair"] says how the last repair ended.
+            round could add nothing: the centers left lie on diametral spheres), "budget_exhausted"
+            (max_points or time_limit), or the boundary repair's status when one did not converge
+            ("budget_exhausted", "min_length_reached", "stalled"): mesh is then the last interior pass's
+            on the last converged repair's boundary (certified) when there was one; stats["last_repair"]
+            says how the last repair ended.
     stats:  boundary_points, interior_points, steiner_points (all points not in the input), tets,
             worst_radius_edge, max_volume, min_volume, radius_edge_over_2 (see :func:`tet_quality`), and the
             same with the suffix _outside_small_angles (over the tets not left alone), bad_tets (tets over a
-            bound at the end), small_angle_tets (those of them the small-angle rule left alone: a tet over
-            the radius-edge bound alone whose circumcenter lies in the closed diametral sphere of a
-            subsegment or subfacet whose split would lie at a segment where facets meet below 90 degrees or
-            be shorter than the tet's shortest edge; ``cpp/src/quality3d_boundary.h``),
+            bound at the end), small_angle_tets (those of them the small-angle rule left alone: a tet whose
+            circumcenter lies in the closed diametral sphere of a subsegment or subfacet whose split would lie
+            at a sharp feature, a segment where facets meet below 85 degrees or an apex below 60, or, over
+            the radius-edge bound alone, be shorter than the tet's shortest edge;
+            ``cpp/src/quality3d_boundary.h``),
             bad_tets_outside_small_angles, blocked_centers (tets over a bound the last interior pass left:
             centers that no split frees), inserted_by_passes (circumcenters the interior passes inserted),
             boundary_points_by_passes / boundary_rounds / refused_splits (the passes' own boundary splits,

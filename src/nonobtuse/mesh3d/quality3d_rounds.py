@@ -151,8 +151,8 @@ class InteriorRefiner:
         the domain (exact), at most `budget` of them within the time left; a center in a closed diametral
         sphere splits that subsegment or subfacet (Ruppert's and Shewchuk's rule) and the boundary is split
         until Gabriel again, in the same tetrahedralization, and so on until no center is left that a split
-        frees; a tet over the radius-edge bound alone whose split would lie at a small input angle or be
-        shorter than its shortest edge is left alone (the small-angle rule, ``quality3d.h``; its rows in
+        frees; a tet whose split would lie at a small input angle (or, over the radius-edge bound alone, be
+        shorter than its shortest edge) is left alone (the small-angle rule, ``quality3d.h``; its rows in
         :attr:`small_angle`). limits: the boundary repair's stats (its min_length and max_steiner bound the
         splits). Returns
         the mesh (points: the input's, then the new ones in order; boundary_faces, face_facets and segments
