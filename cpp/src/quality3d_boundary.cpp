@@ -41,7 +41,8 @@ BoundarySplitter::BoundarySplitter(const std::vector<Point3>& points, const std:
     if (angle.degrees >= sharp_dihedral) continue;
     const int a = angle.vertices[0], b = angle.vertices[1];
     sharp_segment_[s_.subsegments.at(gabriel3d::key(a, b))] = 1;
-    sharp_point_[a] = sharp_point_[b] = 1;
+    sharp_point_[a] = std::max<char>(sharp_point_[a], kOnSharpSegment);
+    sharp_point_[b] = std::max<char>(sharp_point_[b], kOnSharpSegment);
   }
   mark_sharp_apexes(small_apex);
 }
@@ -51,13 +52,13 @@ void BoundarySplitter::mark_sharp_apexes(double small_apex) {
   for (const auto& [k, parent] : s_.subsegments) ends[k.first].push_back(k.second), ends[k.second].push_back(k.first);
   const double cos_limit = std::cos(small_apex * 3.14159265358979323846 / 180.0);
   for (std::size_t v = 0; v < ends.size(); ++v)
-    for (std::size_t i = 0; i < ends[v].size() && !sharp_point_[v]; ++i)
+    for (std::size_t i = 0; i < ends[v].size() && sharp_point_[v] != kNearApex; ++i)
       for (std::size_t j = i + 1; j < ends[v].size(); ++j) {
         const auto d = s_.points[ends[v][i]] - s_.points[v], e = s_.points[ends[v][j]] - s_.points[v];
-        if (d * e > cos_limit * std::sqrt(d.squared_length() * e.squared_length())) sharp_point_[v] = 1;
+        if (d * e > cos_limit * std::sqrt(d.squared_length() * e.squared_length())) sharp_point_[v] = kNearApex;
       }
   for (const auto& angle : gabriel3d::segment_facet_angles(s_))
-    if (angle.degrees < small_apex) sharp_point_[angle.vertices[0]] = 1;
+    if (angle.degrees < small_apex) sharp_point_[angle.vertices[0]] = kNearApex;
 }
 
 void BoundarySplitter::add_interior_point(const P3& p) {
@@ -75,6 +76,15 @@ int BoundarySplitter::common_facet(int a, int b, int c) const {
         std::count(s_.point_facets[c].begin(), s_.point_facets[c].end(), f))
       return f;
   return -1;
+}
+
+bool BoundarySplitter::on_one_facet(const std::array<int, 4>& p) const {
+  for (int f : s_.point_facets[p[0]])
+    if (std::all_of(p.begin() + 1, p.end(), [&](int v) {
+          return std::count(s_.point_facets[v].begin(), s_.point_facets[v].end(), f) > 0;
+        }))
+      return true;
+  return false;
 }
 
 void BoundarySplitter::subfacets(std::vector<Triangle>& faces, std::vector<int>& facets) const {
@@ -118,7 +128,7 @@ bool BoundarySplitter::may_add(const P3& p) {
   return ok;
 }
 
-void BoundarySplitter::added_point(int i, bool sharp) {
+void BoundarySplitter::added_point(int i, char sharp) {
   index_.add(i);
   sharp_point_.resize(s_.points.size(), 0);
   sharp_point_[i] = sharp;
@@ -127,7 +137,8 @@ void BoundarySplitter::added_point(int i, bool sharp) {
 
 bool BoundarySplitter::sharp_subsegment(int a, int b) const {
   auto it = s_.subsegments.find(gabriel3d::key(a, b));
-  return it != s_.subsegments.end() && (sharp_segment_[it->second] || sharp_point_[a] || sharp_point_[b]);
+  return it != s_.subsegments.end() &&
+         (sharp_segment_[it->second] || sharp_point_[a] == kNearApex || sharp_point_[b] == kNearApex);
 }
 
 bool BoundarySplitter::near_small_angle(int f, int a, int b, int c, double shortest) const {
@@ -154,7 +165,10 @@ bool BoundarySplitter::split_subsegment(int a, int b) {
   if (a > b) std::swap(a, b);  // the rounded midpoint does not depend on the order
   const P3 m = midpoint(s_.points[a], s_.points[b]);
   if (!may_add(m)) return false;
-  const bool sharp = sharp_subsegment(a, b);
+  // the mark of the midpoint: near the apex an end is near, else on the subsegment's segment when that is sharp
+  const char sharp = std::max(sharp_point_[a], sharp_point_[b]) == kNearApex ? kNearApex
+                     : sharp_subsegment(a, b)                                ? kOnSharpSegment
+                                                                             : 0;
   added_point(gabriel3d::split_subsegment(s_, a, b, 0.5, m), sharp);
   return true;
 }
@@ -201,7 +215,7 @@ bool BoundarySplitter::split_subfacet(int f, int a, int b, int c) {
     return false;
   }
   if (!may_add(*center)) return false;
-  added_point(gabriel3d::insert_in_facet(s_, f, *center, lt, loc, li), false);
+  added_point(gabriel3d::insert_in_facet(s_, f, *center, lt, loc, li), 0);
   return true;
 }
 

@@ -28,6 +28,8 @@ class BoundarySplitter {
   int facet_id(int f) const { return s_.facets[f]->id; }
   // The facet (index into the state's facets) holding points a, b, c, or -1.
   int common_facet(int a, int b, int c) const;
+  // Do the four points lie on one facet?
+  bool on_one_facet(const std::array<int, 4>& p) const;
   // Is the triangle (a, b, c) of facet f's points inside the facet (gabriel3d::triangle_on_facet)?
   bool on_facet(int f, int a, int b, int c) const { return gabriel3d::triangle_on_facet(s_, f, a, b, c); }
   std::size_t facet_count() const { return s_.facets.size(); }
@@ -41,15 +43,15 @@ class BoundarySplitter {
   // The small-angle rule (its termination argument is at refine_interior's boundary split rule): is the split that
   // a point in the closed diametral sphere of subsegment ab (f == -1) or of subfacet abc of facet f asks for, i.e.
   // the subsegment, or the subsegments of f that abc's circumcenter encroaches, or else abc itself, (i) at a small
-  // input angle: a subsegment with a sharp end or of a sharp segment, or a subfacet with a sharp corner; or (ii)
-  // shorter than `shortest`: halves of a subsegment shorter than it, or a subfacet circumcenter closer than it to
-  // the corners (Shewchuk's terminator: the split would make a feature smaller than the tet it is made for)?
-  // Sharp (floating-point angles on the boundary this splitter was built from): a segment of s_ through two facets
-  // at a dihedral angle below sharp_dihedral (between the half-planes, so a reflex angle over 360 - that
-  // counts too), and its points; an apex, a point where two subsegments meet below small_apex or a
-  // subsegment leans over a facet through it below that (gabriel3d::segment_facet_angles); and the midpoint of a
-  // subsegment with a sharp end or of a sharp segment (so the mark follows the splits along a segment from its sharp
-  // end). Lengths compared exactly against the double `shortest`.
+  // input angle: a subsegment of a sharp segment or with an end near a sharp apex, or a subfacet with a corner on
+  // a sharp segment or near a sharp apex; or (ii) shorter than `shortest`: halves of a subsegment shorter than it,
+  // or a subfacet circumcenter closer than it to the corners (Shewchuk's terminator: the split would make a feature
+  // smaller than the tet it is made for)? Sharp (floating-point angles on the boundary this splitter was built
+  // from): a segment of s_ through two facets at a dihedral angle below sharp_dihedral (between the half-planes, so
+  // a reflex angle over 360 - that counts too), and the points on it; an apex, a point where two subsegments meet
+  // below small_apex or a subsegment leans over a facet through it below that (gabriel3d::segment_facet_angles);
+  // near it, the apex and the midpoints of subsegments with an end near it (the mark follows the splits along a
+  // segment from its sharp end). Lengths compared exactly against the double `shortest`.
   bool near_small_angle(int f, int a, int b, int c, double shortest) const;
 
   // The split for a point in the closed diametral sphere of subsegment ab: its midpoint. False when refused.
@@ -71,7 +73,7 @@ class BoundarySplitter {
 
  private:
   bool may_add(const P3& p);
-  void added_point(int i, bool sharp);
+  void added_point(int i, char sharp);
   // The constrained edges of facet f whose diametral spheres hold z strictly inside, sorted.
   std::vector<gabriel3d::Key> encroached_subsegments(int f, const P3& z) const;
   bool sharp_subsegment(int a, int b) const;
@@ -81,7 +83,9 @@ class BoundarySplitter {
   double min_length_;
   long long max_points_;
   std::vector<char> sharp_segment_;  // per segment of s_ (the parents of subsegments): at a small dihedral angle
-  std::vector<char> sharp_point_;    // per point: sharp (near_small_angle)
+  // per point: 0, kOnSharpSegment or kNearApex (near_small_angle)
+  static constexpr char kOnSharpSegment = 1, kNearApex = 2;
+  std::vector<char> sharp_point_;
   void mark_sharp_apexes(double small_apex);
 };
 

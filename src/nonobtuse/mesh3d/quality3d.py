@@ -54,7 +54,8 @@ class Quality3DResult:
             circumcenter lies in the closed diametral sphere of a subsegment or subfacet whose split would lie
             at a sharp feature, a segment where facets meet below 85 degrees or an apex below 60, or, over
             the radius-edge bound alone, be shorter than the tet's shortest edge;
-            ``cpp/src/quality3d_boundary.h``),
+            ``cpp/src/quality3d_boundary.h``; and a tet with its four corners on one facet, flat but for
+            rounding),
             bad_tets_outside_small_angles, blocked_centers (tets over a bound the last interior pass left:
             centers that no split frees), inserted_by_passes (circumcenters the interior passes inserted),
             boundary_points_by_passes / boundary_rounds / refused_splits (the passes' own boundary splits,
@@ -65,12 +66,14 @@ class Quality3DResult:
             boundary_repair (the first refine_gabriel's stats), radius_edge / max_volume_bound (the bounds
             asked), start, warnings, seconds.
     report: the GabrielReport of mesh (exact).
+    small_angle_rows: the rows of mesh.tets over a bound left alone by the small-angle rule (int64, sorted).
     """
 
     mesh: TetMesh
     status: QualityStatus
     stats: dict[str, Any] = field(default_factory=dict)
     report: GabrielReport | None = None
+    small_angle_rows: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
 
 
 def _print_progress(round_: int, interior: int, bad: int, blocked: int, seconds: float) -> None:
@@ -217,7 +220,7 @@ def refine_quality3d(
              "negative_couplings": control_volume_summary(mesh)["negative_couplings"], **stats,
              "warnings": list(plc.warnings), "seconds": time.perf_counter() - started}
     mesh.stats = stats
-    return Quality3DResult(mesh, cast(QualityStatus, status), stats, report)
+    return Quality3DResult(mesh, cast(QualityStatus, status), stats, report, small_angle)
 
 
 def _tetgen_switches(max_volume: Any, radius_edge: float | None) -> str:
