@@ -86,7 +86,7 @@ def refine_quality3d(
     max_volume: float | Mapping[float, float] | None = None,
     radius_edge: float | None = None,
     max_points: int | None = None,
-    time_limit: float = 120.0,
+    time_limit: float | None = None,
     start: Start = "tetgen",
     region_volumes: bool = False,
     progress: Callable[[int, int, int, int, float], None] | bool | None = None,
@@ -105,10 +105,13 @@ def refine_quality3d(
     regions of their attributes: a tet's bound is then the smallest that applies. radius_edge: a bound > 1 on
     circumradius / shortest edge (TetGen's -q; 2 is its default), or None. max_points: interior point budget
     (None: 10^6). time_limit: seconds for everything, checked between rounds and passed on to each boundary
-    repair. start: "tetgen" lets TetGen (-pq R -a V, the 3d extra) split the facets for the bounds before the
-    Gabriel repair and takes its -Y interior points on the repaired boundary as the first interior points (it
-    falls back to "boundary" when TetGen is missing or fails); "boundary" starts from the input boundary and
-    its repair alone (also taken when the repair of TetGen's surface does not converge within half the time).
+    repair; None (the default): no wall-clock limit, so the outcome does not depend on the machine (the
+    repairs stop at their deterministic work budget, max_work, and the passes at max_points and the
+    repair's max_steiner). start: "tetgen" lets TetGen (-pq R -a V, the 3d extra) split the facets for the
+    bounds before the Gabriel repair and takes its -Y interior points on the repaired boundary as the first
+    interior points (it falls back to "boundary" when TetGen is missing or fails); "boundary" starts from the
+    input boundary and its repair alone (also taken when the repair of TetGen's surface does not converge:
+    within its work budget, or half the time with a time_limit).
     progress: True prints a line per round to stderr; a callable gets (round, interior_points, bad_tets,
     blocked_tets, seconds). started: time.perf_counter() at which the caller's work began (time_limit counts
     from it).
@@ -178,7 +181,7 @@ def refine_quality3d(
         if passed in ("converged", "blocked", "budget_exhausted"):
             mesh, status = grown, {"blocked": "quality_blocked"}.get(passed, passed)
             break
-        if seconds > time_limit:
+        if seconds > refiner.time_limit:
             status = "budget_exhausted"
             break
         # a split boundary the pass cannot tetrahedralize by itself (cospherical points, or a split it

@@ -58,10 +58,13 @@ def tet_quality(mesh: TetMesh, leave_out: np.ndarray | None = None, suffix: str 
 class InteriorRefiner:
     """The input PLC, the bounds and the limits shared by the rounds of refine_quality3d."""
 
-    def __init__(self, plc: PLC, max_volume: Any, radius_edge: float | None, time_limit: float,
+    def __init__(self, plc: PLC, max_volume: Any, radius_edge: float | None, time_limit: float | None,
                  started: float, gabriel_options: dict[str, Any]) -> None:
         self.plc, self.max_volume, self.radius_edge = plc, max_volume, radius_edge
-        self.time_limit, self.started, self.gabriel_options = time_limit, started, gabriel_options
+        # None: no wall-clock limit (the repairs' work budgets and the passes' point budgets stop them)
+        self.wall_clock = time_limit is not None
+        self.time_limit = math.inf if time_limit is None else float(time_limit)
+        self.started, self.gabriel_options = started, gabriel_options
         self.inserted = 0  # circumcenters the interior passes inserted
         # the last pass's mesh and its rows of tets left alone near small input angles (the small-angle rule)
         self.small_angle: tuple[TetMesh | None, np.ndarray] = (None, np.zeros(0, dtype=np.int64))
@@ -69,13 +72,13 @@ class InteriorRefiner:
 
     def repair(self, surface: PLC, interior: np.ndarray, share: float = 1.0) -> Any:
         """refine_gabriel of `surface` with `interior` (k, 3) as isolated points (after surface's points),
-        within `share` of the time left."""
+        within `share` of the time left (without a time limit: within its own work budget)."""
         points = np.concatenate([surface.points, np.asarray(interior, dtype=np.float64).reshape(-1, 3)])
         plc = replace(self.plc, points=points, triangles=surface.triangles, facet_ids=surface.facet_ids,
                       segments=surface.segments)
         left = self.time_limit - (time.perf_counter() - self.started)
-        return refine_gabriel(plc, time_limit=max(0.0, share * left), control_volumes=False,
-                              **self.gabriel_options)
+        return refine_gabriel(plc, time_limit=max(0.0, share * left) if self.wall_clock else None,
+                              control_volumes=False, **self.gabriel_options)
 
     def split_mesh(self, mesh: TetMesh) -> tuple[PLC, np.ndarray]:
         """The surface PLC of `mesh` (the input points, then the other vertices of its subfacets and
