@@ -198,7 +198,10 @@ def test_refine3d_cli_without_tetgen_start(tmp_path, capsys):
                  "--quality-start", "boundary"]) == EXIT_OK
     text = capsys.readouterr().out
     assert f"{summary['interior_points']:,} interior" in text and "{'" not in text
-    assert f"worst radius-edge       {summary['worst_radius_edge']:.4g} (bound n/a)" in text
+    outside = summary["worst_radius_edge_outside_small_angles"]
+    assert (f"worst radius-edge       {summary['worst_radius_edge']:.4g} ({outside:.4g} outside small "
+            f"angles; bound n/a)") in text
+    assert f"{summary['small_angle_tets']:,} of them left alone near small input angles" in text
     verdict = "OK:" if summary["encroached_facets"] == summary["encroached_segments"] == 0 else "NOT OK:"
     assert text.splitlines()[-1].strip().startswith(verdict)
 
