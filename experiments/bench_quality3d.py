@@ -6,17 +6,20 @@ input's bounding box:
 
 - tetgen: TetGen ``-pq R -a V`` (splits the boundary as it likes; its mesh is not Gabriel-checked by TetGen);
 - ours:   refine_quality3d (TetGen's facet splits, the Gabriel repair, interior points outside every closed
-          diametral sphere, circumcenter rounds; time_limit --time-limit).
+          diametral sphere, circumcenter rounds; time_limit --time-limit, or none with --deterministic:
+          the work budgets alone, so the outcome does not depend on the machine's load).
 
 Columns: input, method, status, points, boundary_points (vertices of boundary faces and segments),
 interior_points, tets, worst_radius_edge, max_volume (largest tet volume; both floating point, over every
 tet), volume_bound (V), encroached_facets, encroached_segments (the exact check_gabriel of the mesh as
-returned), seconds. Each method runs in a child process killed after 2 time_limit + 60 s (status "timeout":
-TetGen has no time limit). CSV to DIR/bench_quality3d.csv (``--quick``: bench_quality3d_quick.csv) and a
-Markdown table on stdout.
+returned), small_angle_tets and worst_radius_edge_outside / max_volume_outside (ours: the tets the
+small-angle rule left over a bound, and the quality of the others), seconds, cpu_seconds (of the child).
+Each method runs in a child process killed after 2 time_limit + 60 s, or --timeout with --deterministic
+(status "timeout": TetGen has no time limit). CSV to DIR/bench_quality3d.csv (``--quick``:
+bench_quality3d_quick.csv) and a Markdown table on stdout.
 
 Run: ``PYTHONPATH=src .venv/bin/python -m experiments.bench_quality3d [--quick] [--out DIR] [files...]``
-(--quick: inputs up to 500 triangles, 20 s each for ours).
+(--quick: inputs up to 500 triangles, 20 s each for ours; --deterministic [--timeout S]: no time limit).
 """
 
 from __future__ import annotations
@@ -40,11 +43,13 @@ CORPORA = [ROOT / ".." / "shared" / "data" / "3d", ROOT / "tests" / "data" / "3d
 RESULTS = ROOT / "experiments" / "results"
 COLUMNS = ["input", "method", "status", "points", "boundary_points", "interior_points", "tets",
            "worst_radius_edge", "max_volume", "volume_bound", "encroached_facets", "encroached_segments",
-           "seconds"]
+           "small_angle_tets", "worst_radius_edge_outside", "max_volume_outside", "seconds", "cpu_seconds"]
 
 
-def measure(name: str, method: str, mesh, status: str, volume_bound: float, seconds: float) -> dict[str, Any]:
-    """One CSV row: counts, tet quality and the exact Gabriel check of mesh."""
+def measure(name: str, method: str, mesh, status: str, volume_bound: float, seconds: tuple[float, float],
+            stats: dict[str, Any] | None = None) -> dict[str, Any]:
+    """One CSV row: counts, tet quality and the exact Gabriel check of mesh; with ours' stats, the tets left
+    alone by the small-angle rule and the quality of the others. seconds: (wall, CPU) of the method."""
     report = check_gabriel(mesh)
     on = np.zeros(len(mesh.points), dtype=bool)
     on[np.asarray(mesh.boundary_faces, dtype=np.int64).ravel()] = True
@@ -54,7 +59,12 @@ def measure(name: str, method: str, mesh, status: str, volume_bound: float, seco
             "boundary_points": int(on.sum()), "interior_points": int((~on).sum()), "tets": q["tets"],
             "worst_radius_edge": _round(q["worst_radius_edge"]), "max_volume": _round(q["max_volume"]),
             "volume_bound": _round(volume_bound), "encroached_facets": len(report.faces),
-            "encroached_segments": len(report.segments), "seconds": round(seconds, 3)}
+            "encroached_segments": len(report.segments),
+            **({} if stats is None else {
+                "small_angle_tets": stats["small_angle_tets"],
+                "worst_radius_edge_outside": _round(stats["worst_radius_edge_outside_small_angles"]),
+                "max_volume_outside": _round(stats["max_volume_outside_small_angles"])}),
+            "seconds": round(seconds[0], 3), "cpu_seconds": round(seconds[1], 3)}
 
 
 def _round(x: float | None) -> float | None:
@@ -68,25 +78,31 @@ def run_case(case: dict[str, Any]) -> dict[str, Any]:
     extent = plc.points.max(axis=0) - plc.points.min(axis=0)
     bound = case["volume_fraction"] * float(np.prod(extent))
     name, r = case["name"], case["radius_edge"]
-    t0 = time.perf_counter()
+    t0, cpu0 = time.perf_counter(), time.process_time()
+
+    def spent() -> tuple[float, float]:
+        return time.perf_counter() - t0, time.process_time() - cpu0
+
     if case["method"] == "tetgen":
         try:
             tm = tetrahedralize(plc, "tetgen", switches=f"pq{r!r}a{bound!r}AQ")
         except InvalidInputError as e:
             return {"input": name, "method": "tetgen", "status": f"failed: {str(e)[-60:]}"}
-        return measure(name, "tetgen", tm, "ok", bound, time.perf_counter() - t0)
+        return measure(name, "tetgen", tm, "ok", bound, spent())
     result = refine_quality3d(plc, max_volume=bound, radius_edge=r, time_limit=case["time_limit"])
-    return measure(name, "ours", result.mesh, result.status, bound, time.perf_counter() - t0)
+    return measure(name, "ours", result.mesh, result.status, bound, spent(), result.stats)
 
 
 def bench_one(name: str, path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
     """The rows of TetGen and ours on one input, each in a child process killed after 2 time_limit + 60 s
-    (TetGen has no time limit of its own: -pq ran for minutes on mc_torus.off)."""
+    or args.timeout without a time limit (TetGen has no time limit of its own: -pq ran for minutes on
+    mc_torus.off)."""
     rows = []
     for method in ("tetgen", "ours"):
         case = {"path": str(path), "name": name, "method": method, "radius_edge": args.radius_edge,
                 "volume_fraction": args.volume_fraction, "time_limit": args.time_limit}
-        record = run_case_limited("experiments.bench_quality3d:run_case", case, 2 * args.time_limit + 60)
+        kill = args.timeout if args.time_limit is None else 2 * args.time_limit + 60
+        record = run_case_limited("experiments.bench_quality3d:run_case", case, kill)
         if record["status"] == "ok":
             rows.append(record["result"])
         else:
@@ -110,9 +126,13 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--radius-edge", type=float, default=2.0)
     ap.add_argument("--volume-fraction", type=float, default=1e-3)
     ap.add_argument("--time-limit", type=float, default=None, help="seconds for ours (default 120, quick 20)")
+    ap.add_argument("--deterministic", action="store_true",
+                    help="no time limit for ours: its work budgets alone (outcomes independent of the load)")
+    ap.add_argument("--timeout", type=float, default=600.0,
+                    help="with --deterministic: seconds after which a child is killed (default 600)")
     args = ap.parse_args(argv)
     args.max_triangles = 500 if args.quick else 10**9
-    args.time_limit = args.time_limit or (20.0 if args.quick else 120.0)
+    args.time_limit = None if args.deterministic else args.time_limit or (20.0 if args.quick else 120.0)
     suffixes = SURFACE_SUFFIXES + PLC_SUFFIXES
     inputs = args.inputs or [p for d in CORPORA if d.is_dir() for p in sorted(d.glob("*"))
                              if p.suffix in suffixes]

@@ -30,6 +30,8 @@ void bind_quality3d(py::module_& m) {
       .def_property_readonly("tets", [](const InteriorRefinement& r) { return from_index_rows<4>(r.tets); })
       .def_property_readonly("tet_labels", [](const InteriorRefinement& r) { return from_vector(r.tet_labels); })
       .def_property_readonly("blocked_rows", [](const InteriorRefinement& r) { return from_vector(r.blocked_rows); })
+      .def_property_readonly("small_angle_rows",
+                             [](const InteriorRefinement& r) { return from_vector(r.small_angle_rows); })
       .def_property_readonly("blocked_centers",
                              [](const InteriorRefinement& r) { return from_points3(r.blocked_centers); })
       .def_property_readonly("faces", [](const InteriorRefinement& r) { return from_index_rows<3>(r.faces); })
@@ -53,7 +55,7 @@ void bind_quality3d(py::module_& m) {
       [](const DoubleArray& points, const IndexArray& tets, const IndexArray& tet_labels, const IndexArray& faces,
          const IndexArray& segments, double radius_edge, const DoubleArray& volume_bounds, long long max_points,
          double time_limit, const DoubleArray& insert, const IndexArray& face_facets, long long max_boundary_points,
-         double min_length) {
+         double min_length, double sharp_dihedral_degrees, double small_apex_degrees) {
         InteriorMesh mesh;
         mesh.points = to_points3(points, "points");
         mesh.tets = to_index_rows<4>(tets, mesh.points.size(), "tets");
@@ -69,6 +71,8 @@ void bind_quality3d(py::module_& m) {
         bounds.time_limit = time_limit;
         bounds.max_boundary_points = max_boundary_points;
         bounds.min_length = min_length;
+        bounds.sharp_dihedral_degrees = sharp_dihedral_degrees;
+        bounds.small_apex_degrees = small_apex_degrees;
         py::gil_scoped_release release;
         return refine_interior(mesh, bounds);
       },
@@ -76,11 +80,13 @@ void bind_quality3d(py::module_& m) {
       py::arg("radius_edge"), py::arg("volume_bounds"), py::arg("max_points"), py::arg("time_limit"),
       py::arg("insert") = DoubleArray(std::vector<py::ssize_t>{0, 3}), py::arg("face_facets") = IndexArray(0),
       py::arg("max_boundary_points") = 1000000, py::arg("min_length") = 0.0,
+      py::arg("sharp_dihedral_degrees") = 85.0, py::arg("small_apex_degrees") = 60.0,
       "Delaunay refinement of the interior of a mesh (n,3) points, (t,4) tets, (t,) labels with a Gabriel\n"
       "boundary (f,3) faces, (k,2) segments: circumcenters of tets over radius_edge (<= 0: none) or\n"
       "volume_bounds[label] inserted outside every closed diametral sphere, after inserting the points\n"
       "insert (p,3) outside them; with face_facets (f,) the facet id of each face, a center in a closed\n"
-      "sphere splits the boundary instead (see quality3d.h).");
+      "sphere splits the boundary instead, but near small input angles (sharp_dihedral_degrees,\n"
+      "small_apex_degrees: small_angle_rows; see quality3d.h).");
 }
 
 }  // namespace nonobtuse::bindings

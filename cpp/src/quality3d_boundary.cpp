@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "gabriel3d_collar.h"
+
 namespace nonobtuse::quality3d {
 namespace {
 
@@ -27,11 +29,37 @@ P3 midpoint(const P3& a, const P3& b) {
 
 BoundarySplitter::BoundarySplitter(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
                                    const std::vector<int>& face_facets, const std::vector<Segment>& segments,
-                                   double min_length, long long max_points)
+                                   double min_length, long long max_points, double sharp_dihedral,
+                                   double small_apex)
     : s_(gabriel3d::build_plc_state(surface_plc(points, faces, face_facets, segments))),
       index_(s_.points),
       min_length_(min_length),
-      max_points_(max_points) {}
+      max_points_(max_points),
+      sharp_segment_(s_.segments.size(), 0),
+      sharp_point_(s_.points.size(), 0) {
+  for (const auto& angle : gabriel3d::dihedral_angles(s_)) {
+    if (angle.degrees >= sharp_dihedral) continue;
+    const int a = angle.vertices[0], b = angle.vertices[1];
+    sharp_segment_[s_.subsegments.at(gabriel3d::key(a, b))] = 1;
+    sharp_point_[a] = std::max<char>(sharp_point_[a], kOnSharpSegment);
+    sharp_point_[b] = std::max<char>(sharp_point_[b], kOnSharpSegment);
+  }
+  mark_sharp_apexes(small_apex);
+}
+
+void BoundarySplitter::mark_sharp_apexes(double small_apex) {
+  std::vector<std::vector<int>> ends(s_.points.size());  // the other ends of the subsegments at each point
+  for (const auto& [k, parent] : s_.subsegments) ends[k.first].push_back(k.second), ends[k.second].push_back(k.first);
+  const double cos_limit = std::cos(small_apex * 3.14159265358979323846 / 180.0);
+  for (std::size_t v = 0; v < ends.size(); ++v)
+    for (std::size_t i = 0; i < ends[v].size() && sharp_point_[v] != kNearApex; ++i)
+      for (std::size_t j = i + 1; j < ends[v].size(); ++j) {
+        const auto d = s_.points[ends[v][i]] - s_.points[v], e = s_.points[ends[v][j]] - s_.points[v];
+        if (d * e > cos_limit * std::sqrt(d.squared_length() * e.squared_length())) sharp_point_[v] = kNearApex;
+      }
+  for (const auto& angle : gabriel3d::segment_facet_angles(s_))
+    if (angle.degrees < small_apex) sharp_point_[angle.vertices[0]] = kNearApex;
+}
 
 void BoundarySplitter::add_interior_point(const P3& p) {
   const int i = static_cast<int>(s_.points.size());
@@ -39,6 +67,7 @@ void BoundarySplitter::add_interior_point(const P3& p) {
   s_.point_facets.emplace_back();
   s_.at.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, i);
   index_.add(i);
+  sharp_point_.push_back(0);
 }
 
 int BoundarySplitter::common_facet(int a, int b, int c) const {
@@ -47,6 +76,15 @@ int BoundarySplitter::common_facet(int a, int b, int c) const {
         std::count(s_.point_facets[c].begin(), s_.point_facets[c].end(), f))
       return f;
   return -1;
+}
+
+bool BoundarySplitter::on_one_facet(const std::array<int, 4>& p) const {
+  for (int f : s_.point_facets[p[0]])
+    if (std::all_of(p.begin() + 1, p.end(), [&](int v) {
+          return std::count(s_.point_facets[v].begin(), s_.point_facets[v].end(), f) > 0;
+        }))
+      return true;
+  return false;
 }
 
 void BoundarySplitter::subfacets(std::vector<Triangle>& faces, std::vector<int>& facets) const {
@@ -90,17 +128,63 @@ bool BoundarySplitter::may_add(const P3& p) {
   return ok;
 }
 
-void BoundarySplitter::added_point(int i) {
+void BoundarySplitter::added_point(int i, char sharp) {
   index_.add(i);
+  sharp_point_.resize(s_.points.size(), 0);
+  sharp_point_[i] = sharp;
   ++added;
+}
+
+bool BoundarySplitter::sharp_subsegment(int a, int b) const {
+  auto it = s_.subsegments.find(gabriel3d::key(a, b));
+  return it != s_.subsegments.end() &&
+         (sharp_segment_[it->second] || sharp_point_[a] == kNearApex || sharp_point_[b] == kNearApex);
+}
+
+bool BoundarySplitter::near_small_angle(int f, int a, int b, int c, double shortest) const {
+  const double limit = shortest * shortest;
+  auto short_halves = [&](int u, int w) {  // |uw| / 2 < shortest
+    return CGAL::compare_squared_distance(s_.points[u], s_.points[w], 4 * limit) == CGAL::SMALLER;
+  };
+  if (f < 0) return sharp_subsegment(a, b) || short_halves(a, b);
+  int corner[3] = {a, b, c};  // sorted, as split_subfacet rounds the circumcenter
+  std::sort(corner, corner + 3);
+  const auto center = gabriel3d::rounded_circumcenter(s_.points[corner[0]], s_.points[corner[1]],
+                                                      s_.points[corner[2]]);
+  if (!center) return false;
+  const std::vector<Key> hit = encroached_subsegments(f, *center);
+  if (!hit.empty())
+    return std::any_of(hit.begin(), hit.end(), [&](const Key& k) {
+      return sharp_subsegment(k.first, k.second) || short_halves(k.first, k.second);
+    });
+  return sharp_point_[a] || sharp_point_[b] || sharp_point_[c] ||
+         CGAL::compare_squared_distance(*center, s_.points[a], limit) == CGAL::SMALLER;
 }
 
 bool BoundarySplitter::split_subsegment(int a, int b) {
   if (a > b) std::swap(a, b);  // the rounded midpoint does not depend on the order
   const P3 m = midpoint(s_.points[a], s_.points[b]);
   if (!may_add(m)) return false;
-  added_point(gabriel3d::split_subsegment(s_, a, b, 0.5, m));
+  // the mark of the midpoint: near the apex an end is near, else on the subsegment's segment when that is sharp
+  const char sharp = std::max(sharp_point_[a], sharp_point_[b]) == kNearApex ? kNearApex
+                     : sharp_subsegment(a, b)                                ? kOnSharpSegment
+                                                                             : 0;
+  added_point(gabriel3d::split_subsegment(s_, a, b, 0.5, m), sharp);
   return true;
+}
+
+std::vector<Key> BoundarySplitter::encroached_subsegments(int f, const P3& z) const {
+  const gabriel3d::Facet& facet = *s_.facets[f];
+  std::vector<Key> hit;
+  for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e) {
+    if (!facet.cdt.is_constrained(*e)) continue;
+    const int u = e->first->vertex(FacetCDT::cw(e->second))->info();
+    const int w = e->first->vertex(FacetCDT::ccw(e->second))->info();
+    if (CGAL::side_of_bounded_sphere(s_.points[u], s_.points[w], z) == CGAL::ON_BOUNDED_SIDE)
+      hit.push_back(gabriel3d::key(u, w));
+  }
+  std::sort(hit.begin(), hit.end());
+  return hit;
 }
 
 bool BoundarySplitter::split_subfacet(int f, int a, int b, int c) {
@@ -112,16 +196,8 @@ bool BoundarySplitter::split_subfacet(int f, int a, int b, int c) {
   const gabriel3d::Facet& facet = *s_.facets[f];
   // Shewchuk's rule: a subfacet circumcenter strictly inside a subsegment's diametral sphere is not inserted; the
   // subsegments of the facet it encroaches are split instead.
-  std::vector<Key> hit;
-  for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e) {
-    if (!facet.cdt.is_constrained(*e)) continue;
-    const int u = e->first->vertex(FacetCDT::cw(e->second))->info();
-    const int w = e->first->vertex(FacetCDT::ccw(e->second))->info();
-    if (CGAL::side_of_bounded_sphere(s_.points[u], s_.points[w], *center) == CGAL::ON_BOUNDED_SIDE)
-      hit.push_back(gabriel3d::key(u, w));
-  }
+  const std::vector<Key> hit = encroached_subsegments(f, *center);
   if (!hit.empty()) {
-    std::sort(hit.begin(), hit.end());
     bool any = false;
     for (const Key& k : hit) any = split_subsegment(k.first, k.second) || any;
     return any;
@@ -139,7 +215,7 @@ bool BoundarySplitter::split_subfacet(int f, int a, int b, int c) {
     return false;
   }
   if (!may_add(*center)) return false;
-  added_point(gabriel3d::insert_in_facet(s_, f, *center, lt, loc, li));
+  added_point(gabriel3d::insert_in_facet(s_, f, *center, lt, loc, li), 0);
   return true;
 }
 

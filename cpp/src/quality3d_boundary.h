@@ -16,10 +16,11 @@ class BoundarySplitter {
  public:
   // points: every point of the mesh (boundary and interior, in the caller's order); faces with the input facet id of
   // each (face_facets), segments: the subfacets and subsegments. min_length: no split point closer than this to a
-  // point (0: none); max_points: boundary points to add at most. Throws InvalidInput as build_plc_state does.
+  // point (0: none); max_points: boundary points to add at most; sharp_dihedral, small_apex: the small-angle rule's
+  // angles in degrees (near_small_angle; 0: none). Throws InvalidInput as build_plc_state does.
   BoundarySplitter(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
                    const std::vector<int>& face_facets, const std::vector<Segment>& segments, double min_length,
-                   long long max_points);
+                   long long max_points, double sharp_dihedral, double small_apex);
 
   const std::vector<P3>& points() const { return s_.points; }
   // Appends an interior point (on no facet), so that indices stay the caller's.
@@ -27,6 +28,8 @@ class BoundarySplitter {
   int facet_id(int f) const { return s_.facets[f]->id; }
   // The facet (index into the state's facets) holding points a, b, c, or -1.
   int common_facet(int a, int b, int c) const;
+  // Do the four points lie on one facet?
+  bool on_one_facet(const std::array<int, 4>& p) const;
   // Is the triangle (a, b, c) of facet f's points inside the facet (gabriel3d::triangle_on_facet)?
   bool on_facet(int f, int a, int b, int c) const { return gabriel3d::triangle_on_facet(s_, f, a, b, c); }
   std::size_t facet_count() const { return s_.facets.size(); }
@@ -36,6 +39,20 @@ class BoundarySplitter {
   bool is_subsegment(int a, int b) const { return s_.subsegments.count(gabriel3d::key(a, b)) > 0; }
   // Is a point strictly inside the diametral sphere of segment ab (c == -1) or triangle abc? (exact)
   bool encroached(int a, int b, int c) const;
+
+  // The small-angle rule (its termination argument is at refine_interior's boundary split rule): is the split that
+  // a point in the closed diametral sphere of subsegment ab (f == -1) or of subfacet abc of facet f asks for, i.e.
+  // the subsegment, or the subsegments of f that abc's circumcenter encroaches, or else abc itself, (i) at a small
+  // input angle: a subsegment of a sharp segment or with an end near a sharp apex, or a subfacet with a corner on
+  // a sharp segment or near a sharp apex; or (ii) shorter than `shortest`: halves of a subsegment shorter than it,
+  // or a subfacet circumcenter closer than it to the corners (Shewchuk's terminator: the split would make a feature
+  // smaller than the tet it is made for)? Sharp (floating-point angles on the boundary this splitter was built
+  // from): a segment of s_ through two facets at a dihedral angle below sharp_dihedral (between the half-planes, so
+  // a reflex angle over 360 - that counts too), and the points on it; an apex, a point where two subsegments meet
+  // below small_apex or a subsegment leans over a facet through it below that (gabriel3d::segment_facet_angles);
+  // near it, the apex and the midpoints of subsegments with an end near it (the mark follows the splits along a
+  // segment from its sharp end). Lengths compared exactly against the double `shortest`.
+  bool near_small_angle(int f, int a, int b, int c, double shortest) const;
 
   // The split for a point in the closed diametral sphere of subsegment ab: its midpoint. False when refused.
   bool split_subsegment(int a, int b);
@@ -56,12 +73,20 @@ class BoundarySplitter {
 
  private:
   bool may_add(const P3& p);
-  void added_point(int i);
+  void added_point(int i, char sharp);
+  // The constrained edges of facet f whose diametral spheres hold z strictly inside, sorted.
+  std::vector<gabriel3d::Key> encroached_subsegments(int f, const P3& z) const;
+  bool sharp_subsegment(int a, int b) const;
 
   gabriel3d::PlcState s_;
   gabriel3d::PointIndex index_;
   double min_length_;
   long long max_points_;
+  std::vector<char> sharp_segment_;  // per segment of s_ (the parents of subsegments): at a small dihedral angle
+  // per point: 0, kOnSharpSegment or kNearApex (near_small_angle)
+  static constexpr char kOnSharpSegment = 1, kNearApex = 2;
+  std::vector<char> sharp_point_;
+  void mark_sharp_apexes(double small_apex);
 };
 
 }  // namespace nonobtuse::quality3d

@@ -54,7 +54,8 @@ class InteriorRefiner {
       if (pts_[s[0]] == pts_[s[1]]) throw InvalidInput("a segment has coincident ends " + std::to_string(s[0]));
     if (!mesh.face_facets.empty())
       splitter_ = std::make_unique<BoundarySplitter>(mesh.points, mesh.faces, mesh.face_facets, mesh.segments,
-                                                     bounds.min_length, bounds.max_boundary_points);
+                                                     bounds.min_length, bounds.max_boundary_points,
+                                                     bounds.sharp_dihedral_degrees, bounds.small_apex_degrees);
     spheres_ = std::make_unique<SphereIndex>(pts_, faces_, segments_);
   }
 
@@ -110,7 +111,7 @@ class InteriorRefiner {
       spheres_ = std::make_unique<SphereIndex>(pts_, faces_, segments_);
     }
     collect(out);
-    if (out.status == "converged" && !out.blocked_rows.empty()) out.status = "blocked";
+    if (out.status == "converged" && out.blocked_rows.size() > out.small_angle_rows.size()) out.status = "blocked";
     return out;
   }
 
@@ -197,10 +198,16 @@ class InteriorRefiner {
     return sorted_corners({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
   }
 
-  // Radius-edge ratio and whether the domain cell c is over a bound (floating point).
+  // A domain cell's shape and size against the bounds (floating point).
+  struct Quality {
+    double ratio;     // circumradius / shortest edge (inf for a flat cell)
+    double shortest;  // shortest edge
+    bool over;        // over a bound (or flat)
+    bool over_volume;
+  };
   // The corners in index order: the rounding does not depend on the cell's history (the order of a cell's
   // vertices follows the insertions, and the spatial sort of a bulk insertion is randomized).
-  std::pair<double, bool> measure(Cell c) const {
+  Quality measure(Cell c) const {
     const std::array<int, 4> k = corners(c);
     const P3 &a = pts_[k[0]], &b = pts_[k[1]], &d = pts_[k[2]], &e = pts_[k[3]];
     double shortest = std::numeric_limits<double>::infinity();
@@ -209,17 +216,38 @@ class InteriorRefiner {
       for (int j = i + 1; j < 4; ++j) shortest = std::min(shortest, CGAL::squared_distance(*v[i], *v[j]));
     const double radius2 = CGAL::squared_radius(a, b, d, e);
     const double ratio = std::sqrt(radius2 / shortest);
-    const double volume = std::abs(CGAL::volume(a, b, d, e));
-    const bool over = (bounds_.radius_edge > 0 && ratio > bounds_.radius_edge) ||
-                      volume > bounds_.volume_bounds[c->info()] || !std::isfinite(ratio);
-    return {ratio, over};
+    const bool over_volume = std::abs(CGAL::volume(a, b, d, e)) > bounds_.volume_bounds[c->info()];
+    const bool over = (bounds_.radius_edge > 0 && ratio > bounds_.radius_edge) || over_volume || !std::isfinite(ratio);
+    return {ratio, std::sqrt(shortest), over, over_volume};
+  }
+
+  // The small-angle rule (as Triangle and TetGen leave what no insertion can fix near small input angles): a cell
+  // over a bound whose circumcenter lies in the closed diametral sphere at `row` (a subfacet, or -1 - a subsegment)
+  // is left alone when the split that sphere asks for is at a sharp feature, or, for a cell over the radius-edge
+  // bound alone, shorter than the cell's shortest edge (BoundarySplitter::near_small_angle). A cell over the volume
+  // bound is left near sharp features too: its split there starts the same shrinking chain across the small angle
+  // (slit-2.smesh: one pass went from 26 to 10,166 boundary points at its 8 degree slit before).
+  // Also left alone: a cell whose four corners lie on one facet, flat but for the rounding of the boundary points
+  // (joint.off: volumes near 1e-22 at edges near 1e-2, whose radius-edge ratio floating point cannot tell); no
+  // interior point splits it.
+  bool flat_on_facet(Cell c) const { return splitter_ && splitter_->on_one_facet(corners(c)); }
+  bool left_alone(const Quality& q, int row) const {
+    if (!splitter_ || !std::isfinite(q.ratio) || row == SphereIndex::kNone) return false;
+    const double shortest = q.over_volume ? 0.0 : q.shortest;  // 0: no split is shorter
+    if (row < 0) {
+      const Segment& s = segments_[-1 - row];
+      return splitter_->near_small_angle(-1, s[0], s[1], -1, shortest);
+    }
+    const auto [a, p, r] = faces_[row];
+    const int f = splitter_->common_facet(a, p, r);
+    return f >= 0 && splitter_->near_small_angle(f, a, p, r, shortest);
   }
 
   void push_if_bad(Cell c) {
     if (dt_.is_infinite(c) || c->info() < 0) return;
-    auto [ratio, over] = measure(c);
-    if (!over) return;
-    queue_.push({std::isfinite(ratio) ? ratio : std::numeric_limits<double>::max(), corners(c),
+    const Quality q = measure(c);
+    if (!q.over) return;
+    queue_.push({std::isfinite(q.ratio) ? q.ratio : std::numeric_limits<double>::max(), corners(c),
                  {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
   }
 
@@ -257,7 +285,7 @@ class InteriorRefiner {
   // Inserts p when it is finite, strictly outside every closed diametral sphere, in a domain cell and on no vertex
   // (exact), labelling its cavity and queueing the bad cells in it; false otherwise.
   bool place(const P3& p, Cell hint) {
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z())) return false;
+    if (!finite(p)) return false;
     DT::Locate_type lt;
     int li = 0, lj = 0;
     Cell at = dt_.locate(p, lt, li, lj, hint);
@@ -287,9 +315,17 @@ class InteriorRefiner {
   // least r > R l >= 2 l for a circumcenter made for a tet with shortest edge l, at least r / sqrt 2 for a subfacet
   // circumcenter that such a circumcenter encroached, and at least 1 / sqrt 2 of that for a subsegment midpoint that
   // the subfacet circumcenter encroached; around the chain circumcenter -> subfacet -> subsegment -> circumcenter the
-  // factor is R / 2 >= 1, so radii never shrink below the local feature size and finitely many points fit. Near
-  // smaller input angles the chains can shrink: splits stop at min_length and max_boundary_points (refused, counted),
-  // their tets stay blocked, as TetGen leaves such tets and counts them; time_limit bounds every step.
+  // factor is R / 2 >= 1, so radii never shrink below the local feature size and finitely many points fit.
+  // Small input angles (the small-angle rule, left_alone): a tet is not split for when its split would lie at a
+  // sharp feature (a dihedral angle below 85 degrees or an apex below 60, where the chain's factor drops below 1), or,
+  // over the radius-edge bound alone, would be shorter than the tet's shortest edge l. The second clause never fires where the argument
+  // above holds (the split's radius is at least r / sqrt 2 > sqrt 2 l, or r / 2 > l for the subsegments a subfacet
+  // circumcenter encroaches), so the rule only stops chains that would shrink: every split made for a tet has
+  // insertion radius >= l and lies away from the sharp features, and a tet over the volume bound V makes splits of
+  // radius >= (3V / 4 pi)^(1/3) / 2. What stays unbounded are the cascades restore_gabriel runs between features at
+  // small angles that such a split reaches; they stop at min_length and max_boundary_points (refused, counted, the
+  // step handed back), and time_limit bounds every step. The tets left alone are counted (small_angle_rows), as
+  // Triangle's terminator and TetGen's -q leave them.
   bool split_boundary() {
     struct Blocked {
       double ratio;
@@ -299,11 +335,12 @@ class InteriorRefiner {
     std::vector<Blocked> blocked;
     for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c) {
       if (c->info() < 0) continue;
-      auto [ratio, over] = measure(c);
-      const P3 center = over ? circumcenter(c) : P3();
-      if (over && std::isfinite(center.x()) && std::isfinite(center.y()) && std::isfinite(center.z()) &&
-          spheres_->hits(center))
-        blocked.push_back({std::isfinite(ratio) ? ratio : std::numeric_limits<double>::max(), corners(c), center});
+      const Quality q = measure(c);
+      const P3 center = q.over ? circumcenter(c) : P3();
+      if (!q.over || !finite(center) || flat_on_facet(c)) continue;
+      const int row = spheres_->find(center);
+      if (row != SphereIndex::kNone && !left_alone(q, row))
+        blocked.push_back({std::isfinite(q.ratio) ? q.ratio : std::numeric_limits<double>::max(), corners(c), center});
     }
     std::sort(blocked.begin(), blocked.end(), [](const Blocked& x, const Blocked& y) {
       return std::tie(y.ratio, x.key) < std::tie(x.ratio, y.key);  // worst first
@@ -323,6 +360,8 @@ class InteriorRefiner {
     }
     return splitter_->restore_gabriel([&] { return out_of_time(); });
   }
+
+  static bool finite(const P3& p) { return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z()); }
 
   // The splitter's new points (from index mark on) into dt_, their cells unlabelled.
   void insert_boundary_points(std::size_t mark) {
@@ -442,9 +481,13 @@ class InteriorRefiner {
                            c);
     std::sort(cells.begin(), cells.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     for (const auto& [t, c] : cells) {
-      if (measure(c).second) {
+      const Quality q = measure(c);
+      if (q.over) {
+        const P3 center = circumcenter(c);
+        if (flat_on_facet(c) || (finite(center) && left_alone(q, spheres_->find(center))))
+          out.small_angle_rows.push_back(static_cast<int>(out.tets.size()));
         out.blocked_rows.push_back(static_cast<int>(out.tets.size()));
-        out.blocked_centers.push_back(from_cgal(circumcenter(c)));
+        out.blocked_centers.push_back(from_cgal(center));
       }
       out.tets.push_back(t);
       out.tet_labels.push_back(c->info());

@@ -128,6 +128,8 @@ TEST(RefineInterior, BlockedCenterSplitsTheBoundaryAndTheResultStaysGabriel) {
   InteriorMesh m = regular_tet_boundary();
   InteriorBounds bounds;
   bounds.volume_bounds = {0.5};
+  // the small-angle rule off: it would leave the tet alone (70.5 degree dihedrals, edges 54.7 degrees over faces)
+  bounds.sharp_dihedral_degrees = bounds.small_apex_degrees = 0;
   auto r = refine_interior(m, bounds);
   ASSERT_EQ(r.status, "converged");
   EXPECT_GE(r.boundary_rounds, 1);
@@ -161,11 +163,38 @@ TEST(RefineInterior, BlockedCenterSplitsTheBoundaryAndTheResultStaysGabriel) {
   EXPECT_THROW(refine_interior(m, bounds), InvalidInput);
 }
 
+TEST(RefineInterior, SmallAngleRuleLeavesTheTetAloneAndCountsIt) {
+  // The regular tet: its facets meet at dihedral angles of acos(1/3) = 70.53 degrees (below the default 85: every
+  // edge is sharp) and each edge leans over the facets through its ends at acos(1/sqrt 3) = 54.74 degrees (below
+  // 60: every corner is a sharp apex). Its center (0,0,0) is in every face's diametral sphere, and every split it
+  // could ask for lies at a sharp feature: the tet over the volume bound is left alone, counted, nothing is added.
+  InteriorMesh m = regular_tet_boundary();
+  InteriorBounds bounds;
+  bounds.volume_bounds = {0.5};
+  auto r = refine_interior(m, bounds);
+  EXPECT_EQ(r.status, "converged");
+  EXPECT_EQ(r.points.size(), 4u);
+  EXPECT_EQ(r.boundary_points, 0);
+  EXPECT_EQ(r.blocked_rows, std::vector<int>{0});
+  EXPECT_EQ(r.small_angle_rows, std::vector<int>{0});
+  // With the angles below the tet's (70 and 50 degrees) nothing is sharp: the same tet is split for.
+  bounds.sharp_dihedral_degrees = 70;
+  bounds.small_apex_degrees = 50;
+  auto split = refine_interior(m, bounds);
+  EXPECT_EQ(split.status, "converged");
+  EXPECT_GE(split.boundary_points, 6);
+  EXPECT_TRUE(split.small_angle_rows.empty());
+  // Only the dihedral clause (apex at 50): still left alone.
+  bounds.sharp_dihedral_degrees = 85;
+  EXPECT_EQ(refine_interior(m, bounds).small_angle_rows, std::vector<int>{0});
+}
+
 TEST(RefineInterior, RefusedBoundarySplitsLeaveTheTetsBlocked) {
   // min_length longer than the edges: every split is refused and counted; nothing changes.
   InteriorMesh m = regular_tet_boundary();
   InteriorBounds bounds;
   bounds.volume_bounds = {0.5};
+  bounds.sharp_dihedral_degrees = bounds.small_apex_degrees = 0;
   bounds.min_length = 10.0;
   auto r = refine_interior(m, bounds);
   EXPECT_EQ(r.status, "blocked");

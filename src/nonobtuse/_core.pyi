@@ -589,6 +589,9 @@ class InteriorRefinement:
     def segments(self) -> numpy.typing.NDArray[numpy.int64]:
         ...
     @property
+    def small_angle_rows(self) -> numpy.typing.NDArray[numpy.int32]:
+        ...
+    @property
     def split_face_facets(self) -> numpy.typing.NDArray[numpy.int32]:
         ...
     @property
@@ -713,13 +716,14 @@ def refine_gabriel(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float6
     progress: None or f(steiner, encroached_segments, encroached_facets, seconds).
     Returns a Refine3DResult.
     """
-def refine_interior(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], tets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], tet_labels: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], radius_edge: typing.SupportsFloat | typing.SupportsIndex, volume_bounds: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_points: typing.SupportsInt | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex, insert: typing.Annotated[numpy.typing.ArrayLike, numpy.float64] = ..., face_facets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64] = ..., max_boundary_points: typing.SupportsInt | typing.SupportsIndex = 1000000, min_length: typing.SupportsFloat | typing.SupportsIndex = 0.0) -> InteriorRefinement:
+def refine_interior(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], tets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], tet_labels: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], radius_edge: typing.SupportsFloat | typing.SupportsIndex, volume_bounds: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_points: typing.SupportsInt | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex, insert: typing.Annotated[numpy.typing.ArrayLike, numpy.float64] = ..., face_facets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64] = ..., max_boundary_points: typing.SupportsInt | typing.SupportsIndex = 1000000, min_length: typing.SupportsFloat | typing.SupportsIndex = 0.0, sharp_dihedral_degrees: typing.SupportsFloat | typing.SupportsIndex = 85.0, small_apex_degrees: typing.SupportsFloat | typing.SupportsIndex = 60.0) -> InteriorRefinement:
     """
     Delaunay refinement of the interior of a mesh (n,3) points, (t,4) tets, (t,) labels with a Gabriel
     boundary (f,3) faces, (k,2) segments: circumcenters of tets over radius_edge (<= 0: none) or
     volume_bounds[label] inserted outside every closed diametral sphere, after inserting the points
     insert (p,3) outside them; with face_facets (f,) the facet id of each face, a center in a closed
-    sphere splits the boundary instead (see quality3d.h).
+    sphere splits the boundary instead, but near small input angles (sharp_dihedral_degrees,
+    small_apex_degrees: small_angle_rows; see quality3d.h).
     """
 def surface_winding_numbers(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], queries: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> numpy.typing.NDArray[numpy.int64]:
     """

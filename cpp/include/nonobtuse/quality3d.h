@@ -51,10 +51,17 @@ struct InteriorBounds {
   double time_limit = 60.0;          // seconds (checked every 64 insertions and before every boundary split)
   long long max_boundary_points = 1000000;  // boundary points to add at most
   double min_length = 0.0;           // no boundary split point closer than this to a point; 0: none
+  // The small-angle rule's angles (InteriorRefinement::small_angle_rows), in degrees; 0 turns that clause off.
+  // Facets meeting at a segment below sharp_dihedral_degrees make it sharp (Shewchuk's 3D proof needs 90; 85 keeps
+  // the right angles of tessellated CAD models, measured at 89.9998 on joint.off, out); two subsegments meeting
+  // below small_apex_degrees, or one leaning over a facet below it, make their apex sharp (Ruppert's 60, as 2D's).
+  double sharp_dihedral_degrees = 85.0;
+  double small_apex_degrees = 60.0;
 };
 
-// "converged": every tet within the bounds; "blocked": the tets over a bound left have circumcenters that no split
-// frees (in a closed diametral sphere whose split was refused, on a mesh vertex or outside the domain: blocked_rows);
+// "converged": every tet within the bounds but those left alone near small input angles (small_angle_rows);
+// "blocked": other tets over a bound are left, their circumcenters freed by no split (in a closed diametral sphere
+// whose split was refused, on a mesh vertex or outside the domain: blocked_rows);
 // "budget_exhausted": max_points or time_limit; "not_conforming": a subfacet or subsegment is not a face or an edge
 // of the Delaunay tetrahedralization (cospherical points): before any boundary split, nothing was inserted (the
 // input returned); after one, the state before that boundary step is returned (the first certified_points points,
@@ -68,6 +75,12 @@ struct InteriorRefinement {
   std::vector<std::array<int, 4>> tets;
   std::vector<int> tet_labels;
   std::vector<int> blocked_rows;       // rows of tets over a bound whose circumcenters could not be inserted
+  // The blocked rows left alone near small input angles (the small-angle rule: a tet whose circumcenter lies in the
+  // closed diametral sphere of a subsegment or subfacet whose split would lie at a sharp feature, a segment where
+  // facets meet below 85 degrees or an apex below 60, or, over the radius-edge bound alone, would be shorter than
+  // the tet's shortest edge; see quality3d_boundary.h), and those with four corners on one facet (flat but for
+  // rounding), sorted.
+  std::vector<int> small_angle_rows;
   std::vector<Point3> blocked_centers;  // their circumcenters (floating point)
   // The boundary at the end: the subfacets (faces of the Delaunay tetrahedralization, each oriented away from a
   // domain tet behind it; the input's as given while no boundary split happened) with their input facet ids, and

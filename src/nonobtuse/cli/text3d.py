@@ -136,9 +136,11 @@ def _quality3d_text(stats: dict[str, Any], input_path: str, output_path: str) ->
         ("points added", f"{stats['steiner_points']:,} ({stats['boundary_points']:,} on the boundary, "
                          f"{stats['interior_points']:,} interior)"),
         ("tets", f"{_number(stats['tets'])} ({_number(stats['bad_tets'])} over a bound, "
+                 f"{_number(stats['small_angle_tets'])} of them left alone near small input angles, "
                  f"{_number(stats['rounds'])} rounds)"),
         ("worst radius-edge", f"{_number(stats['worst_radius_edge'])} "
-                              f"(bound {_number(stats['radius_edge'])})"),
+                              f"({_number(stats['worst_radius_edge_outside_small_angles'])} outside small "
+                              f"angles; bound {_number(stats['radius_edge'])})"),
         ("largest volume", f"{_number(stats['max_volume'])} (bound "
                            f"{_number(bound) if not isinstance(bound, dict) else 'per region'}; length units "
                            "cubed)"),

@@ -41,14 +41,22 @@ class Quality3DResult:
             boundary_faces (subfacets) with face_facets and face_markers of their input facets; segments the
             subsegments.
     status: "converged" (the exact Gabriel check of mesh passes and every tet meets the bounds, floating
-            point), "quality_blocked" (certificate passes; a round could add nothing: the centers left lie on
-            diametral spheres), "budget_exhausted" (max_points or time_limit), or the boundary repair's status
-            when one did not converge ("budget_exhausted", "min_length_reached", "stalled"): mesh is then
-            the last interior pass's on the last converged repair's boundary (certified) when there was one;
-            stats["last_repair"] says how the last repair ended.
+            point, but those left alone near small input angles), "quality_blocked" (certificate passes; a
+            round could add nothing: the centers left lie on diametral spheres), "budget_exhausted"
+            (max_points or time_limit), or the boundary repair's status when one did not converge
+            ("budget_exhausted", "min_length_reached", "stalled"): mesh is then the last interior pass's
+            on the last converged repair's boundary (certified) when there was one; stats["last_repair"]
+            says how the last repair ended.
     stats:  boundary_points, interior_points, steiner_points (all points not in the input), tets,
-            worst_radius_edge, max_volume, min_volume, radius_edge_over_2 (see :func:`tet_quality`), bad_tets
-            (tets over a bound at the end), blocked_centers (tets over a bound the last interior pass left:
+            worst_radius_edge, max_volume, min_volume, radius_edge_over_2 (see :func:`tet_quality`), and the
+            same with the suffix _outside_small_angles (over the tets not left alone), bad_tets (tets over a
+            bound at the end), small_angle_tets (those of them the small-angle rule left alone: a tet whose
+            circumcenter lies in the closed diametral sphere of a subsegment or subfacet whose split would lie
+            at a sharp feature, a segment where facets meet below 85 degrees or an apex below 60, or, over
+            the radius-edge bound alone, be shorter than the tet's shortest edge;
+            ``cpp/src/quality3d_boundary.h``; and a tet with its four corners on one facet, flat but for
+            rounding),
+            bad_tets_outside_small_angles, blocked_centers (tets over a bound the last interior pass left:
             centers that no split frees), inserted_by_passes (circumcenters the interior passes inserted),
             boundary_points_by_passes / boundary_rounds / refused_splits (the passes' own boundary splits,
             their steps, and the splits refused at min_length or the budget), rounds,
@@ -58,12 +66,14 @@ class Quality3DResult:
             boundary_repair (the first refine_gabriel's stats), radius_edge / max_volume_bound (the bounds
             asked), start, warnings, seconds.
     report: the GabrielReport of mesh (exact).
+    small_angle_rows: the rows of mesh.tets over a bound left alone by the small-angle rule (int64, sorted).
     """
 
     mesh: TetMesh
     status: QualityStatus
     stats: dict[str, Any] = field(default_factory=dict)
     report: GabrielReport | None = None
+    small_angle_rows: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
 
 
 def _print_progress(round_: int, interior: int, bad: int, blocked: int, seconds: float) -> None:
@@ -76,7 +86,7 @@ def refine_quality3d(
     max_volume: float | Mapping[float, float] | None = None,
     radius_edge: float | None = None,
     max_points: int | None = None,
-    time_limit: float = 120.0,
+    time_limit: float | None = None,
     start: Start = "tetgen",
     region_volumes: bool = False,
     progress: Callable[[int, int, int, int, float], None] | bool | None = None,
@@ -95,10 +105,13 @@ def refine_quality3d(
     regions of their attributes: a tet's bound is then the smallest that applies. radius_edge: a bound > 1 on
     circumradius / shortest edge (TetGen's -q; 2 is its default), or None. max_points: interior point budget
     (None: 10^6). time_limit: seconds for everything, checked between rounds and passed on to each boundary
-    repair. start: "tetgen" lets TetGen (-pq R -a V, the 3d extra) split the facets for the bounds before the
-    Gabriel repair and takes its -Y interior points on the repaired boundary as the first interior points (it
-    falls back to "boundary" when TetGen is missing or fails); "boundary" starts from the input boundary and
-    its repair alone (also taken when the repair of TetGen's surface does not converge within half the time).
+    repair; None (the default): no wall-clock limit, so the outcome does not depend on the machine (the
+    repairs stop at their deterministic work budget, max_work, and the passes at max_points and the
+    repair's max_steiner). start: "tetgen" lets TetGen (-pq R -a V, the 3d extra) split the facets for the
+    bounds before the Gabriel repair and takes its -Y interior points on the repaired boundary as the first
+    interior points (it falls back to "boundary" when TetGen is missing or fails); "boundary" starts from the
+    input boundary and its repair alone (also taken when the repair of TetGen's surface does not converge:
+    within its work budget, or half the time with a time_limit).
     progress: True prints a line per round to stderr; a callable gets (round, interior_points, bad_tets,
     blocked_tets, seconds). started: time.perf_counter() at which the caller's work began (time_limit counts
     from it).
@@ -168,7 +181,7 @@ def refine_quality3d(
         if passed in ("converged", "blocked", "budget_exhausted"):
             mesh, status = grown, {"blocked": "quality_blocked"}.get(passed, passed)
             break
-        if seconds > time_limit:
+        if seconds > refiner.time_limit:
             status = "budget_exhausted"
             break
         # a split boundary the pass cannot tetrahedralize by itself (cospherical points, or a split it
@@ -188,7 +201,9 @@ def refine_quality3d(
         # else the last certified mesh: the pass's before the boundary step it could not finish
         g, mesh = (repaired, repaired.mesh) if status == "converged" else (g, grown)
     bad = refiner.bad_tets(mesh)[0]
-    if status == "converged" and len(bad):  # the pass's measure and numpy's differ in the last ulp
+    small_angle = refiner.small_angle_rows(mesh)
+    outside = np.setdiff1d(bad, small_angle)
+    if status == "converged" and len(outside):  # the pass's measure and numpy's differ in the last ulp
         status = "quality_blocked"
     # mesh is the last interior pass's, on the last converged repair's boundary, when a later repair stopped
     # (its status is returned with that mesh)
@@ -198,7 +213,9 @@ def refine_quality3d(
     interior_points = len(mesh.points) - len(refiner.split_mesh(mesh)[0].points)
     stats = {"status": status, "steiner_points": len(mesh.points) - len(plc.points),
              "boundary_points": len(mesh.points) - interior_points, "interior_points": interior_points,
-             **tet_quality(mesh), "bad_tets": int(bad.size), "blocked_centers": blocked,
+             **tet_quality(mesh), **tet_quality(mesh, small_angle, "_outside_small_angles"),
+             "bad_tets": int(bad.size), "small_angle_tets": int(small_angle.size),
+             "bad_tets_outside_small_angles": int(outside.size), "blocked_centers": blocked,
              "inserted_by_passes": refiner.inserted, "boundary_points_by_passes": refiner.boundary_points,
              "boundary_rounds": refiner.boundary_rounds, "refused_splits": refiner.refused_splits,
              "encroached_facets": len(report.faces), "encroached_segments": len(report.segments),
@@ -206,7 +223,7 @@ def refine_quality3d(
              "negative_couplings": control_volume_summary(mesh)["negative_couplings"], **stats,
              "warnings": list(plc.warnings), "seconds": time.perf_counter() - started}
     mesh.stats = stats
-    return Quality3DResult(mesh, cast(QualityStatus, status), stats, report)
+    return Quality3DResult(mesh, cast(QualityStatus, status), stats, report, small_angle)
 
 
 def _tetgen_switches(max_volume: Any, radius_edge: float | None) -> str:

@@ -38,40 +38,48 @@ def shortest_edges(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
     return np.sqrt(d2.min(0))
 
 
-def tet_quality(mesh: TetMesh) -> dict[str, Any]:
-    """Shape and size of mesh.tets, floating point: tets, worst_radius_edge (circumradius over shortest edge;
-    a regular tet has 0.612), max_volume, min_volume, and radius_edge_over_2 (the fraction of tets above
-    2)."""
+def tet_quality(mesh: TetMesh, leave_out: np.ndarray | None = None, suffix: str = "") -> dict[str, Any]:
+    """Shape and size of mesh.tets but the rows `leave_out`, floating point: tets, worst_radius_edge
+    (circumradius over shortest edge; a regular tet has 0.612), max_volume, min_volume, and
+    radius_edge_over_2 (the fraction of tets above 2); each key ends with `suffix`."""
     tets = np.asarray(mesh.tets, dtype=np.int64).reshape(-1, 4)
+    if leave_out is not None:
+        tets = np.delete(tets, np.asarray(leave_out, dtype=np.int64), axis=0)
+    keys = ["tets", "worst_radius_edge", "max_volume", "min_volume", "radius_edge_over_2"]
     if not len(tets):
-        return {"tets": 0, "worst_radius_edge": None, "max_volume": None, "min_volume": None,
-                "radius_edge_over_2": None}
+        return {k + suffix: v for k, v in zip(keys, [0, None, None, None, None])}
     _, radius, volume = tet_circumspheres(np.asarray(mesh.points, dtype=np.float64), tets)
     ratio = radius / shortest_edges(np.asarray(mesh.points, dtype=np.float64), tets)
-    return {"tets": len(tets), "worst_radius_edge": float(ratio.max()), "max_volume": float(volume.max()),
-            "min_volume": float(volume.min()), "radius_edge_over_2": float((ratio > 2.0).mean())}
-
+    values = [len(tets), float(ratio.max()), float(volume.max()), float(volume.min()),
+              float((ratio > 2.0).mean())]
+    return {k + suffix: v for k, v in zip(keys, values)}
 
 
 class InteriorRefiner:
     """The input PLC, the bounds and the limits shared by the rounds of refine_quality3d."""
 
-    def __init__(self, plc: PLC, max_volume: Any, radius_edge: float | None, time_limit: float,
+    def __init__(self, plc: PLC, max_volume: Any, radius_edge: float | None, time_limit: float | None,
                  started: float, gabriel_options: dict[str, Any]) -> None:
         self.plc, self.max_volume, self.radius_edge = plc, max_volume, radius_edge
-        self.time_limit, self.started, self.gabriel_options = time_limit, started, gabriel_options
+        # None: no wall-clock limit (the repairs' work budgets and the passes' point budgets stop them)
+        self.wall_clock = time_limit is not None
+        self.time_limit = math.inf if time_limit is None else float(time_limit)
+        self.started, self.gabriel_options = started, gabriel_options
         self.inserted = 0  # circumcenters the interior passes inserted
+        # the last pass's mesh and its rows of tets left alone near small input angles (the small-angle rule)
+        self.small_angle: tuple[TetMesh | None, np.ndarray] = (None, np.zeros(0, dtype=np.int64))
         self.boundary_points = self.boundary_rounds = self.refused_splits = 0  # the passes' boundary splits
+        self.lazy_tried = False  # the first pass tried without the small-angle rule's angle clauses
 
     def repair(self, surface: PLC, interior: np.ndarray, share: float = 1.0) -> Any:
         """refine_gabriel of `surface` with `interior` (k, 3) as isolated points (after surface's points),
-        within `share` of the time left."""
+        within `share` of the time left (without a time limit: within its own work budget)."""
         points = np.concatenate([surface.points, np.asarray(interior, dtype=np.float64).reshape(-1, 3)])
         plc = replace(self.plc, points=points, triangles=surface.triangles, facet_ids=surface.facet_ids,
                       segments=surface.segments)
         left = self.time_limit - (time.perf_counter() - self.started)
-        return refine_gabriel(plc, time_limit=max(0.0, share * left), control_volumes=False,
-                              **self.gabriel_options)
+        return refine_gabriel(plc, time_limit=max(0.0, share * left) if self.wall_clock else None,
+                              control_volumes=False, **self.gabriel_options)
 
     def split_mesh(self, mesh: TetMesh) -> tuple[PLC, np.ndarray]:
         """The surface PLC of `mesh` (the input points, then the other vertices of its subfacets and
@@ -147,16 +155,43 @@ class InteriorRefiner:
         the domain (exact), at most `budget` of them within the time left; a center in a closed diametral
         sphere splits that subsegment or subfacet (Ruppert's and Shewchuk's rule) and the boundary is split
         until Gabriel again, in the same tetrahedralization, and so on until no center is left that a split
-        frees. limits: the boundary repair's stats (its min_length and max_steiner bound the splits). Returns
-        the mesh (points: the input's, then the new ones in order; boundary_faces, face_facets and segments
-        the split boundary), the pass's status ("converged", "blocked", "budget_exhausted"; "not_conforming"
+        frees; a tet whose split would lie at a small input angle (or, over the radius-edge bound alone, be
+        shorter than its shortest edge) is left alone (the small-angle rule, ``quality3d.h``; its rows in
+        :attr:`small_angle`; the first pass tries without its angle clauses first). limits: the boundary
+        repair's stats (its min_length and max_steiner bound the splits). Returns the mesh (points: the
+        input's, then the new ones in order; boundary_faces, face_facets and segments the split boundary),
+        the pass's status ("converged", "blocked", "budget_exhausted"; "not_conforming"
         with `mesh` itself returned: it was not Delaunay to begin with; "not_conforming" or
         "boundary_stopped" after a boundary step: the mesh is the pass's state before that step, Gabriel and
         conforming), the number of tets left over a bound, and, after such a step, the split boundary over
         all the points (no tets) for the repair to tetrahedralize, else None."""
+        limits = limits or {}
+        max_steiner = int(limits.get("max_steiner", 10**6))
+        # Lazily, in the first pass only: first without the angle clauses of the small-angle rule, its
+        # boundary splits bounded by the boundary's own size (at most 2,000). When that does not converge, the
+        # pass runs again from `mesh` with them (going on from that try's state instead left slit-2.smesh's
+        # cascade in place: no convergence in 280 s). Inputs that converge without them (layered_box.poly,
+        # icosphere_jitter.off) keep every tet within the bounds; the others pay a second pass. Deterministic.
+        boundary = len(np.unique(np.asarray(mesh.boundary_faces, dtype=np.int64)))
+        rule, self.lazy_tried = self.lazy_tried, True
+        first = self._refine_interior(mesh, budget, insert, limits, rule,
+                                      max_steiner if rule else min(max_steiner, boundary, 2000))
+        grown, status, _, _, r = first
+        if rule or status in ("converged", "budget_exhausted") or grown is mesh:
+            return first[:4]
+        self.inserted -= r.inserted  # that try's points are dropped
+        self.boundary_points -= r.boundary_points
+        self.boundary_rounds -= r.boundary_rounds
+        self.refused_splits -= r.refused_splits
+        return self._refine_interior(mesh, budget, insert, limits, True, max_steiner)[:4]
+
+    def _refine_interior(self, mesh: TetMesh, budget: int, insert: np.ndarray | None, limits: dict[str, Any],
+                         rule: bool, boundary_budget: int) -> tuple[TetMesh, str, int, TetMesh | None, Any]:
+        """One ``_core.refine_interior`` call for :meth:`interior_pass` (rule: with the small-angle rule's
+        angle clauses; boundary_budget: boundary points to add at most); its returns and the core's result."""
         attrs, labels = self.region_labels(mesh)
         left = self.time_limit - (time.perf_counter() - self.started)
-        limits = limits or {}
+        angles = {} if rule else {"sharp_dihedral_degrees": 0.0, "small_apex_degrees": 0.0}
         r = _core.refine_interior(
             np.ascontiguousarray(mesh.points, dtype=np.float64),
             np.ascontiguousarray(mesh.tets, dtype=np.int64), labels,
@@ -164,30 +199,37 @@ class InteriorRefiner:
             np.ascontiguousarray(mesh.segments, dtype=np.int64).reshape(-1, 2),
             float(self.radius_edge or 0.0), self.volume_bounds_of(attrs), max(0, int(budget)), max(0.0, left),
             np.zeros((0, 3)) if insert is None else np.ascontiguousarray(insert, dtype=np.float64),
-            np.ascontiguousarray(mesh.face_facets, dtype=np.int64), int(limits.get("max_steiner", 10**6)),
-            float(limits.get("min_length", 0.0)))
+            np.ascontiguousarray(mesh.face_facets, dtype=np.int64), max(0, int(boundary_budget)),
+            float(limits.get("min_length", 0.0)), **angles)
         self.inserted += r.inserted
         self.boundary_points += r.boundary_points
         self.boundary_rounds += r.boundary_rounds
         self.refused_splits += r.refused_splits
         if r.status == "not_conforming" and not r.boundary_rounds:
-            return mesh, r.status, 0, None
+            return mesh, r.status, 0, None, r
         regions = None if mesh.tet_regions is None else attrs[r.tet_labels]
         grown = self._with_boundary(replace(mesh, points=r.points[: r.certified_points],
                                             tets=np.asarray(r.tets, dtype=np.int64), tet_regions=regions),
                                     r.faces, r.face_facets, r.segments)
+        self.small_angle = (grown, np.asarray(r.small_angle_rows, dtype=np.int64))
         split = None
         if r.certified_points < len(r.points):
             split = self._with_boundary(replace(mesh, points=r.points, tets=np.zeros((0, 4), dtype=np.int64),
                                                 tet_regions=None), r.split_faces, r.split_face_facets,
                                         r.split_segments)
-        return grown, r.status, len(r.blocked_rows), split
+        return grown, r.status, len(r.blocked_rows), split, r
 
     def _with_boundary(self, mesh: TetMesh, faces: Any, face_facets: Any, segments: Any) -> TetMesh:
         facets = np.asarray(face_facets, dtype=np.int64)
         return replace(mesh, boundary_faces=np.asarray(faces, dtype=np.int64), face_facets=facets,
                        face_markers=self.plc.markers_of_facets(facets),
                        segments=np.asarray(segments, dtype=np.int64).reshape(-1, 2))
+
+    def small_angle_rows(self, mesh: TetMesh) -> np.ndarray:
+        """The rows of mesh.tets the last interior pass left alone near small input angles, when mesh is
+        that pass's mesh; else none."""
+        grown, rows = self.small_angle
+        return rows if grown is mesh else np.zeros(0, dtype=np.int64)
 
     def bad_tets(self, mesh: TetMesh) -> tuple[np.ndarray, np.ndarray]:
         """Rows of mesh.tets over a bound, most skewed first, and their circumcenters (floating point)."""
