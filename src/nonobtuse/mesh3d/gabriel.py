@@ -228,7 +228,7 @@ def refine_gabriel(
     max_steiner: int | None = None,
     min_length: float | None = None,
     time_limit: float | None = None,
-    split: Literal["shells", "midpoint", "greedy", "protected"] = "shells",
+    split: Literal["shells", "midpoint", "greedy", "protected", "mirrored"] = "shells",
     protected_fallback: bool = True,
     progress: Callable[[int, int, int, float], None] | bool | None = None,
     progress_every: int = 1000,
