@@ -33,8 +33,10 @@ std::optional<P3> collar_split_point(const P3& p, const P3& q, const P3& c, cons
   const P3 m = CGAL::midpoint(p, q);
   const K::Vector_3 d = c - m;
   const double length = std::sqrt(CGAL::to_double(d.squared_length()));
-  if (!(length > 0)) return std::nullopt;
   const double radius = 0.5 * std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
+  // c at (or within 2^-26 of the radius from) the midpoint: the ray's direction is then rounding noise and can leave
+  // the facet's plane (measured with mirrored meshes: Thales subfacets whose circumcenter is m, moved 0.1 off it).
+  if (!(length > std::ldexp(radius, -26))) return std::nullopt;
   auto outside = [&](const P3& y) {
     if (CGAL::side_of_bounded_sphere(p, q, y) == CGAL::ON_BOUNDED_SIDE) return false;
     for (const auto& [a, b] : chain)

@@ -243,6 +243,12 @@ int insert_in_facet(PlcState& s, int f, const P3& point, FacetCDT::Locate_type l
   return m;
 }
 
+bool strictly_in_domain(const FacetCDT& cdt, FacetCDT::Locate_type lt, FacetCDT::Face_handle loc, int li) {
+  return (lt == FacetCDT::FACE && loc->info().in_domain) ||
+         (lt == FacetCDT::EDGE && !cdt.is_constrained({loc, li}) && loc->info().in_domain &&
+          loc->neighbor(li)->info().in_domain);
+}
+
 bool triangle_on_facet(const PlcState& s, int f, int a, int b, int c) {
   const Facet& facet = *s.facets[f];
   auto ia = facet.vertex.find(a), ib = facet.vertex.find(b), ic = facet.vertex.find(c);

@@ -77,6 +77,9 @@ int split_subsegment(PlcState& s, int a, int b, double t, const P3& rounded);
 int insert_in_facet(PlcState& s, int f, const P3& point, FacetCDT::Locate_type lt, FacetCDT::Face_handle loc,
                     int li);
 
+// Is a located point strictly inside the facet's domain: in a domain face, or on an unconstrained edge between two?
+bool strictly_in_domain(const FacetCDT& cdt, FacetCDT::Locate_type lt, FacetCDT::Face_handle loc, int li);
+
 // Is the triangle (a, b, c) of points on facet f inside the facet's domain (its 2D centroid in domain faces)?
 bool triangle_on_facet(const PlcState& s, int f, int a, int b, int c);
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "gabriel3d_collar.h"
+#include "gabriel3d_mirror.h"
 #include "gabriel3d_protect.h"
 #include "gabriel3d_refine.h"
 #include "gabriel3d_split_rule.h"
@@ -36,10 +37,12 @@ SubfacetRef canonical(SubfacetRef r) {
 
 class Refiner {
  public:
-  Refiner(PlcState& s, const Refine3DOptions& o, bool ignore_frame_artifacts, const Protection* protection)
+  Refiner(PlcState& s, const Refine3DOptions& o, bool ignore_frame_artifacts, const Protection* protection,
+          bool mirror)
       : s_(s), o_(o), ignore_frame_artifacts_(ignore_frame_artifacts), protection_(protection), index_(s.points),
         start_(std::chrono::steady_clock::now()), acute_(s.n_input, false),
-        collared_(protection ? collared_segments(s) : std::vector<bool>{}) {
+        collared_(protection ? collared_segments(s) : std::vector<bool>{}),
+        mirror_pairs_(mirror ? mirror_pairs(s, 90.0) : std::vector<MirrorPair>{}) {
     std::vector<std::vector<int>> ends(s.n_input);
     for (const auto& seg : s.segments) ends[seg.a].push_back(seg.b), ends[seg.b].push_back(seg.a);
     for (int v = 0; v < s.n_input; ++v)
@@ -99,6 +102,11 @@ class Refiner {
   // A stop when p is closer than min_length to a point; *near (when given) is set to that point.
   std::optional<Stop> too_close(const P3& p, int* near = nullptr) const;
   void inserted(int m);
+  // Places the images of new point m on the facets mirrored to one of its own (gabriel3d_mirror.h) where they
+  // verify; images are not mirrored again (one hop: a base point near two mirrored segments goes to both facets,
+  // and their images do not come back). Images that are existing points, within min_length of one, or strictly
+  // inside a protecting ball are not placed.
+  void mirror(int m);
 
   PlcState& s_;
   const Refine3DOptions& o_;
@@ -112,6 +120,8 @@ class Refiner {
   mutable long work_ = 0;  // counted in const queries: the count is the cost, not part of the state
   std::vector<bool> acute_;  // per input vertex: two input segments meet there at an acute angle
   std::vector<bool> collared_;  // per input segment: collared (gabriel3d_collar.h); empty without protection
+  std::vector<MirrorPair> mirror_pairs_;  // below 90 degrees, as the collars; empty unless the mirrored strategy runs
+  std::set<int> images_;                  // points placed by mirror()
 };
 
 std::optional<Stop> Refiner::budget_left() const {
@@ -170,6 +180,25 @@ std::optional<Stop> Refiner::too_close(const P3& p, int* near) const {
   return stop;
 }
 
+void Refiner::mirror(int m) {
+  if (mirror_pairs_.empty() || images_.count(m)) return;
+  const std::vector<int> on = s_.point_facets[m];
+  for (const MirrorPair& pair : mirror_pairs_) {
+    if (std::find(on.begin(), on.end(), pair.from) == on.end() || std::find(on.begin(), on.end(), pair.to) != on.end())
+      continue;
+    if (budget_left()) return;
+    ++work_;
+    const auto image = mirrored_point(s_, pair, m);
+    if (!image || s_.at.count({image->point.x(), image->point.y(), image->point.z()}) || too_close(image->point) ||
+        (protection_ && protection_->strictly_containing(image->point)))
+      continue;
+    const int id = insert_in_facet(s_, pair.to, image->point, image->lt, image->loc, image->li);
+    images_.insert(id);
+    ++steiner_on_facets;
+    inserted(id);
+  }
+}
+
 void Refiner::inserted(int m) {
   index_.add(m);
 #ifdef NONOBTUSE_CHECK_INVARIANTS
@@ -208,6 +237,7 @@ std::optional<Stop> Refiner::split(const Key& sub, bool always, bool* inserted_p
   if (greedy) ++greedy_splits;
   *inserted_point = true;
   inserted(id);
+  mirror(id);
   return std::nullopt;
 }
 
@@ -266,9 +296,7 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
   FacetCDT::Locate_type lt;
   int li = 0;
   auto loc = facet.cdt.locate(q, lt, li, fh);
-  bool inside = (lt == FacetCDT::FACE && loc->info().in_domain) ||
-                (lt == FacetCDT::EDGE && !facet.cdt.is_constrained({loc, li}) && loc->info().in_domain &&
-                 loc->neighbor(li)->info().in_domain);
+  const bool inside = strictly_in_domain(facet.cdt, lt, loc, li);
   if (hit.empty() && !inside) {
     // Outside the facet (or on its boundary): split the subsegment the circumcenter lies beyond.
     Q2 g = CGAL::centroid(va->point(), vb->point(), vc->point());
@@ -302,6 +330,7 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
   ++steiner_on_facets;
   *inserted_point = true;
   inserted(id);
+  mirror(id);
   return std::nullopt;
 }
 
@@ -323,6 +352,7 @@ std::optional<Stop> Refiner::place_protecting_points() {
     segment_sphere_points_.insert(id);
     ++steiner_on_segments;
     inserted(id);
+    mirror(id);
     return id;
   };
   split_segments_on_spheres(s_, protection_->balls(), place, [&] { return !stop; });
@@ -397,13 +427,13 @@ double smallest_subsegment(const PlcState& s) {
 namespace nonobtuse::gabriel3d {
 
 Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool ignore_frame_artifacts,
-                          bool protect) {
+                          bool protect, bool mirror) {
   PlcState s = build_plc_state(plc);
   Refine3DResult out;
   out.diagnosis.smallest_angles = smallest_input_angles(s);
   std::optional<Protection> protection;
   if (protect) protection.emplace(s, protecting_balls(s, plc));
-  Refiner refiner(s, options, ignore_frame_artifacts, protection ? &*protection : nullptr);
+  Refiner refiner(s, options, ignore_frame_artifacts, protection ? &*protection : nullptr, mirror);
   // Refine the subfacets, restrict the Delaunay tetrahedralization, check it exactly; where its boundary faces
   // differ from the subfacets (cospherical points) and are encroached, split those too and start over. After a
   // stop, the mesh is rebuilt once more so that it shows every point inserted (repair() may stop half-way).

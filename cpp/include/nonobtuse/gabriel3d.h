@@ -57,7 +57,10 @@ struct PLC3 {
 // apex vertex (an input segment leaning over a facet through its end at less than 90 degrees): radius a power of
 // two <= 1/4 of the vertex's local feature size, each segment through the apex split on the ball's sphere, and
 // subfacet split points that would fall strictly inside a ball moved to its sphere (see refine_gabriel).
-enum class SplitRule : std::int8_t { Midpoint = 0, Shells = 1, Greedy = 2, Protected = 3 };
+// Mirrored: Protected plus mirrored facet meshes: a point placed on a facet near an input segment where it meets
+// another facet at a dihedral angle below 90 degrees is also placed at its mirror image on that facet (see
+// refine_gabriel and cpp/src/gabriel3d_mirror.h).
+enum class SplitRule : std::int8_t { Midpoint = 0, Shells = 1, Greedy = 2, Protected = 3, Mirrored = 4 };
 
 struct Refine3DProgress {
   long steiner_points = 0;
