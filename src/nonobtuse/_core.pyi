@@ -526,7 +526,7 @@ class Refine3DResult:
     @property
     def strategy(self) -> str:
         """
-        'shells', 'greedy', 'midpoint', 'protected', 'mirrored', or '<rule>+protected' / '<rule>+protected+mirrored' after a fallback
+        'shells', 'greedy', 'midpoint', 'protected', 'mirrored', or '<rule>+protected' after the fallback
         """
     @property
     def tet_regions(self) -> numpy.typing.NDArray[numpy.float64]:
