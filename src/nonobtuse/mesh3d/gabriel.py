@@ -252,10 +252,11 @@ def refine_gabriel(
     vertex (an input segment leaning over a facet through its end at less than 90 degrees; radius a power of
     two <= 1/4 of the vertex's local feature size), each segment through an apex split on its ball's sphere,
     and subfacet split points strictly inside a ball moved to its sphere, which ends the cascade down small
-    segment-facet angles. split="mirrored" runs the protected strategy plus mirrored facet meshes (a point placed
-    on a facet whose foot lies on a segment where it meets another facet below 90 degrees also goes to its image
-    on that facet, verified exactly: gabriel3d_mirror.h); it is no default fallback, since it converged on none
-    of the inputs the protected rerun fails on. split="protected" or "mirrored" runs only that strategy; protected_fallback=False returns the first pass
+    segment-facet angles. split="mirrored" runs the protected strategy plus mirrored facet meshes (a point
+    placed on a facet whose foot lies on a segment where it meets another facet below 90 degrees also goes to
+    its image on that facet, verified exactly: gabriel3d_mirror.h); it is no default fallback, since it
+    converged on none of the inputs the protected rerun fails on. split="protected" or "mirrored" runs only
+    that strategy; protected_fallback=False returns the first pass
     as it ended. stats["strategy"] names the strategy of the returned mesh ("shells", ..., or
     "shells+protected" after the fallback), stats["other_attempt"] the status and stop reason of the attempt
     not returned ("" when one ran), stats["protecting_balls"] the
