@@ -128,10 +128,52 @@ def test_protecting_ball_below_min_length_is_a_diagnosed_stop():
     assert "leaves a protecting ball" in res.stats["diagnosis"]["stop_reason"]
 
 
-def test_step_off_names_the_protecting_ball_below_min_length():
-    path = DATA / "step.off"
-    if not path.exists():
+def shared_plc(name: str) -> PLC:
+    """The file of ../shared/data/3d, loaded; skips the test when the shared data is absent."""
+    if not (DATA / name).exists():
         pytest.skip("../shared/data not present")
-    res = refine_gabriel(load_plc(path), split="protected")
+    return load_plc(DATA / name)
+
+
+def diagonal(plc: PLC) -> float:
+    return float(np.linalg.norm(plc.points.max(axis=0) - plc.points.min(axis=0)))
+
+
+def test_step_off_names_the_protecting_ball_below_min_length():
+    # step.off's near-duplicate vertices (6e-4 apart, 2e-7 of its diagonal) give balls of radius 1.2e-4, below
+    # the first pass's min_length (1e-6 of the diagonal, 3e-3).
+    plc = shared_plc("step.off")
+    res = refine_gabriel(plc, split="protected", min_length=1e-6 * diagonal(plc))
     assert res.status == "min_length_reached"
     assert "leaves a protecting ball" in res.stats["diagnosis"]["stop_reason"]
+
+
+def test_protected_rerun_has_limits_of_its_own_unless_given():
+    # Left to the defaults, the fallback's protected rerun gets 4 times the Steiner budget (10 n + 10,000)
+    # and 1/1000 of the min_length (1e-6 of the bounding box diagonal); explicit limits are kept as given, and
+    # split="protected" alone keeps the shared defaults.
+    plc = make_plc("segment_facet", 5.0)  # shells end at min_length, the protected rerun converges
+    n, diag = len(plc.points), diagonal(plc)
+    res = refine_gabriel(plc)
+    assert res.stats["strategy"] == "shells+protected"
+    assert res.stats["max_steiner"] == 4 * (10 * n + 10_000)
+    assert res.stats["min_length"] == pytest.approx(1e-9 * diag, rel=1e-12)
+    given = refine_gabriel(plc, max_steiner=5_000, min_length=1e-5 * diag)
+    assert given.stats["strategy"] == "shells+protected"
+    assert given.stats["max_steiner"] == 5_000 and given.stats["min_length"] == 1e-5 * diag
+    alone = refine_gabriel(plc, split="protected")
+    assert alone.stats["max_steiner"] == 10 * n + 10_000
+    assert alone.stats["min_length"] == pytest.approx(1e-6 * diag, rel=1e-12)
+
+
+def test_u_off_converges_through_the_protected_rerun():
+    # The shared u.off has needle facets: segment-facet angles of 0.067 degrees at 4 apices, balls of radius
+    # 2^-8, so segment and facet are r sin(theta) = 4.6e-6 apart outside the balls. The protected rerun
+    # converges with about 21,600 points (2x the first Steiner budget; closest points 2e-7 apart, 1.7e-7
+    # of the diagonal, below the first pass's min_length); shells alone end at their Steiner budget.
+    plc = shared_plc("u.off")
+    res = refine_gabriel(plc)
+    assert_certified(res, plc)
+    assert res.stats["strategy"] == "shells+protected"
+    assert res.stats["other_attempt"].startswith("shells: budget_exhausted")
+    assert res.stats["steiner_points"] > 10 * len(plc.points) + 10_000  # more than the first pass's budget

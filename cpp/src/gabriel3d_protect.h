@@ -67,7 +67,8 @@ void split_segments_on_spheres(const PlcState& s, const std::vector<ProtectingBa
 
 // The protected strategy's split point for a point c strictly inside `ball` (apex on `facet`): on the ball's sphere
 // (see the termination argument at the definition). segment_sphere_points: the points where segments leave balls
-// (split_segments_on_spheres); arc_points: those placed on spheres by this rule before. nullopt when c is the apex.
+// (split_segments_on_spheres); arc_points: those placed on spheres by this rule before. nullopt when c is the apex or within
+// 2^-26 r of it (exact comparison; its direction from the apex is then rounding noise).
 std::optional<P3> arc_split_point(const PlcState& s, const Facet& facet, const ProtectingBall& ball, const P3& c,
                                   const std::set<int>& segment_sphere_points, const std::set<int>& arc_points);
 

@@ -70,10 +70,28 @@ Refine3DResult refine_with(const PLC3& plc, const Refine3DOptions& options, bool
   return second;
 }
 
+// The protected rerun's limits where the caller left them to the defaults (`given`; `resolved` has them resolved
+// for the first pass). The protected split rules keep new points off the input's features by sizes those features
+// bound (at arc_split_point, gabriel3d_protect.cpp: a segment and a facet through an apex at angle theta, outside the
+// apex's ball of radius r, at least r sin(theta) apart; and at collar_split_point), so min_length is a safety net
+// there, not what ends a cascade: 1e-9 of the bounding box diagonal instead of 1e-6. Such inputs also need points in
+// proportion to 1 / theta along the segment (pieces ~ r sin(theta) near the ball, growing linearly away from the
+// apex), which the default Steiner budget (10 n + 10,000) does not leave: 4 times that. Measured on the shared u.off
+// (needle facets: segment-facet angles of 0.067 degrees at 4 apices, r sin(theta) = 4.6e-6): the protected rerun
+// converges with 21,584 points (smallest subsegment 4.4e-6, closest points 2.0e-7 = 1.7e-7 of the diagonal, 1.9e6
+// work units), where the shared limits stopped it at max_steiner (10,860). The work budget still bounds the pass.
+// Only the fallback gets these limits: a protected run that does not converge spends up to 4 times the points, and
+// split="protected" alone is the study setting of the termination map, most of whose protected cases end at a limit.
+Refine3DOptions protected_limits(const Refine3DOptions& given, Refine3DOptions resolved) {
+  if (given.max_steiner < 0) resolved.max_steiner *= 4;
+  if (given.min_length < 0) resolved.min_length *= 1e-3;
+  return resolved;
+}
+
 }  // namespace
 
 // The fast first pass with the requested rule; where it does not converge, the protected strategy from the input
-// (with the same Steiner budget, a work budget of its own and the time left), whose result is returned if it
+// (with its own limits, protected_limits, and the time left), whose result is returned if it
 // converged; else the first pass's, which costs no more points than before the fallback existed. split == Protected
 // or Mirrored runs only that strategy. The mirrored strategy (protected plus mirrored facet meshes along
 // small-dihedral segments, gabriel3d_mirror.h) is not a default fallback: measured as a third pass it converged on
@@ -91,7 +109,7 @@ Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& given) {
   auto summary = [](const Refine3DResult& r) {
     return r.strategy + ": " + to_string(r.status) + " (" + r.diagnosis.stop_reason + ")";
   };
-  Refine3DOptions rest = options;
+  Refine3DOptions rest = protected_limits(given, options);
   rest.split = SplitRule::Shells;
   rest.time_limit = std::max(0.0, options.time_limit - first.seconds);
   Refine3DResult second = refine_with(plc, rest, true, false);

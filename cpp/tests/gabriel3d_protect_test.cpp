@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 #include <tuple>
 #include <vector>
 
@@ -102,6 +103,23 @@ TEST(Gabriel3DProtect, OntoSphereMovesAlongTheRay) {
   ASSERT_TRUE(p.has_value());
   EXPECT_EQ(*p, P3(1, 2, 3.5));
   EXPECT_FALSE(onto_sphere(P3(1, 2, 3), 0.5, P3(1, 2, 3)).has_value());
+}
+
+TEST(Gabriel3DProtect, ArcSplitPointRefusesAPointWhoseDirectionFromTheApexIsRounding) {
+  // The foot (-0.25, 0.0625, -1) on the bottom facet z = -1, ball radius 0.125. A split point one ulp above the foot
+  // has the direction +z from it: moved along that ray it would land at z = -0.875, r off the facet's plane. It is
+  // refused, as the foot itself is; a point 0.01 from the foot in the plane goes on the sphere, in the plane.
+  PLC3 plc = box_with_segments(5.0, {0.0});
+  PlcState s = build_plc_state(plc);
+  const auto balls = protecting_balls(s, plc);
+  ASSERT_EQ(balls.size(), 1u);
+  const Facet& bottom = *s.facets[s.point_facets[8].at(0)];
+  const std::set<int> none;
+  EXPECT_FALSE(arc_split_point(s, bottom, balls[0], P3(-0.25, 0.0625, std::nextafter(-1.0, 0.0)), none, none));
+  EXPECT_FALSE(arc_split_point(s, bottom, balls[0], P3(-0.25, 0.0625, -1.0), none, none));
+  const auto y = arc_split_point(s, bottom, balls[0], P3(-0.24, 0.0625, -1.0), none, none);
+  ASSERT_TRUE(y);
+  EXPECT_EQ(*y, P3(-0.125, 0.0625, -1.0));
 }
 
 // Three segments at 3 degrees to the bottom facet, 10 degrees apart in azimuth: the protected strategy converges,

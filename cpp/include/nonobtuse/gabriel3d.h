@@ -153,8 +153,10 @@ struct Refine3DResult {
 // (volume_mesh says so). status == Converged iff the exact check of the returned mesh passes. The facets' boundary
 // edges count as segments (their subsegments are returned and checked).
 // Strategy: the pass with options.split first; when it ends without converging (and time is left, and
-// protected_fallback is set), the protected strategy (SplitRule::Protected) runs from the input with the same
-// max_steiner, its own max_work and the rest of time_limit; its result is returned if it converged, else the first pass's
+// protected_fallback is set), the protected strategy (SplitRule::Protected) runs from the input with its own
+// max_steiner and min_length (4 times and 1/1000 of the defaults where those are left to them: protected_limits in
+// gabriel3d_strategy.cpp; not for split == Protected alone), its own max_work and the rest of time_limit; its
+// result is returned if it converged, else the first pass's
 // (strategy and other_attempt say which). Protecting balls keep the split points of a
 // segment and a facet meeting at a small angle off the apex, which ends the cascade there (the termination argument
 // and what it does not cover are at arc_split_point in gabriel3d_protect.cpp).

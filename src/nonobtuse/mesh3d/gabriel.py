@@ -248,15 +248,17 @@ def refine_gabriel(
     stats["greedy_splits"] counts the greedy points), then encroached subfacets at their circumcenter, unless
     it encroaches a subsegment of the facet or lies outside the facet, in which case that subsegment is
     split. When that pass does not converge (and time_limit has time left), the protected strategy runs from
-    the input with the same budget, and its result is returned if it converged: protecting balls at every apex
-    vertex (an input segment leaning over a facet through its end at less than 90 degrees; radius a power of
-    two <= 1/4 of the vertex's local feature size), each segment through an apex split on its ball's sphere,
-    and subfacet split points strictly inside a ball moved to its sphere, which ends the cascade down small
-    segment-facet angles. split="mirrored" runs the protected strategy plus mirrored facet meshes (a point
-    placed on a facet whose foot lies on a segment where it meets another facet below 90 degrees also goes to
-    its image on that facet, verified exactly: gabriel3d_mirror.h); it is no default fallback, since it
-    converged on none of the inputs the protected rerun fails on. split="protected" or "mirrored" runs only
-    that strategy; protected_fallback=False returns the first pass
+    the input, and its result is returned if it converged (where max_steiner and min_length are left to the
+    defaults, this rerun gets 4 times the Steiner budget and 1/1000 of the min_length: its split
+    rules bound the sizes by the input's features, and small angles need points in proportion to 1 / angle):
+    protecting balls at every apex vertex (an input segment leaning over a facet through its end at less
+    than 90 degrees; radius a power of two <= 1/4 of the vertex's local feature size), each segment through
+    an apex split on its ball's sphere, and subfacet split points strictly inside a ball moved to its sphere,
+    which ends the cascade down small segment-facet angles. split="mirrored" runs the protected strategy
+    plus mirrored facet meshes (a point placed on a facet whose foot lies on a segment where it meets another
+    facet below 90 degrees also goes to its image on that facet, verified exactly: gabriel3d_mirror.h); it
+    is no default fallback, since it converged on none of the inputs the protected rerun fails on.
+    split="protected" or "mirrored" runs only that strategy; protected_fallback=False returns the first pass
     as it ended. stats["strategy"] names the strategy of the returned mesh ("shells", ..., or
     "shells+protected" after the fallback), stats["other_attempt"] the status and stop reason of the attempt
     not returned ("" when one ran), stats["protecting_balls"] the
