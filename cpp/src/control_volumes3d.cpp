@@ -186,13 +186,24 @@ void dual_area_intervals(const std::vector<Point3>& p, const std::vector<std::ar
   }
 }
 
-// Exact (no division): one fraction over the product of the dens, whose sign is the numerator's. `pieces` in
-// (tet, frame) order.
+// Exact: each piece as an exact fraction num / den first; their sum in intervals around those (as tight as
+// doubles go) decides most edges the filter left; otherwise one fraction over the product of the dens (no
+// division), whose sign is the numerator's. Putting the pieces over one denominator multiplies numbers that grow
+// with every piece, the most of the exact arithmetic. `pieces` in (tet, frame) order.
 int dual_area_exact_sign(const std::vector<Point3>& p, const std::vector<std::array<int, 4>>& tets,
                          const std::vector<int>& pieces) {
-  Exact num(0), den(1);
+  std::vector<Fraction<Exact>> exact;
+  exact.reserve(pieces.size());
+  CGAL::Interval_nt<> tight(0);  // protected: sets and restores the rounding mode per operation
   for (int q : pieces) {
-    auto x = piece_fraction<Exact>(p, tets, q);
+    exact.push_back(piece_fraction<Exact>(p, tets, q));
+    tight += CGAL::Interval_nt<>(CGAL::to_interval(exact.back().num)) /
+             CGAL::Interval_nt<>(CGAL::to_interval(exact.back().den));
+  }
+  if (tight.inf() > 0) return 1;
+  if (tight.sup() < 0) return -1;
+  Exact num(0), den(1);
+  for (const auto& x : exact) {
     num = num * x.den + x.num * den;
     den = den * x.den;
   }
