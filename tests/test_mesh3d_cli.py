@@ -40,6 +40,16 @@ def test_check3d_gabriel_cube_exits_0(cube, capsys):
     assert out["encroached_facets"] == 0 and out["encroached_segments"] == 0 and out["gabriel"]["ok"]
 
 
+def test_check3d_keeps_freed_memory_on_glibc():
+    import platform
+
+    from nonobtuse.cli.mesh3d import keep_freed_memory
+
+    if platform.libc_ver()[0] != "glibc":
+        pytest.skip("mallopt is glibc's")
+    assert keep_freed_memory()
+
+
 def test_check3d_encroached_exits_1(low_tet, capsys):
     assert main(["check3d", str(low_tet), "--backend", "tetgen"]) == EXIT_VIOLATIONS
     assert "boundary faces        1 of 4 encroached" in capsys.readouterr().out  # the base

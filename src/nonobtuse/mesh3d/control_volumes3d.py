@@ -137,7 +137,7 @@ def control_volumes3d(mesh: TetMesh) -> ControlVolumes3D:
     (``_core.control_volumes3d``) computes it all in one pass: the magnitudes with the arithmetic of
     :func:`dual_area_pieces` and :func:`tet_voronoi_shares`, operation for operation, summed in tet order.
     Cost: O(t) for t tets (a counting sort of the 6 t edge pieces), plus exact arithmetic for the edges the
-    interval filter cannot decide (dual areas that are zero or nearly so: 333k of 7.3M edges on the 1e6-face
+    interval filter cannot decide (dual areas that are zero or nearly so: 262k of 7.3M edges on the 1e6-face
     torus of ``bench_gabriel3d``, whose cross-sections are nearly cocircular).
     """
     points = np.ascontiguousarray(mesh.points, dtype=np.float64).reshape(-1, 3)
