@@ -11,6 +11,7 @@
 #include "nonobtuse/check2d.h"
 #include "nonobtuse/refine2d.h"
 #include "quality2d.h"
+#include "quality2d_boundary.h"
 
 namespace nonobtuse {
 namespace {
