@@ -8,6 +8,7 @@
 #include "quality2d.h"
 #include "refine2d_strategies.h"
 #include "split_point.h"
+#include "stop_reason2d.h"
 
 namespace nonobtuse {
 namespace {
@@ -105,6 +106,7 @@ Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options, Tri
              : r.obtuse_boundary_sides > 0 && st.budget_left()         ? RefineStatus::Stalled
              : r.obtuse_boundary_sides > 0 || !budgets_left            ? RefineStatus::BudgetExhausted
                                                                         : RefineStatus::Stalled;
+  r.diagnosis.stop_reason = refine2d::stop_reason(r, options.quality.enabled());
   if (r.quality.boundary_splits > 0)
     r.optimal = -1;  // interior quality asked for more boundary points than the boundary problem needs
   else if (r.status == RefineStatus::Converged && r.steiner_points == r.lower_bound)

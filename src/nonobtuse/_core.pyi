@@ -289,6 +289,11 @@ class Refine2DDiagnosis:
     @property
     def propagation_splits(self) -> int:
         ...
+    @property
+    def stop_reason(self) -> str:
+        """
+        why the refinement stopped, in refine_gabriel's words (a budget by its option's name)
+        """
 class Refine2DResult:
     """
     What refine returns (read-only; see nonobtuse.refine).

@@ -48,7 +48,11 @@ class RefineResult:
             its closest constraint ``neighbour`` at ``vertex``), ``initial_violations`` (violated subsegments
             that started a cascade), ``propagation_depth`` (the most distinct input edges one initial
             violation put Steiner points on) and ``propagation_splits`` (the most Steiner points it caused);
-            propagation is tracked by the greedy strategy only. ``interior_points`` (int: Steiner points
+            propagation is tracked by the greedy strategy only; ``stop_reason`` (str: why it stopped, in
+            :func:`~nonobtuse.mesh3d.refine_gabriel`'s words: ``"every boundary side has a nonobtuse apex"``
+            (with a quality option ``"... and every triangle meets the quality bounds outside small input
+            angles"``), ``"max_steiner (N) reached"``, ``"max_interior (N) reached"``, or what is left that no
+            split fixes when stalled). ``interior_points`` (int: Steiner points
             inside the domain, 0 unless a quality option is given; ``steiner_points`` counts those on
             constraints), ``quality``: None, or with a quality option the dict of :func:`_quality_stats`.
     status: ``"converged"``, ``"budget_exhausted"`` or ``"stalled"`` (budget left, but a violated side
@@ -96,6 +100,7 @@ def _diagnosis(g: _core.Refine2DDiagnosis) -> dict[str, Any]:
         "initial_violations": g.initial_violations,
         "propagation_depth": g.propagation_depth,
         "propagation_splits": g.propagation_splits,
+        "stop_reason": g.stop_reason,
     }
 
 

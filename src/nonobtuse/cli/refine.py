@@ -18,6 +18,14 @@ from nonobtuse.refinement import MAX_MIN_ANGLE, STRATEGIES, default_steiner_budg
 PER_EDGE_KEYS = ("edges", "diagnosis")  # in --json only with --verbose: one entry per input edge
 
 
+def summary(stats: dict) -> dict:
+    """The --json summary without --verbose: ``stats`` without the per-edge keys, but with the diagnosis's
+    ``stop_reason`` (as ``{"diagnosis": {"stop_reason": ...}}``, where refine3d's JSON has it)."""
+    out = {k: v for k, v in stats.items() if k not in PER_EDGE_KEYS}
+    out["diagnosis"] = {"stop_reason": stats["diagnosis"]["stop_reason"]}
+    return out
+
+
 def register(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "refine",
@@ -103,12 +111,13 @@ def run(args: argparse.Namespace) -> int:
                  quiet=args.quiet)
     s = result.stats
     if args.json:
-        json.dump(s if args.verbose else {k: v for k, v in s.items() if k not in PER_EDGE_KEYS}, sys.stdout)
+        json.dump(s if args.verbose else summary(s), sys.stdout)
         print()
     elif not args.quiet:
         print(
-            f"{args.input}: {s['status']}, {s['steiner_points']} Steiner points ({args.strategy}), "
-            f"lower bound {s['lower_bound']}, optimal {s['optimal']}, {s['seconds']:.3f} s -> {args.output}"
+            f"{args.input}: {s['status']} ({s['diagnosis']['stop_reason']}), {s['steiner_points']} Steiner "
+            f"points ({args.strategy}), lower bound {s['lower_bound']}, optimal {s['optimal']}, "
+            f"{s['seconds']:.3f} s -> {args.output}"
         )
         if s["quality"] is not None:
             q = s["quality"]
