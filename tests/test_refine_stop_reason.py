@@ -6,24 +6,13 @@ from __future__ import annotations
 
 import re
 
-import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import nonobtuse
-from nonobtuse import Domain
+from refine_helpers import star
 
 CONVERGED = "every boundary side has a nonobtuse apex"
-
-
-def star(seed: int, n: int) -> Domain:
-    """A star-shaped polygon, radii in [100, 1000] (small input angles likely; star(5, 14) needs 3 Steiner
-    points)."""
-    rng = np.random.default_rng(seed)
-    a = 2 * np.pi / n * (np.arange(n) + rng.uniform(0, 0.5, n))
-    rad = rng.uniform(100, 1000, n)
-    segments = [(i, (i + 1) % n) for i in range(n)]
-    return Domain(points=np.c_[rad * np.cos(a), rad * np.sin(a)], segments=segments)
 
 
 def check_reason(res: nonobtuse.RefineResult) -> str:

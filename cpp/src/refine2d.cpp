@@ -68,7 +68,8 @@ Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options, Tri
   // With a quality option the greedy strategy's boundary is left to the quality refinement (Ruppert's midpoint
   // splits, greedy only where they fail; quality2d.cpp says why): the minimal boundary's short pieces would
   // force the interior to match them.
-  const bool boundary_by_quality = options.quality.enabled() && options.strategy == RefineStrategy::Greedy;
+  const bool boundary_by_quality = options.quality.enabled() && options.strategy == RefineStrategy::Greedy &&
+                                   !options.quality.minimal_boundary_first;
   if (!boundary_by_quality) run();
   // Rescue: a side can be left violated when no double point near the strategy's choice passes its exact checks
   // (greedy: every candidate lands in a subsegment's disk; any strategy: the point coincides with a vertex).

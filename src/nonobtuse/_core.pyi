@@ -175,6 +175,14 @@ class Quality2DOptions:
     def min_angle_degrees(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
+    def minimal_boundary_first(self) -> bool:
+        """
+        greedy strategy: the minimal boundary before the quality refinement (default False: Triangle's midpoints and shells by the quality refinement)
+        """
+    @minimal_boundary_first.setter
+    def minimal_boundary_first(self, arg0: bool) -> None:
+        ...
+    @property
     def region_max_area(self) -> list[tuple[float, float]]:
         """
         [(attribute, area), ...]
