@@ -119,7 +119,8 @@ def main() -> None:
         w.writerows(rows)
     ratios = np.array([r["vertex_ratio"] for r in rows])
     fewer = sum(r["boundary_steiner"] < r["tri_boundary_steiner"] for r in rows)
-    tied = [f"{r['input']} {r['degrees']:g}" for r in rows if r["boundary_steiner"] == r["tri_boundary_steiner"]]
+    tied = [f"{r['input']} {r['degrees']:g}" for r in rows
+            if r["boundary_steiner"] == r["tri_boundary_steiner"]]
     more = sum(r["boundary_steiner"] > r["tri_boundary_steiner"] for r in rows)
     print(f"vertex ratio ours / Triangle: median {np.median(ratios):.3f}, max {ratios.max():.3f}; boundary "
           f"Steiner points fewer on {fewer} of {len(rows)}, more on {more}, equal on {len(tied)} "
