@@ -145,17 +145,26 @@ def _run_core(domain: Domain, strategy: str, max_steiner: int, threads: int, qua
               quality_boundary: str) -> tuple[_core.Refine2DResult, float, str]:
     """The core's refinement of the validated ``domain``, with :func:`refine`'s ``quality_boundary`` rule (one
     run, or two and the one :func:`_fewer_boundary_points` prefers): the result, the seconds of every run, and
-    the boundary mode of the result (``"midpoints"`` or ``"minimal"``)."""
-    def run(triangulation: Any) -> _core.Refine2DResult:
-        return _core.refine(domain.points, domain.segments, domain.holes, domain.regions,
-                            bool(domain.convex_hull), strategy, max_steiner, threads, quality, triangulation)
+    the boundary mode of the result (``"midpoints"`` or ``"minimal"``). After a converged first run the second
+    gets budgets just above what it could be kept with (fewer boundary points than the first's, at most its
+    vertices), so it stops early where its short pieces draw a cascade (the demo section at 30 degrees: 6,038
+    vertices unbounded); a budget it reaches makes it ``budget_exhausted``, never kept."""
+    def run(triangulation: Any, steiner_budget: int) -> _core.Refine2DResult:
+        d = domain
+        return _core.refine(d.points, d.segments, d.holes, d.regions, bool(d.convex_hull), strategy,
+                            steiner_budget, threads, quality, triangulation)
 
     quality.minimal_boundary_first = quality_boundary == "minimal"
-    r = run(kept_triangulation(domain))
+    r = run(kept_triangulation(domain), max_steiner)
     seconds, boundary = r.seconds, "minimal" if quality_boundary == "minimal" else "midpoints"
     if quality.enabled() and strategy == "greedy" and quality_boundary == "best" and r.steiner_points > 0:
         quality.minimal_boundary_first = True
-        other = run(None)
+        steiner_budget = max_steiner
+        if r.status == CONVERGED:  # kept only with at most r.steiner_points - 1 and r's vertices
+            steiner_budget = r.steiner_points
+            limit = r.quality.interior_points + r.steiner_points + 1
+            quality.max_interior = min(r.quality.interior_budget, limit)
+        other = run(None, steiner_budget)
         seconds += other.seconds
         if _fewer_boundary_points(other, r):
             r, boundary = other, "minimal"
@@ -293,7 +302,9 @@ def refine(
                  greedy boundary first, then the quality refinement splits what the interior encroaches), or
                  ``"best"`` (default): midpoints, then, when that placed any boundary point, minimal too, and
                  the minimal run is kept when it converged with strictly fewer boundary points and no more
-                 vertices (or converged where the other did not); at most twice the cost.
+                 vertices (or converged where the other did not). Its second run is capped by the
+                 first's counts; measured CPU time against ``"midpoints"``: 2.0x to 2.4x (la.poly,
+                 10,000-vertex polygon and star), 3.8x on the small demo section (0.040 s against 0.011 s).
                  ``stats["quality"]["boundary"]`` says which was returned.
 
     Guarantees: Steiner points lie on constraint subsegments (exactly on the line when a double point there

@@ -86,7 +86,7 @@ def add_quality_options(p: argparse.ArgumentParser) -> None:
                    help="interior point budget (default 10 n + 100000 + 4 area / smallest area limit)")
     g.add_argument("--quality-boundary", choices=QUALITY_BOUNDARIES, default="best",
                    help="greedy strategy: Triangle's midpoints, the minimal boundary first, or the better of "
-                   "the two (default best: up to two runs)")
+                   "the two (default best: two runs, about twice the time)")
 
 
 def _size(args: argparse.Namespace) -> dict[float, float] | str | None:
