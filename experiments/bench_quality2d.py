@@ -8,7 +8,8 @@ every triangle). Triangle gets the same points, segments and holes, with -pq<deg
 area bound). Boundary Steiner points are counted the same way for both tools: output vertices beyond the
 input's that lie on an output segment (ours is checked against refine's stats["steiner_points"]).
 Our smallest angle is the one outside small-input-angle regions (triangles there are left alone, as Triangle
-does), and both counts are given.
+does), and both counts are given. boundary_mode: which boundary refine kept (its quality_boundary="best":
+"midpoints" or "minimal").
 
     PYTHONPATH=src .venv/bin/python -m experiments bench_quality2d [--out DIR]
 
@@ -73,7 +74,7 @@ def ours(d: Domain, degrees: float) -> dict:
                            f"stats say {r.stats['steiner_points']} Steiner points")
     return {"status": r.status, "certificate": r.stats["obtuse_boundary_sides"],
             "vertices": len(r.mesh.points), "boundary_steiner": boundary_steiner,
-            "interior": r.stats["interior_points"],
+            "interior": r.stats["interior_points"], "boundary_mode": q["boundary"],
             "min_angle_outside": round(q["min_angle_outside_small_angles_degrees"], 3),
             "min_angle": round(q["min_angle_degrees"], 3),
             "small_angle_triangles": q["small_angle_triangles"],
@@ -118,8 +119,12 @@ def main() -> None:
         w.writerows(rows)
     ratios = np.array([r["vertex_ratio"] for r in rows])
     fewer = sum(r["boundary_steiner"] < r["tri_boundary_steiner"] for r in rows)
+    tied = [f"{r['input']} {r['degrees']:g}" for r in rows
+            if r["boundary_steiner"] == r["tri_boundary_steiner"]]
+    more = sum(r["boundary_steiner"] > r["tri_boundary_steiner"] for r in rows)
     print(f"vertex ratio ours / Triangle: median {np.median(ratios):.3f}, max {ratios.max():.3f}; boundary "
-          f"Steiner points fewer on {fewer} of {len(rows)} -> {path}")
+          f"Steiner points fewer on {fewer} of {len(rows)}, more on {more}, equal on {len(tied)} "
+          f"({', '.join(tied)}) -> {path}")
 
 
 if __name__ == "__main__":

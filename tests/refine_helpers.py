@@ -1,4 +1,5 @@
-"""Shared by the refinement tests: CG:SHOP instances as domains, and an exact check of a mesh in rationals."""
+"""Shared by the refinement tests: CG:SHOP instances as domains, an exact check of a mesh in rationals, and
+random star polygons."""
 
 from __future__ import annotations
 
@@ -77,3 +78,13 @@ def non_delaunay_edges(mesh) -> int:
             (_, t), (d, _) = sides
             bad += incircle(p[t[0]], p[t[1]], p[t[2]], p[d]) > 0
     return bad
+
+
+def star(seed: int, n: int) -> Domain:
+    """A star-shaped polygon, radii in [100, 1000] (small input angles likely; star(5, 14) needs 3 Steiner
+    points)."""
+    rng = np.random.default_rng(seed)
+    a = 2 * np.pi / n * (np.arange(n) + rng.uniform(0, 0.5, n))
+    rad = rng.uniform(100, 1000, n)
+    segments = [(i, (i + 1) % n) for i in range(n)]
+    return Domain(points=np.c_[rad * np.cos(a), rad * np.sin(a)], segments=segments)

@@ -157,6 +157,13 @@ def test_cli_min_angle_max_area(tmp_path, capsys) -> None:
     s = json.loads(capsys.readouterr().out)
     assert s["status"] == "converged" and s["quality"]["max_area"] <= 0.1 and s["interior_points"] > 0
     assert s["quality"]["min_angle_degrees"] >= 30 - 1e-9
+    reason = "every boundary side has a nonobtuse apex and every triangle meets the quality bounds outside"
+    assert s["diagnosis"] == {"stop_reason": reason + " small input angles"} and "edges" not in s
+    assert main(["refine", str(src), "-o", str(out), "--max-area", "0.1", "--max-interior", "2"]) == 3
+    assert "budget_exhausted (max_interior (2) reached)" in capsys.readouterr().out  # the summary line
+    assert main(["refine", str(src), "-o", str(out), "--min-angle", "30", "--quality-boundary", "minimal",
+                 "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["quality"]["boundary"] == "minimal"
     with pytest.raises(SystemExit) as exit_info:  # argparse refuses it
         main(["refine", str(src), "-o", str(out), "--region-area", "x=1"])
     assert exit_info.value.code == 2

@@ -81,7 +81,7 @@ def test_a_fan_of_dangling_segments_is_cut_at_shells(seed: int, k: int) -> None:
     acute neighbour is halved, as Triangle does when no other segment is near.) The run converges with the
     certificate clean and every triangle outside the small angles at the bound."""
     d, ends = fan(seed, k)
-    r = nonobtuse.refine(d, min_angle=25)
+    r = nonobtuse.refine(d, min_angle=25, quality_boundary="midpoints")
     assert r.converged and r.stats["obtuse_boundary_sides"] == 0
     assert r.stats["quality"]["min_angle_outside_small_angles_degrees"] >= 25 - 1e-9
     added = r.mesh.points[len(d.points):]

@@ -19,6 +19,9 @@ void bind_quality2d(py::module_& m) {
       .def_readwrite("max_area", &Quality2DOptions::max_area, "<= 0: none")
       .def_readwrite("region_max_area", &Quality2DOptions::region_max_area, "[(attribute, area), ...]")
       .def_readwrite("max_interior", &Quality2DOptions::max_interior, "< 0: default_interior_budget")
+      .def_readwrite("minimal_boundary_first", &Quality2DOptions::minimal_boundary_first,
+                     "greedy strategy: the minimal boundary before the quality refinement (default False: "
+                     "Triangle's midpoints and shells by the quality refinement)")
       .def("enabled", &Quality2DOptions::enabled, "whether any criterion is set")
       .def(
           "set_max_area_at",

@@ -47,6 +47,8 @@ void bind_result_classes(py::module_& m) {
       .def_readonly("initial_violations", &Refine2DDiagnosis::initial_violations)
       .def_readonly("propagation_depth", &Refine2DDiagnosis::propagation_depth)
       .def_readonly("propagation_splits", &Refine2DDiagnosis::propagation_splits)
+      .def_readonly("stop_reason", &Refine2DDiagnosis::stop_reason,
+                    "why the refinement stopped, in refine_gabriel's words (a budget by its option's name)")
       .def("__repr__", [](const Refine2DDiagnosis& g) {
         return "<Refine2DDiagnosis initial_violations=" + std::to_string(g.initial_violations) +
                " propagation_depth=" + std::to_string(g.propagation_depth) + ">";

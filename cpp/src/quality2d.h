@@ -10,14 +10,6 @@ namespace nonobtuse::refine2d {
 // is not there (a vertex, a constrained edge, outside located). Cost: the Delaunay cavity of p.
 Vertex_handle insert_interior(State& st, const Point& p, Face_handle located);
 
-// Triangle's concentric shell for a split of the subsegment [s, e] from the acute junction s: the smallest power of
-// two 2^k >= |e - s| / 3 (so 2^k < 2 |e - s| / 3: both pieces are at least a third), as a parameter of [s, e]
-// (float; 0.5 for a degenerate or overflowing length). Unlike the largest power of two at or before the
-// midpoint, a subsegment 2^(k+1) long up to rounding is halved, not cut at a quarter (measured on clusters.poly:
-// shell points a few ulps short of 2^k from the junction were split at 2^(k-2), the constraints at each small angle
-// got shells that did not match, and the run ended with 108 vertices instead of 49; Triangle 64).
-double nearest_shell(const Point& s, const Point& e);
-
 // Ruppert/Chew refinement of the domain's bad triangles (see Quality2DOptions). First every boundary side with an
 // obtuse apex is split (midpoint, or nearest_shell at an acute input angle; the greedy rule at a corner of two
 // boundary edges below 60 degrees; nothing when a strategy already refined the boundary), then circumcenters or

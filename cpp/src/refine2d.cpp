@@ -8,6 +8,7 @@
 #include "quality2d.h"
 #include "refine2d_strategies.h"
 #include "split_point.h"
+#include "stop_reason2d.h"
 
 namespace nonobtuse {
 namespace {
@@ -67,7 +68,8 @@ Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options, Tri
   // With a quality option the greedy strategy's boundary is left to the quality refinement (Ruppert's midpoint
   // splits, greedy only where they fail; quality2d.cpp says why): the minimal boundary's short pieces would
   // force the interior to match them.
-  const bool boundary_by_quality = options.quality.enabled() && options.strategy == RefineStrategy::Greedy;
+  const bool boundary_by_quality = options.quality.enabled() && options.strategy == RefineStrategy::Greedy &&
+                                   !options.quality.minimal_boundary_first;
   if (!boundary_by_quality) run();
   // Rescue: a side can be left violated when no double point near the strategy's choice passes its exact checks
   // (greedy: every candidate lands in a subsegment's disk; any strategy: the point coincides with a vertex).
@@ -105,6 +107,7 @@ Refine2DResult refine(const Domain2& domain, const Refine2DOptions& options, Tri
              : r.obtuse_boundary_sides > 0 && st.budget_left()         ? RefineStatus::Stalled
              : r.obtuse_boundary_sides > 0 || !budgets_left            ? RefineStatus::BudgetExhausted
                                                                         : RefineStatus::Stalled;
+  r.diagnosis.stop_reason = refine2d::stop_reason(r, options.quality.enabled());
   if (r.quality.boundary_splits > 0)
     r.optimal = -1;  // interior quality asked for more boundary points than the boundary problem needs
   else if (r.status == RefineStatus::Converged && r.steiner_points == r.lower_bound)

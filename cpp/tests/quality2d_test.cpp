@@ -11,6 +11,7 @@
 #include "nonobtuse/check2d.h"
 #include "nonobtuse/refine2d.h"
 #include "quality2d.h"
+#include "quality2d_boundary.h"
 
 namespace nonobtuse {
 namespace {
@@ -152,6 +153,35 @@ TEST(Quality2d, InteriorBudgetIsAStatus) {
   EXPECT_EQ(r.quality.interior_points, 10);
   EXPECT_GT(r.quality.bad_triangles, 0);
   EXPECT_EQ(r.obtuse_boundary_sides, 0);  // interior points never break the boundary
+}
+
+// cdt_ditch.poly (../shared/data/2d): a channel split by the interface (10, 11) at x = 1.27, which the input vertices
+// of both walls encroach. Its lower bound is 2 points, all on the interface. Triangle's midpoints put 3 there (as
+// Triangle -pq25D does); minimal_boundary_first gives the greedy boundary's 2, at the lower bound, and the quality
+// refinement then keeps them: every triangle reaches 25 degrees with no boundary split and the certificate holds.
+TEST(Quality2d, MinimalBoundaryFirstCanNeedFewerPoints) {
+  Domain2 d;
+  d.points = {{15.2817039560085, -35.8482583312558}, {16.9298083110526, -19.5320252163193},
+              {15.2817039560085, 0.9044687862274401}, {17.5890500530702, 18.044754078686},
+              {16.1057561335305, 40.7061889605422}, {-16.6915205318468, -35.6010426779992},
+              {-14.3017692170329, -14.9173330221958}, {-14.9610109590506, 14.006898408828},
+              {-15.0434161768028, 37.9044115569673}, {1.27281693813374, -36.0954739845124},
+              {1.27281693813374, 40.62378374279}};
+  d.segments = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {5, 6}, {6, 7}, {7, 8}, {9, 10}, {0, 9}, {5, 9}, {4, 10}, {8, 10}};
+  Quality2DOptions q;
+  q.min_angle_degrees = 25.0;
+  const Refine2DResult midpoints = run(d, q);
+  q.minimal_boundary_first = true;
+  const Refine2DResult minimal = run(d, q);
+  for (const Refine2DResult* r : {&midpoints, &minimal}) {
+    EXPECT_EQ(r->status, RefineStatus::Converged) << r->diagnosis.stop_reason;
+    EXPECT_EQ(r->obtuse_boundary_sides, 0);
+    for (const Triangle& t : r->mesh.triangles) EXPECT_GE(smallest_angle(r->mesh, t), 25.0);
+  }
+  EXPECT_EQ(minimal.lower_bound, 2);
+  EXPECT_EQ(minimal.steiner_points, minimal.lower_bound);
+  EXPECT_EQ(minimal.quality.interior_points, 0);
+  EXPECT_EQ(midpoints.steiner_points, 3);
 }
 
 TEST(Quality2d, OffByDefault) {

@@ -175,6 +175,14 @@ class Quality2DOptions:
     def min_angle_degrees(self, arg0: typing.SupportsFloat | typing.SupportsIndex) -> None:
         ...
     @property
+    def minimal_boundary_first(self) -> bool:
+        """
+        greedy strategy: the minimal boundary before the quality refinement (default False: Triangle's midpoints and shells by the quality refinement)
+        """
+    @minimal_boundary_first.setter
+    def minimal_boundary_first(self, arg0: bool) -> None:
+        ...
+    @property
     def region_max_area(self) -> list[tuple[float, float]]:
         """
         [(attribute, area), ...]
@@ -289,6 +297,11 @@ class Refine2DDiagnosis:
     @property
     def propagation_splits(self) -> int:
         ...
+    @property
+    def stop_reason(self) -> str:
+        """
+        why the refinement stopped, in refine_gabriel's words (a budget by its option's name)
+        """
 class Refine2DResult:
     """
     What refine returns (read-only; see nonobtuse.refine).

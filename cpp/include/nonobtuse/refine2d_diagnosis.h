@@ -1,5 +1,6 @@
 // Where the Steiner points of a 2D refinement went: junctions, input angles, propagation.
 #pragma once
+#include <string>
 #include <vector>
 
 #include "nonobtuse/types.h"
@@ -31,6 +32,10 @@ struct Refine2DDiagnosis {
   // most Steiner points one cause placed (greedy strategy only; 0 for the baselines).
   int propagation_depth = 0;
   long long propagation_splits = 0;
+  // Why the refinement stopped, in the 3D refinement's words (Refine3DDiagnosis::stop_reason): "every boundary
+  // side has a nonobtuse apex" (and, with quality options, the bounds met), "max_steiner (N) reached",
+  // "max_interior (N) reached", or what is left that no split fixes (stop_reason2d.cpp).
+  std::string stop_reason;
 };
 
 }  // namespace nonobtuse

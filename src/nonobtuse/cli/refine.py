@@ -13,9 +13,17 @@ from nonobtuse.cli.mesh2d import add_domain_options, load
 from nonobtuse.domain import Domain
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh import Mesh
-from nonobtuse.refinement import MAX_MIN_ANGLE, STRATEGIES, default_steiner_budget
+from nonobtuse.refinement import MAX_MIN_ANGLE, QUALITY_BOUNDARIES, STRATEGIES, default_steiner_budget
 
 PER_EDGE_KEYS = ("edges", "diagnosis")  # in --json only with --verbose: one entry per input edge
+
+
+def summary(stats: dict) -> dict:
+    """The --json summary without --verbose: ``stats`` without the per-edge keys, but with the diagnosis's
+    ``stop_reason`` (as ``{"diagnosis": {"stop_reason": ...}}``, where refine3d's JSON has it)."""
+    out = {k: v for k, v in stats.items() if k not in PER_EDGE_KEYS}
+    out["diagnosis"] = {"stop_reason": stats["diagnosis"]["stop_reason"]}
+    return out
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -76,6 +84,9 @@ def add_quality_options(p: argparse.ArgumentParser) -> None:
                    "(Triangle's -a without a number)")
     g.add_argument("--max-interior", type=guards.count, default=None, metavar="N",
                    help="interior point budget (default 10 n + 100000 + 4 area / smallest area limit)")
+    g.add_argument("--quality-boundary", choices=QUALITY_BOUNDARIES, default="best",
+                   help="greedy strategy: Triangle's midpoints, the minimal boundary first, or the better of "
+                   "the two (default best: two runs, about twice the time)")
 
 
 def _size(args: argparse.Namespace) -> dict[float, float] | str | None:
@@ -97,18 +108,19 @@ def run(args: argparse.Namespace) -> int:
     progress.start(f"refining {len(domain.points)} points, {len(domain.segments)} segments ({args.strategy})")
     result = refine(domain, strategy=args.strategy, max_steiner=args.max_steiner, threads=args.threads,
                     min_angle=args.min_angle, max_area=args.max_area,
-                    size=_size(args), max_interior=args.max_interior)
+                    size=_size(args), max_interior=args.max_interior, quality_boundary=args.quality_boundary)
     progress.done(f"{result.status}, {result.stats['steiner_points']} Steiner points; writing {args.output}")
     write_output(guards.without_timings(result.mesh, args.timings), args.output, thickness=args.thickness,
                  quiet=args.quiet)
     s = result.stats
     if args.json:
-        json.dump(s if args.verbose else {k: v for k, v in s.items() if k not in PER_EDGE_KEYS}, sys.stdout)
+        json.dump(s if args.verbose else summary(s), sys.stdout)
         print()
     elif not args.quiet:
         print(
-            f"{args.input}: {s['status']}, {s['steiner_points']} Steiner points ({args.strategy}), "
-            f"lower bound {s['lower_bound']}, optimal {s['optimal']}, {s['seconds']:.3f} s -> {args.output}"
+            f"{args.input}: {s['status']} ({s['diagnosis']['stop_reason']}), {s['steiner_points']} Steiner "
+            f"points ({args.strategy}), lower bound {s['lower_bound']}, optimal {s['optimal']}, "
+            f"{s['seconds']:.3f} s -> {args.output}"
         )
         if s["quality"] is not None:
             q = s["quality"]
