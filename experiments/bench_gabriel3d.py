@@ -17,8 +17,9 @@ Columns: input, method, status, strategy (ours: the strategy of the returned mes
 after a fallback), points, boundary_steiner (boundary-face vertices that are not input points), steiner (all
 output points that are not input points), boundary_faces, encroached_facets, encroached_segments ("n/a" for
 fTetWild, whose output does not mark segments), seconds, vs_tetgen_pq (seconds / tetgen-pq's seconds on the
-same input; refine3d's target is <= 2). CSV to bench_gabriel3d.csv (bench_gabriel3d_quick.csv
-with --quick) in --out DIR (default experiments/results), and a table on stdout.
+same input; refine3d's target is <= 2); ``--methods tetgen-pq ours`` runs only those rows. CSV to
+bench_gabriel3d.csv (bench_gabriel3d_quick.csv with --quick) in --out DIR (default experiments/results), and a
+table on stdout.
 
 ``--scaling [FACES...]``: instead, check3d end to end (a fresh ``nonobtuse check3d --json`` process) on
 jittered tori (:func:`torus_surface`) of 1e4, 1e5, 1e6 faces (or those given), with the cgal and tetgen
@@ -36,7 +37,7 @@ import argparse
 import sys
 import time
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 import numpy as np
 
@@ -50,6 +51,7 @@ ROOT = Path(__file__).resolve().parents[1]
 DATA3D = ROOT / ".." / "shared" / "data" / "3d"
 COLUMNS = ["input", "method", "status", "strategy", "points", "boundary_steiner", "steiner", "boundary_faces",
            "encroached_facets", "encroached_segments", "seconds", "vs_tetgen_pq"]
+METHODS = ("tetgen-pq", "tetgen-pD", "tetgen-pY", "ftetwild", "ours", "ours-greedy", "ours-protected")
 
 
 def measure(name: str, method: str, plc, mesh, status: str, seconds: float) -> dict[str, Any]:
@@ -121,17 +123,18 @@ def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
         return [{"input": name, "method": "-", "status": f"invalid: {str(e)[:40]}"}]
     if len(plc.triangles) > args.max_triangles:
         return [{"input": name, "method": "-", "status": f"skipped: {len(plc.triangles)} triangles"}]
-    rows = [run_backend(name, plc, "tetgen-pq", "tetgen", switches="pq1.414AQ"),
-            run_backend(name, plc, "tetgen-pD", "tetgen", switches="pDAQ"),
-            run_backend(name, plc, "tetgen-pY", "tetgen", switches="pYAQ")]
-    if len(plc.triangles) <= args.ftetwild_max_triangles:
-        rows.append(run_backend(name, plc, "ftetwild", "ftetwild"))
-    else:
-        rows.append({"input": name, "method": "ftetwild", "status": "skipped (size)"})
-    rows.append(run_ours(name, plc, args.max_steiner, args.time_limit))
-    rows.append(run_ours(name, plc, args.max_steiner, args.time_limit, split="greedy"))
-    rows.append(run_ours(name, plc, args.max_steiner, args.time_limit, split="protected"))
-    return with_time_ratios(rows)
+    runs: dict[str, Callable[[], dict[str, Any]]] = {
+        "tetgen-pq": lambda: run_backend(name, plc, "tetgen-pq", "tetgen", switches="pq1.414AQ"),
+        "tetgen-pD": lambda: run_backend(name, plc, "tetgen-pD", "tetgen", switches="pDAQ"),
+        "tetgen-pY": lambda: run_backend(name, plc, "tetgen-pY", "tetgen", switches="pYAQ"),
+        "ftetwild": lambda: (run_backend(name, plc, "ftetwild", "ftetwild")
+                             if len(plc.triangles) <= args.ftetwild_max_triangles
+                             else {"input": name, "method": "ftetwild", "status": "skipped (size)"}),
+        "ours": lambda: run_ours(name, plc, args.max_steiner, args.time_limit),
+        "ours-greedy": lambda: run_ours(name, plc, args.max_steiner, args.time_limit, split="greedy"),
+        "ours-protected": lambda: run_ours(name, plc, args.max_steiner, args.time_limit, split="protected"),
+    }
+    return with_time_ratios([runs[method]() for method in METHODS if method in args.methods])
 
 
 def with_time_ratios(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
@@ -191,6 +194,8 @@ def main(argv: list[str] | None = None) -> int:
                     help="instead: the check3d scaling rows on tori of these face counts (default 1e4 "
                          "1e5 1e6) to bench_gabriel3d_scaling.csv")
     ap.add_argument("--scaling-backends", nargs="+", default=["cgal", "tetgen"], choices=("cgal", "tetgen"))
+    ap.add_argument("--methods", nargs="+", default=list(METHODS), choices=METHODS,
+                    help="only these rows per input (vs_tetgen_pq needs tetgen-pq)")
     add_out_option(ap, "bench_gabriel3d.csv")
     args = ap.parse_args(argv)
     if args.scaling is not None:
