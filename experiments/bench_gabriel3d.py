@@ -17,8 +17,10 @@ Columns: input, method, status, strategy (ours: the strategy of the returned mes
 after a fallback), points, boundary_steiner (boundary-face vertices that are not input points), steiner (all
 output points that are not input points), boundary_faces, encroached_facets, encroached_segments ("n/a" for
 fTetWild, whose output does not mark segments), seconds, vs_tetgen_pq (seconds / tetgen-pq's seconds on the
-same input; refine3d's target is <= 2). CSV to bench_gabriel3d.csv (bench_gabriel3d_quick.csv
-with --quick) in --out DIR (default experiments/results), and a table on stdout.
+same input; refine3d's target is <= 2), cpu_seconds and cpu_vs_tetgen_pq (the same in CPU seconds of this
+process, steadier than wall time on a loaded machine; every method runs in-process). ``--methods tetgen-pq
+ours`` runs only those rows. CSV to bench_gabriel3d.csv (bench_gabriel3d_quick.csv with --quick) in --out DIR
+(default experiments/results), and a table on stdout.
 
 ``--scaling [FACES...]``: instead, check3d end to end (a fresh ``nonobtuse check3d --json`` process) on
 jittered tori (:func:`torus_surface`) of 1e4, 1e5, 1e6 faces (or those given), with the cgal and tetgen
@@ -36,7 +38,7 @@ import argparse
 import sys
 import time
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 import numpy as np
 
@@ -49,11 +51,15 @@ from nonobtuse.mesh3d.load import PLC_SUFFIXES, SURFACE_SUFFIXES
 ROOT = Path(__file__).resolve().parents[1]
 DATA3D = ROOT / ".." / "shared" / "data" / "3d"
 COLUMNS = ["input", "method", "status", "strategy", "points", "boundary_steiner", "steiner", "boundary_faces",
-           "encroached_facets", "encroached_segments", "seconds", "vs_tetgen_pq"]
+           "encroached_facets", "encroached_segments", "seconds", "vs_tetgen_pq", "cpu_seconds",
+           "cpu_vs_tetgen_pq"]
+METHODS = ("tetgen-pq", "tetgen-pD", "tetgen-pY", "ftetwild", "ours", "ours-greedy", "ours-protected")
 
 
-def measure(name: str, method: str, plc, mesh, status: str, seconds: float) -> dict[str, Any]:
-    """One CSV row: counts of the mesh and its exact Gabriel check."""
+def measure(name: str, method: str, plc, mesh, status: str, started: tuple[float, float]) -> dict[str, Any]:
+    """One CSV row: counts of the mesh and its exact Gabriel check, and the seconds since started (a clocks()
+    reading) without that check."""
+    seconds, cpu_seconds = (now - then for now, then in zip(clocks(), started))
     report = check_gabriel(mesh)
     n = len(plc.points)
     bverts = np.unique(mesh.boundary_faces)
@@ -62,7 +68,12 @@ def measure(name: str, method: str, plc, mesh, status: str, seconds: float) -> d
             "boundary_faces": len(mesh.boundary_faces), "encroached_facets": len(report.faces),
             # fTetWild does not say which of its edges are segments: nothing to check there
             "encroached_segments": len(report.segments) if len(mesh.segments) else "n/a",
-            "seconds": round(seconds, 3)}
+            "seconds": round(seconds, 3), "cpu_seconds": round(cpu_seconds, 3)}
+
+
+def clocks() -> tuple[float, float]:
+    """Wall and CPU seconds (this process, all threads)."""
+    return time.perf_counter(), time.process_time()
 
 
 def torus_surface(faces: int, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
@@ -94,21 +105,21 @@ def write_off(path: Path, points: np.ndarray, triangles: np.ndarray) -> None:
 
 
 def run_backend(name: str, plc, method: str, backend: str, **options) -> dict[str, Any]:
-    t0 = time.perf_counter()
+    t0 = clocks()
     try:
         mesh = tetrahedralize(plc, backend, **options)
     except InvalidInputError as e:
         reason = str(e).replace(f"on {plc.source} ", "")  # no machine paths in the csv
         return {"input": name, "method": method, "status": f"failed: {reason[:60]}"}
-    return measure(name, method, plc, mesh, "ok", time.perf_counter() - t0)
+    return measure(name, method, plc, mesh, "ok", t0)
 
 
 def run_ours(name: str, plc, max_steiner: int | None, time_limit: float,
              split: str = "shells") -> dict[str, Any]:
-    t0 = time.perf_counter()
+    t0 = clocks()
     result = refine_gabriel(plc, max_steiner=max_steiner, time_limit=time_limit, split=split)
     method = "ours" if split == "shells" else f"ours-{split}"
-    row = measure(name, method, plc, result.mesh, result.status, time.perf_counter() - t0)
+    row = measure(name, method, plc, result.mesh, result.status, t0)
     row["strategy"] = result.stats["strategy"]
     return row
 
@@ -121,26 +132,28 @@ def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
         return [{"input": name, "method": "-", "status": f"invalid: {str(e)[:40]}"}]
     if len(plc.triangles) > args.max_triangles:
         return [{"input": name, "method": "-", "status": f"skipped: {len(plc.triangles)} triangles"}]
-    rows = [run_backend(name, plc, "tetgen-pq", "tetgen", switches="pq1.414AQ"),
-            run_backend(name, plc, "tetgen-pD", "tetgen", switches="pDAQ"),
-            run_backend(name, plc, "tetgen-pY", "tetgen", switches="pYAQ")]
-    if len(plc.triangles) <= args.ftetwild_max_triangles:
-        rows.append(run_backend(name, plc, "ftetwild", "ftetwild"))
-    else:
-        rows.append({"input": name, "method": "ftetwild", "status": "skipped (size)"})
-    rows.append(run_ours(name, plc, args.max_steiner, args.time_limit))
-    rows.append(run_ours(name, plc, args.max_steiner, args.time_limit, split="greedy"))
-    rows.append(run_ours(name, plc, args.max_steiner, args.time_limit, split="protected"))
-    return with_time_ratios(rows)
+    runs: dict[str, Callable[[], dict[str, Any]]] = {
+        "tetgen-pq": lambda: run_backend(name, plc, "tetgen-pq", "tetgen", switches="pq1.414AQ"),
+        "tetgen-pD": lambda: run_backend(name, plc, "tetgen-pD", "tetgen", switches="pDAQ"),
+        "tetgen-pY": lambda: run_backend(name, plc, "tetgen-pY", "tetgen", switches="pYAQ"),
+        "ftetwild": lambda: (run_backend(name, plc, "ftetwild", "ftetwild")
+                             if len(plc.triangles) <= args.ftetwild_max_triangles
+                             else {"input": name, "method": "ftetwild", "status": "skipped (size)"}),
+        "ours": lambda: run_ours(name, plc, args.max_steiner, args.time_limit),
+        "ours-greedy": lambda: run_ours(name, plc, args.max_steiner, args.time_limit, split="greedy"),
+        "ours-protected": lambda: run_ours(name, plc, args.max_steiner, args.time_limit, split="protected"),
+    }
+    return with_time_ratios([runs[method]() for method in METHODS if method in args.methods])
 
 
 def with_time_ratios(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
-    """The rows of one input with vs_tetgen_pq: each row's seconds over the tetgen-pq row's (blank when either
-    has no time, e.g. a failed run)."""
-    pq = next((r.get("seconds") for r in rows if r["method"] == "tetgen-pq"), None)
-    for r in rows:
-        if pq and r.get("seconds") is not None:
-            r["vs_tetgen_pq"] = round(r["seconds"] / pq, 2)
+    """The rows of one input with vs_tetgen_pq and cpu_vs_tetgen_pq: each row's seconds over the tetgen-pq
+    row's (blank when either has no time, e.g. a failed run)."""
+    for column, ratio in (("seconds", "vs_tetgen_pq"), ("cpu_seconds", "cpu_vs_tetgen_pq")):
+        pq = next((r.get(column) for r in rows if r["method"] == "tetgen-pq"), None)
+        for r in rows:
+            if pq and r.get(column) is not None:
+                r[ratio] = round(r[column] / pq, 2)
     return rows
 
 
@@ -191,6 +204,8 @@ def main(argv: list[str] | None = None) -> int:
                     help="instead: the check3d scaling rows on tori of these face counts (default 1e4 "
                          "1e5 1e6) to bench_gabriel3d_scaling.csv")
     ap.add_argument("--scaling-backends", nargs="+", default=["cgal", "tetgen"], choices=("cgal", "tetgen"))
+    ap.add_argument("--methods", nargs="+", default=list(METHODS), choices=METHODS,
+                    help="only these rows per input (vs_tetgen_pq needs tetgen-pq)")
     add_out_option(ap, "bench_gabriel3d.csv")
     args = ap.parse_args(argv)
     if args.scaling is not None:

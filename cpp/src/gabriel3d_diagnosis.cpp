@@ -156,4 +156,11 @@ void count_steiner(const PlcState& s, Refine3DDiagnosis& d) {
   d.per_segment = top(std::move(per_segment));
 }
 
+double smallest_subsegment(const PlcState& s) {
+  double best = HUGE_VAL;
+  for (const auto& [sub, parent] : s.subsegments)
+    best = std::min(best, CGAL::to_double(CGAL::squared_distance(s.points[sub.first], s.points[sub.second])));
+  return s.subsegments.empty() ? 0.0 : std::sqrt(best);
+}
+
 }  // namespace nonobtuse::gabriel3d

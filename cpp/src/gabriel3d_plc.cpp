@@ -249,6 +249,24 @@ bool strictly_in_domain(const FacetCDT& cdt, FacetCDT::Locate_type lt, FacetCDT:
           loc->neighbor(li)->info().in_domain);
 }
 
+std::optional<Key> first_crossed_subsegment(const Facet& facet, const Q2& g, const Q2& q) {
+  std::optional<Key> best;
+  std::optional<EK::FT> best_d2;
+  EK::Segment_2 walk(g, q);
+  for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e) {
+    if (!facet.cdt.is_constrained(*e)) continue;
+    auto u = e->first->vertex(FacetCDT::cw(e->second)), w = e->first->vertex(FacetCDT::ccw(e->second));
+    EK::Segment_2 sub(u->point(), w->point());
+    if (!CGAL::do_intersect(walk, sub)) continue;
+    auto x = CGAL::intersection(walk, sub);
+    const Q2* p = boost::get<Q2>(&*x);
+    EK::FT d2 = p ? CGAL::squared_distance(g, *p) : EK::FT(0);
+    Key k = key(u->info(), w->info());
+    if (!best_d2 || d2 < *best_d2 || (d2 == *best_d2 && k < *best)) best_d2 = d2, best = k;
+  }
+  return best;
+}
+
 bool triangle_on_facet(const PlcState& s, int f, int a, int b, int c) {
   const Facet& facet = *s.facets[f];
   auto ia = facet.vertex.find(a), ib = facet.vertex.find(b), ic = facet.vertex.find(c);

@@ -11,6 +11,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -80,6 +81,9 @@ int insert_in_facet(PlcState& s, int f, const P3& point, FacetCDT::Locate_type l
 // Is a located point strictly inside the facet's domain: in a domain face, or on an unconstrained edge between two?
 bool strictly_in_domain(const FacetCDT& cdt, FacetCDT::Locate_type lt, FacetCDT::Face_handle loc, int li);
 
+// The subsegment of the facet crossed first by the segment from g to q (2D, in its frame), if any; ties by Key.
+std::optional<Key> first_crossed_subsegment(const Facet& facet, const Q2& g, const Q2& q);
+
 // Is the triangle (a, b, c) of points on facet f inside the facet's domain (its 2D centroid in domain faces)?
 bool triangle_on_facet(const PlcState& s, int f, int a, int b, int c);
 
@@ -109,5 +113,7 @@ std::vector<InputAngle> smallest_input_angles(const PlcState& s);
 std::vector<InputAngle> segment_facet_angles(const PlcState& s);
 // Steiner points per input segment and per nearest input vertex, top few.
 void count_steiner(const PlcState& s, Refine3DDiagnosis& d);
+// The length of the shortest subsegment (floating point), 0 without subsegments.
+double smallest_subsegment(const PlcState& s);
 
 }  // namespace nonobtuse::gabriel3d

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "gabriel3d_collar.h"
+#include "gabriel3d_encroached.h"
 #include "gabriel3d_mirror.h"
 #include "gabriel3d_protect.h"
 #include "gabriel3d_refine.h"
@@ -40,7 +41,7 @@ class Refiner {
   Refiner(PlcState& s, const Refine3DOptions& o, bool ignore_frame_artifacts, const Protection* protection,
           bool mirror)
       : s_(s), o_(o), ignore_frame_artifacts_(ignore_frame_artifacts), protection_(protection), index_(s.points),
-        start_(std::chrono::steady_clock::now()), acute_(s.n_input, false),
+        encroached_subsegments_(s, index_), start_(std::chrono::steady_clock::now()), acute_(s.n_input, false),
         collared_(protection ? collared_segments(s) : std::vector<bool>{}),
         mirror_pairs_(mirror ? mirror_pairs(s, 90.0) : std::vector<MirrorPair>{}) {
     std::vector<std::vector<int>> ends(s.n_input);
@@ -70,7 +71,10 @@ class Refiner {
 
  private:
   std::optional<Stop> budget_left() const;
-  std::vector<Key> encroached_subsegments() const;
+  // The encroached subsegments in Key order, as a scan of every subsegment would list them (kept up to date by
+  // inserted()). Charged one work unit per subsegment, the full scan it replaces, so that max_work stops where it
+  // did.
+  std::vector<Key> encroached_subsegments();
   std::vector<SubfacetRef> encroached_subfacets() const;
   bool encroached(int a, int b, int c) const {
     ++work_;
@@ -101,7 +105,8 @@ class Refiner {
   std::optional<Stop> too_short(const P3& p, const P3& q) const;
   // A stop when p is closer than min_length to a point; *near (when given) is set to that point.
   std::optional<Stop> too_close(const P3& p, int* near = nullptr) const;
-  void inserted(int m);
+  // Point m was added; `split`: the subsegment it split, if any.
+  void inserted(int m, const std::optional<Key>& split = std::nullopt);
   // Places the images of new point m on the facets mirrored to one of its own (gabriel3d_mirror.h) where they
   // verify; images are not mirrored again (one hop: a base point near two mirrored segments goes to both facets,
   // and their images do not come back). Images that are existing points, within min_length of one, or strictly
@@ -115,6 +120,7 @@ class Refiner {
   std::set<int> segment_sphere_points_;  // placed by place_protecting_points: where a segment leaves a ball
   std::set<int> arc_points_;             // placed on a ball's sphere by arc_split_point
   PointIndex index_;
+  EncroachedSubsegments encroached_subsegments_;
   std::chrono::steady_clock::time_point start_;
   long last_encroached_segments_ = 0, last_encroached_facets_ = 0;
   mutable long work_ = 0;  // counted in const queries: the count is the cost, not part of the state
@@ -134,13 +140,9 @@ std::optional<Stop> Refiner::budget_left() const {
   return std::nullopt;
 }
 
-std::vector<Key> Refiner::encroached_subsegments() const {
-  std::vector<Key> out;
-  for (const auto& [sub, parent] : s_.subsegments) {
-    if (encroached(sub.first, sub.second, -1)) out.push_back(sub);
-    if (out_of_time()) break;  // run() stops at its next budget check
-  }
-  return out;
+std::vector<Key> Refiner::encroached_subsegments() {
+  add_work(s_.subsegments.size());
+  return encroached_subsegments_.sorted();
 }
 
 std::vector<SubfacetRef> Refiner::encroached_subfacets() const {
@@ -199,10 +201,12 @@ void Refiner::mirror(int m) {
   }
 }
 
-void Refiner::inserted(int m) {
+void Refiner::inserted(int m, const std::optional<Key>& split) {
   index_.add(m);
+  encroached_subsegments_.added(m, split);
 #ifdef NONOBTUSE_CHECK_INVARIANTS
   check_invariants(s_);
+  encroached_subsegments_.check_against_full_scan();
 #endif
   long n = steiner_on_segments + steiner_on_facets;
   if (o_.progress && o_.progress_every > 0 && n % o_.progress_every == 0)
@@ -211,7 +215,9 @@ void Refiner::inserted(int m) {
 
 std::optional<Stop> Refiner::split(const Key& sub, bool always, bool* inserted_point, const P3* pending) {
   auto [a, b] = sub;
-  if (!s_.subsegments.count(sub) || (!always && !encroached(a, b, -1))) return std::nullopt;
+  // Counted as the encroachment query this set lookup replaces.
+  if (!s_.subsegments.count(sub) || (!always && (++work_, !encroached_subsegments_.contains(sub))))
+    return std::nullopt;
   if (auto stop = budget_left()) return stop;
   const P3 &pa = s_.points[a], &pb = s_.points[b];
   const bool a_input = a < s_.n_input, b_input = b < s_.n_input;
@@ -236,28 +242,9 @@ std::optional<Stop> Refiner::split(const Key& sub, bool always, bool* inserted_p
   ++steiner_on_segments;
   if (greedy) ++greedy_splits;
   *inserted_point = true;
-  inserted(id);
+  inserted(id, sub);
   mirror(id);
   return std::nullopt;
-}
-
-// The subsegment of facet f crossed first by the walk from the subfacet's centroid g to q, if any.
-std::optional<Key> first_crossed_subsegment(const Facet& facet, const Q2& g, const Q2& q) {
-  std::optional<Key> best;
-  std::optional<EK::FT> best_d2;
-  EK::Segment_2 walk(g, q);
-  for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e) {
-    if (!facet.cdt.is_constrained(*e)) continue;
-    auto u = e->first->vertex(FacetCDT::cw(e->second)), w = e->first->vertex(FacetCDT::ccw(e->second));
-    EK::Segment_2 sub(u->point(), w->point());
-    if (!CGAL::do_intersect(walk, sub)) continue;
-    auto x = CGAL::intersection(walk, sub);
-    const Q2* p = boost::get<Q2>(&*x);
-    EK::FT d2 = p ? CGAL::squared_distance(g, *p) : EK::FT(0);
-    Key k = key(u->info(), w->info());
-    if (!best_d2 || d2 < *best_d2 || (d2 == *best_d2 && k < *best)) best_d2 = d2, best = k;
-  }
-  return best;
 }
 
 // Splits subfacet f at its circumcenter, or splits the subsegments that point encroaches or lies beyond.
@@ -351,7 +338,7 @@ std::optional<Stop> Refiner::place_protecting_points() {
     const int id = split_subsegment(s_, from, to, t, m);
     segment_sphere_points_.insert(id);
     ++steiner_on_segments;
-    inserted(id);
+    inserted(id, key(from, to));
     mirror(id);
     return id;
   };
@@ -412,13 +399,6 @@ std::optional<Stop> Refiner::repair(const Restricted& mesh, const std::vector<Ke
     if (auto stop = split_subfacet(canonical({f, a, b, c}), false, progress)) return stop;
   }
   return std::nullopt;
-}
-
-double smallest_subsegment(const PlcState& s) {
-  double best = HUGE_VAL;
-  for (const auto& [sub, parent] : s.subsegments)
-    best = std::min(best, CGAL::to_double(CGAL::squared_distance(s.points[sub.first], s.points[sub.second])));
-  return s.subsegments.empty() ? 0.0 : std::sqrt(best);
 }
 
 }  // namespace
