@@ -103,7 +103,8 @@ def run(args: argparse.Namespace) -> int:
                  quiet=args.quiet)
     s = result.stats
     if args.json:
-        json.dump(s if args.verbose else {k: v for k, v in s.items() if k not in PER_EDGE_KEYS}, sys.stdout)
+        json.dump(s if args.verbose else {k: v for k, v in s.items() if k not in PER_EDGE_KEYS}, sys.stdout,
+                  default=list)  # stats["edges"] is a sequence made on access
         print()
     elif not args.quiet:
         print(
