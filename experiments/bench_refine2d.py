@@ -44,7 +44,7 @@ STRATEGIES = ("greedy", "project-flip", "projection")
 
 def loop(n: int) -> np.ndarray:
     i = np.arange(n, dtype=np.int64)
-    return np.c_[i, (i + 1) % n]  # not a list of tuples: 180 MB at 1e6, counted in bench_scaling's peak memory
+    return np.c_[i, (i + 1) % n]  # not a list of tuples (180 MB at 1e6, in bench_scaling's peak memory)
 
 
 def convex(n: int, rng) -> Domain:
