@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import json
 import re
 
 import numpy as np
@@ -180,6 +181,17 @@ def test_unvalidated_bad_domains_raise_instead_of_crashing(points, segments, mes
         nonobtuse.refine(d, strategy=strategy)
 
 
+def test_edge_stats_are_made_on_access_and_read_as_a_list():
+    domain = star_with_hole(3, 12, 5)
+    edges = nonobtuse.refine(domain).stats["edges"]
+    dicts = list(edges)
+    assert len(edges) == len(dicts) == len(domain.segments)
+    assert edges == dicts and edges[-1] == dicts[-1] and edges[2:5] == dicts[2:5]
+    assert edges != dicts[:-1]
+    assert {tuple(sorted(e["edge"])) for e in edges} == {tuple(sorted(s)) for s in domain.segments.tolist()}
+    assert json.loads(json.dumps(edges, default=list)) == dicts
+
+
 def test_refine_leaves_the_garbage_collector_as_it_found_it():
     import gc
 
@@ -187,7 +199,7 @@ def test_refine_leaves_the_garbage_collector_as_it_found_it():
     for enabled in (True, False):
         (gc.enable if enabled else gc.disable)()
         try:
-            nonobtuse.refine(domain)
+            list(nonobtuse.refine(domain).stats["edges"])  # the dicts are made under a paused collector
             assert gc.isenabled() is enabled
         finally:
             gc.enable()

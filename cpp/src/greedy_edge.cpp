@@ -72,6 +72,7 @@ bool subsegment_is_empty(const State& st, const Side& start, const Point& s, con
 }
 
 int greedy_count(const State& st, const Side& side, const DiskWalk& walk) {
+  if (walk.encroachers.empty()) return 0;  // most sides: no shadows to build (a polygon's million edges)
   std::vector<Vertex_handle> q = walk.encroachers;
   // Every subsegment below lies on the side, up to rounding: each vertex's sight questions scan only the obstacles
   // near its triangle with the side.

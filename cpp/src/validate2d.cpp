@@ -49,6 +49,10 @@ void check_indices(std::size_t n_points, const std::vector<Segment>& segments) {
                            ", but there are " + std::to_string(n_points) + " points");
 }
 
+// Below this many boxes box_intersection_d scans instead of splitting further (CGAL's default 10): the same pairs,
+// each once, in a different order (the lists are sorted below); fewer levels of its recursion.
+constexpr std::ptrdiff_t kBoxCutoff = 1000;
+
 // Thrown by candidate_pairs' callbacks past their budget.
 struct TooManyPairs {};
 
@@ -75,6 +79,16 @@ SegmentIntersections candidate_pairs(const std::vector<Point>& p, const std::vec
     int s = std::min(x.info(), y.info()), t = std::max(x.info(), y.info());
     const Point &a = p[segments[s][0]], &b = p[segments[s][1]];
     const Point &c = p[segments[t][0]], &d = p[segments[t][1]];
+    // Neighbours along a chain (most pairs): a common endpoint index leaves no crossing away from the endpoints,
+    // only an overlap, when the other end of t is on s's line (what the four orientations below decide too).
+    const int shared = segments[t][0] == segments[s][0] || segments[t][0] == segments[s][1]   ? 0
+                       : segments[t][1] == segments[s][0] || segments[t][1] == segments[s][1] ? 1
+                                                                                               : -1;
+    if (shared >= 0) {
+      if (CGAL::orientation(a, b, shared == 0 ? d : c) == CGAL::COLLINEAR && collinear_overlap(a, b, c, d))
+        out.overlaps.push_back({s, t});
+      return;
+    }
     auto o1 = CGAL::orientation(a, b, c), o2 = CGAL::orientation(a, b, d);
     if (o1 == CGAL::COLLINEAR && o2 == CGAL::COLLINEAR) {
       if (collinear_overlap(a, b, c, d)) out.overlaps.push_back({s, t});
@@ -84,7 +98,7 @@ SegmentIntersections candidate_pairs(const std::vector<Point>& p, const std::vec
     if (o1 != CGAL::COLLINEAR && o2 != CGAL::COLLINEAR && o3 != CGAL::COLLINEAR && o4 != CGAL::COLLINEAR &&
         o1 != o2 && o3 != o4)
       out.crossings.push_back({s, t});
-  });
+  }, kBoxCutoff);
 
   // Points against segments: a point (degenerate box) lies strictly inside a segment iff it is collinear with the
   // endpoints and strictly between them along the line.
@@ -94,12 +108,13 @@ SegmentIntersections candidate_pairs(const std::vector<Point>& p, const std::vec
   CGAL::box_intersection_d(point_boxes.begin(), point_boxes.end(), seg_boxes.begin(), seg_boxes.end(),
                            [&](const Box& pt, const Box& sg) {
                              count();
+                             if (pt.info() == segments[sg.info()][0] || pt.info() == segments[sg.info()][1]) return;
                              const Point &q = p[pt.info()], &a = p[segments[sg.info()][0]],
                                          &b = p[segments[sg.info()][1]];
                              if (CGAL::orientation(a, b, q) == CGAL::COLLINEAR &&
                                  CGAL::collinear_are_strictly_ordered_along_line(a, q, b))
                                out.points_on_segments.push_back({pt.info(), sg.info()});
-                           });
+                           }, kBoxCutoff);
 
   std::sort(out.crossings.begin(), out.crossings.end());
   std::sort(out.points_on_segments.begin(), out.points_on_segments.end());

@@ -49,6 +49,16 @@ TEST(Validate2dIntersections, CollinearOverlapAndCollinearTouch) {
   EXPECT_EQ(r.points_on_segments, (Pairs{{1, 1}, {2, 0}}));
 }
 
+TEST(Validate2dIntersections, SegmentsSharingAnEndpointOverlapOnlyWhenCollinearAndSameWay) {
+  // From (0,0): s0 to (2,0) and s1 to (1,0) overlap on [0,1]; s2 to (-1,0) is collinear but on the other side;
+  // s3 to (0,1) turns; s4 repeats s0 reversed. Pairs sharing an endpoint index take a shortcut: checked here.
+  std::vector<Point2> p{{0, 0}, {2, 0}, {1, 0}, {-1, 0}, {0, 1}};
+  auto r = find_segment_intersections(p, {{0, 1}, {0, 2}, {3, 0}, {0, 4}, {1, 0}});
+  EXPECT_EQ(r.overlaps, (Pairs{{0, 1}, {0, 4}, {1, 4}}));
+  EXPECT_TRUE(r.crossings.empty());
+  EXPECT_EQ(r.points_on_segments, (Pairs{{2, 0}, {2, 4}}));
+}
+
 TEST(Validate2dIntersections, BadIndexIsInvalidInput) {
   EXPECT_THROW(find_segment_intersections({{0, 0}, {1, 0}}, {{0, 2}}), InvalidInput);
 }

@@ -114,7 +114,8 @@ def run(args: argparse.Namespace) -> int:
                  quiet=args.quiet)
     s = result.stats
     if args.json:
-        json.dump(s if args.verbose else summary(s), sys.stdout)
+        json.dump(s if args.verbose else summary(s), sys.stdout,
+                  default=list)  # stats["edges"] is a sequence made on access
         print()
     elif not args.quiet:
         print(

@@ -4,6 +4,7 @@ The schemas are documented in :mod:`nonobtuse.io`."""
 from __future__ import annotations
 
 import json
+from collections.abc import Sequence
 from pathlib import Path
 from typing import IO, Any, NoReturn
 
@@ -230,7 +231,9 @@ def _write_list(f: IO[str], values: np.ndarray) -> None:
 
 
 def _plain(value: Any) -> Any:
-    """JSON form of numpy scalars and arrays found in ``stats``."""
+    """JSON form of numpy scalars and arrays and of other sequences (``stats["edges"]``) in ``stats``."""
+    if isinstance(value, Sequence):
+        return list(value)
     if isinstance(value, np.generic):
         return value.item()
     if isinstance(value, np.ndarray):
