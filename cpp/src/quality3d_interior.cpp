@@ -19,6 +19,7 @@
 #include "nonobtuse/quality3d.h"
 #include "quality3d_boundary.h"
 #include "quality3d_rows.h"
+#include "quality3d_shape.h"
 #include "quality3d_spheres.h"
 
 namespace nonobtuse {
@@ -32,6 +33,8 @@ using quality3d::BoundarySplitter;
 using quality3d::canonical_tet;
 using quality3d::check_input;
 using quality3d::sorted_corners;
+using quality3d::tet_shape;
+using quality3d::TetShape;
 using quality3d::SphereIndex;
 using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
 using Cb = CGAL::Triangulation_cell_base_with_info_3<int, K, CGAL::Delaunay_triangulation_cell_base_3<K>>;
@@ -188,11 +191,13 @@ class InteriorRefiner {
     flood_labels(std::move(stack));
   }
 
-  // The circumcenter of c from its corners in index order: the rounding does not depend on the cell's history.
-  P3 circumcenter(Cell c) const {
+  // The circumsphere of c from its corners in index order: the rounding does not depend on the cell's history
+  // (exact for a cell flat in floating point, see tet_shape).
+  TetShape shape(Cell c) const {
     const std::array<int, 4> k = corners(c);
-    return CGAL::circumcenter(pts_[k[0]], pts_[k[1]], pts_[k[2]], pts_[k[3]]);
+    return tet_shape(pts_[k[0]], pts_[k[1]], pts_[k[2]], pts_[k[3]]);
   }
+  P3 circumcenter(Cell c) const { return shape(c).center; }
 
   static std::array<int, 4> corners(Cell c) {
     return sorted_corners({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
@@ -214,8 +219,7 @@ class InteriorRefiner {
     const P3* v[4] = {&a, &b, &d, &e};
     for (int i = 0; i < 4; ++i)
       for (int j = i + 1; j < 4; ++j) shortest = std::min(shortest, CGAL::squared_distance(*v[i], *v[j]));
-    const double radius2 = CGAL::squared_radius(a, b, d, e);
-    const double ratio = std::sqrt(radius2 / shortest);
+    const double ratio = std::sqrt(tet_shape(a, b, d, e).squared_radius / shortest);  // +inf at most, never NaN
     const bool over_volume = std::abs(CGAL::volume(a, b, d, e)) > bounds_.volume_bounds[c->info()];
     const bool over = (bounds_.radius_edge > 0 && ratio > bounds_.radius_edge) || over_volume || !std::isfinite(ratio);
     return {ratio, std::sqrt(shortest), over, over_volume};

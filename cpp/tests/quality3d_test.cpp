@@ -1,6 +1,7 @@
 #include "nonobtuse/quality3d.h"
 
 #include "nonobtuse/gabriel3d.h"
+#include "quality3d_shape.h"
 
 #include <gtest/gtest.h>
 
@@ -226,6 +227,34 @@ TEST(RefineInterior, RejectsLabelsWithoutBounds) {
   InteriorMesh m = cube_mesh();
   InteriorBounds bounds;  // no volume bound for label 0
   EXPECT_THROW(refine_interior(m, bounds), InvalidInput);
+}
+
+}  // namespace
+}  // namespace nonobtuse
+
+namespace nonobtuse {
+namespace {
+
+// A rectangle p0, p0 + u, p0 + v, p0 + u + v (u . v = 0) in a tilted plane: its corners rounded off the plane,
+// floating point makes its circumcenter (0.225, 0.7, 0.55), far from the rectangle's center p0 + (u + v) / 2 =
+// (0.3, 0.8, 0.4); the circumradius is half the diagonal, sqrt(0.14 + 0.10) / 2.
+TEST(TetShape, FlatInFloatingPointIsExactAndFinite) {
+  const quality3d::P3 a(0.1, 0.7, 0.3), u(0.1, 0.2, 0.3), v(0.3, 0.0, -0.1);
+  const quality3d::P3 b(a.x() + u.x(), a.y() + u.y(), a.z() + u.z()), c(a.x() + v.x(), a.y() + v.y(), a.z() + v.z());
+  const quality3d::P3 d(b.x() + v.x(), b.y() + v.y(), b.z() + v.z());
+  const quality3d::TetShape shape = quality3d::tet_shape(a, b, c, d);
+  EXPECT_TRUE(shape.exact);
+  EXPECT_NEAR(shape.center.x(), 0.3, 1e-9);
+  EXPECT_NEAR(shape.center.y(), 0.8, 1e-9);
+  EXPECT_NEAR(shape.center.z(), 0.4, 1e-9);
+  EXPECT_NEAR(shape.squared_radius, 0.24 / 4, 1e-12);
+}
+
+TEST(TetShape, AFullTetIsFloatingPoint) {
+  const quality3d::TetShape shape = quality3d::tet_shape({0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2});
+  EXPECT_FALSE(shape.exact);
+  EXPECT_EQ(shape.center, quality3d::P3(1, 1, 1));
+  EXPECT_DOUBLE_EQ(shape.squared_radius, 3.0);
 }
 
 }  // namespace
