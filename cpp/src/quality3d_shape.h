@@ -21,4 +21,13 @@ struct TetShape {
 // finite or +inf, never NaN. The same rule as tet_circumspheres in nonobtuse/mesh3d/quality3d_rounds.py.
 TetShape tet_shape(const P3& a, const P3& b, const P3& c, const P3& d);
 
+// A tet's shape and size against the bounds (floating point but the circumsphere, see tet_shape).
+struct TetQuality {
+  double ratio;     // circumradius / shortest edge (+inf at most, never NaN)
+  double shortest;  // shortest edge
+  bool over;        // over a bound (radius_edge > 0 only) or of infinite ratio
+  bool over_volume;
+};
+TetQuality tet_quality(const P3& a, const P3& b, const P3& c, const P3& d, double radius_edge, double volume_bound);
+
 }  // namespace nonobtuse::quality3d
