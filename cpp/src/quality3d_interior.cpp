@@ -1,23 +1,18 @@
 // 3D interior quality: Delaunay refinement of the interior of a mesh with a Gabriel boundary, the triangulation kept
 // between insertions, the boundary split where circumcenters encroach it (see refine_interior in quality3d.h).
-#include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Triangulation_cell_base_with_info_3.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <memory>
 #include <numeric>
 #include <queue>
-#include <set>
 #include <string>
 #include <tuple>
 
 #include "nonobtuse/quality3d.h"
 #include "quality3d_boundary.h"
+#include "quality3d_cells.h"
 #include "quality3d_rows.h"
 #include "quality3d_shape.h"
 #include "quality3d_spheres.h"
@@ -26,24 +21,22 @@ namespace nonobtuse {
 namespace {
 
 using gabriel3d::from_cgal;
-using gabriel3d::K;
 using gabriel3d::P3;
 using gabriel3d::to_cgal;
 using quality3d::BoundarySplitter;
 using quality3d::canonical_tet;
 using quality3d::check_input;
-using quality3d::sorted_corners;
 using quality3d::tet_shape;
 using quality3d::tet_quality;
 using quality3d::TetQuality;
 using quality3d::TetShape;
 using quality3d::SphereIndex;
-using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
-using Cb = CGAL::Triangulation_cell_base_with_info_3<int, K, CGAL::Delaunay_triangulation_cell_base_3<K>>;
-using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
-using DT = CGAL::Delaunay_triangulation_3<K, Tds>;
-using Cell = DT::Cell_handle;
-using Vertex = DT::Vertex_handle;
+using quality3d::Cell;
+using quality3d::corners;
+using quality3d::DT;
+using quality3d::flood_labels;
+using quality3d::label_cells;
+using quality3d::Vertex;
 
 class InteriorRefiner {
  public:
@@ -74,7 +67,7 @@ class InteriorRefiner {
     if (std::count(vertex_.begin(), vertex_.end(), Vertex()))
       throw InvalidInput("two points are equal: the tetrahedralization has fewer vertices");
     if (!conforming()) return false;
-    label_cells();
+    label_cells(dt_, mesh_.tets, mesh_.tet_labels, faces_);
     return true;
   }
 
@@ -143,56 +136,6 @@ class InteriorRefiner {
     return true;
   }
 
-  std::set<std::array<int, 3>> subfacet_keys() const {
-    std::set<std::array<int, 3>> keys;
-    for (std::array<int, 3> k : faces_) {
-      std::sort(k.begin(), k.end());
-      keys.insert(k);
-    }
-    return keys;
-  }
-
-  // Floods the labels of the cells labelled (>= 0) into the unlabelled finite cells (-1) across faces that are not
-  // subfacets.
-  void flood_labels(std::vector<Cell> stack) {
-    const auto subfacet = subfacet_keys();
-    while (!stack.empty()) {
-      Cell c = stack.back();
-      stack.pop_back();
-      for (int i = 0; i < 4; ++i) {
-        Cell n = c->neighbor(i);
-        if (n->info() >= 0 || dt_.is_infinite(n)) continue;
-        std::array<int, 3> k;
-        for (int j = 0, m = 0; j < 4; ++j)
-          if (j != i) k[m++] = c->vertex(j)->info();
-        std::sort(k.begin(), k.end());
-        if (subfacet.count(k)) continue;
-        n->info() = c->info();
-        stack.push_back(n);
-      }
-    }
-  }
-
-  // Domain cells: those of the input tets, then by flood fill across faces that are not subfacets (a Delaunay
-  // tetrahedralization with every subfacet as a face holds the same domain split differently where points are
-  // cospherical).
-  void label_cells() {
-    std::map<std::array<int, 4>, int> label_of;
-    for (std::size_t t = 0; t < mesh_.tets.size(); ++t)
-      label_of.emplace(sorted_corners(mesh_.tets[t]), mesh_.tet_labels[t]);
-    std::vector<Cell> stack;
-    for (auto c = dt_.all_cells_begin(); c != dt_.all_cells_end(); ++c) {
-      c->info() = -1;
-      if (dt_.is_infinite(c)) continue;
-      auto it = label_of.find(corners(c));
-      if (it != label_of.end()) {
-        c->info() = it->second;
-        stack.push_back(c);
-      }
-    }
-    flood_labels(std::move(stack));
-  }
-
   // The circumsphere of c from its corners in index order: the rounding does not depend on the cell's history
   // (exact for a cell flat in floating point, see tet_shape).
   TetShape shape(Cell c) const {
@@ -200,10 +143,6 @@ class InteriorRefiner {
     return tet_shape(pts_[k[0]], pts_[k[1]], pts_[k[2]], pts_[k[3]]);
   }
   P3 circumcenter(Cell c) const { return shape(c).center; }
-
-  static std::array<int, 4> corners(Cell c) {
-    return sorted_corners({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
-  }
 
   // The corners in index order: the rounding does not depend on the cell's history (the order of a cell's
   // vertices follows the insertions, and the spatial sort of a bulk insertion is randomized).
@@ -415,7 +354,7 @@ class InteriorRefiner {
     std::vector<Cell> stack;
     for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c)
       if (c->info() >= 0) stack.push_back(c);
-    flood_labels(std::move(stack));
+    flood_labels(dt_, faces_, std::move(stack));
     auto short_of = [&](const Regions& now, int label) {
       return now.volumes[label] < before.volumes[label] * (1 - 1e-9);
     };
@@ -425,7 +364,7 @@ class InteriorRefiner {
       Cell c = dt_.locate(at);
       if (dt_.is_infinite(c) || c->info() >= 0) continue;
       c->info() = label;
-      flood_labels({c});
+      flood_labels(dt_, faces_, {c});
       now = regions();
     }
     for (std::size_t label = 0; label < before.volumes.size(); ++label)
