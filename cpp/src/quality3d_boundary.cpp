@@ -107,6 +107,7 @@ bool BoundarySplitter::may_add(const P3& p) {
 void BoundarySplitter::added_point(int i, char sharp) {
   index_.add(i);
   features_.added(i, sharp);
+  hits_.clear();  // a split changes the subsegments
   ++added;
 }
 
@@ -125,7 +126,7 @@ bool BoundarySplitter::near_small_angle(int f, int a, int b, int c, double short
   const auto center = gabriel3d::rounded_circumcenter(s_.points[corner[0]], s_.points[corner[1]],
                                                       s_.points[corner[2]]);
   if (!center) return false;
-  const std::vector<Key> hit = encroached_subsegments(f, *center);
+  const std::vector<Key>& hit = encroached_subsegments(f, *center);
   if (!hit.empty())
     return std::any_of(hit.begin(), hit.end(), [&](const Key& k) {
       return sharp_split(k.first, k.second) || short_halves(k.first, k.second);
@@ -152,7 +153,9 @@ bool BoundarySplitter::split_subsegment(int a, int b) {
   return true;
 }
 
-std::vector<Key> BoundarySplitter::encroached_subsegments(int f, const P3& z) const {
+const std::vector<Key>& BoundarySplitter::encroached_subsegments(int f, const P3& z) const {
+  auto [cached, fresh] = hits_.try_emplace({f, z.x(), z.y(), z.z()});
+  if (!fresh) return cached->second;
   const gabriel3d::Facet& facet = *s_.facets[f];
   std::vector<Key> hit;
   for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e) {
@@ -163,7 +166,7 @@ std::vector<Key> BoundarySplitter::encroached_subsegments(int f, const P3& z) co
       hit.push_back(gabriel3d::key(u, w));
   }
   std::sort(hit.begin(), hit.end());
-  return hit;
+  return cached->second = std::move(hit);
 }
 
 bool BoundarySplitter::split_subfacet(int f, int a, int b, int c) {
@@ -175,7 +178,7 @@ bool BoundarySplitter::split_subfacet(int f, int a, int b, int c) {
   const gabriel3d::Facet& facet = *s_.facets[f];
   // Shewchuk's rule: a subfacet circumcenter strictly inside a subsegment's diametral sphere is not inserted; the
   // subsegments of the facet it encroaches are split instead.
-  const std::vector<Key> hit = encroached_subsegments(f, *center);
+  const std::vector<Key> hit = encroached_subsegments(f, *center);  // a copy: the splits clear the cache
   if (!hit.empty()) {
     bool any = false;
     for (const Key& k : hit) any = split_subsegment(k.first, k.second) || any;
