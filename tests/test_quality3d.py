@@ -18,6 +18,7 @@ from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import check_gabriel, load_plc, read_tetmesh_json
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 from nonobtuse.mesh3d.quality3d import refine_quality3d
+from nonobtuse.mesh3d.quality3d_rounds import shortest_edges, tet_circumspheres
 
 DATA3D = Path(__file__).resolve().parent / "data" / "3d"
 SHARED3D = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "3d"
@@ -364,3 +365,17 @@ def test_joint_converges_under_the_small_angle_rule():
     assert (ratio[outside] <= 2.0).all() and (volumes[outside] <= volume).all()
     assert flat.sum() < 20
     assert 0 < len(r.small_angle_rows) == r.stats["small_angle_tets"] < len(ratio) // 20
+
+
+def test_a_tet_flat_in_floating_point_gets_its_exact_circumsphere() -> None:
+    # a rectangle p0, p0 + u, p0 + v, p0 + u + v (u . v = 0) in a tilted plane, its corners rounded off
+    # the plane: floating point puts the circumcenter at (0.225, 0.7, 0.55); the rectangle's center is
+    # p0 + (u + v) / 2 and the radius half its diagonal, so the ratio is sqrt(|u|^2 + |v|^2) / (2 |v|)
+    # (|v| < |u|); never NaN
+    p0, u, v = np.array([0.1, 0.7, 0.3]), np.array([0.1, 0.2, 0.3]), np.array([0.3, 0.0, -0.1])
+    points, tets = np.array([p0, p0 + u, p0 + v, p0 + u + v]), np.array([[0, 1, 2, 3]])
+    centers, radius, volume = tet_circumspheres(points, tets)
+    np.testing.assert_allclose(centers[0], p0 + (u + v) / 2, rtol=1e-9)
+    ratio = radius / shortest_edges(points, tets)
+    assert ratio[0] == pytest.approx(np.sqrt(u @ u + v @ v) / (2 * np.sqrt(v @ v)), rel=1e-9)
+    assert abs(volume[0]) < 1e-17

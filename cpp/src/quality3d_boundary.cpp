@@ -35,31 +35,7 @@ BoundarySplitter::BoundarySplitter(const std::vector<Point3>& points, const std:
       index_(s_.points),
       min_length_(min_length),
       max_points_(max_points),
-      sharp_segment_(s_.segments.size(), 0),
-      sharp_point_(s_.points.size(), 0) {
-  for (const auto& angle : gabriel3d::dihedral_angles(s_)) {
-    if (angle.degrees >= sharp_dihedral) continue;
-    const int a = angle.vertices[0], b = angle.vertices[1];
-    sharp_segment_[s_.subsegments.at(gabriel3d::key(a, b))] = 1;
-    sharp_point_[a] = std::max<char>(sharp_point_[a], kOnSharpSegment);
-    sharp_point_[b] = std::max<char>(sharp_point_[b], kOnSharpSegment);
-  }
-  mark_sharp_apexes(small_apex);
-}
-
-void BoundarySplitter::mark_sharp_apexes(double small_apex) {
-  std::vector<std::vector<int>> ends(s_.points.size());  // the other ends of the subsegments at each point
-  for (const auto& [k, parent] : s_.subsegments) ends[k.first].push_back(k.second), ends[k.second].push_back(k.first);
-  const double cos_limit = std::cos(small_apex * 3.14159265358979323846 / 180.0);
-  for (std::size_t v = 0; v < ends.size(); ++v)
-    for (std::size_t i = 0; i < ends[v].size() && sharp_point_[v] != kNearApex; ++i)
-      for (std::size_t j = i + 1; j < ends[v].size(); ++j) {
-        const auto d = s_.points[ends[v][i]] - s_.points[v], e = s_.points[ends[v][j]] - s_.points[v];
-        if (d * e > cos_limit * std::sqrt(d.squared_length() * e.squared_length())) sharp_point_[v] = kNearApex;
-      }
-  for (const auto& angle : gabriel3d::segment_facet_angles(s_))
-    if (angle.degrees < small_apex) sharp_point_[angle.vertices[0]] = kNearApex;
-}
+      features_(s_, sharp_dihedral, small_apex) {}
 
 void BoundarySplitter::add_interior_point(const P3& p) {
   const int i = static_cast<int>(s_.points.size());
@@ -67,7 +43,7 @@ void BoundarySplitter::add_interior_point(const P3& p) {
   s_.point_facets.emplace_back();
   s_.at.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, i);
   index_.add(i);
-  sharp_point_.push_back(0);
+  features_.added(i, 0);
 }
 
 int BoundarySplitter::common_facet(int a, int b, int c) const {
@@ -130,15 +106,9 @@ bool BoundarySplitter::may_add(const P3& p) {
 
 void BoundarySplitter::added_point(int i, char sharp) {
   index_.add(i);
-  sharp_point_.resize(s_.points.size(), 0);
-  sharp_point_[i] = sharp;
+  features_.added(i, sharp);
+  hits_.clear();  // a split changes the subsegments
   ++added;
-}
-
-bool BoundarySplitter::sharp_subsegment(int a, int b) const {
-  auto it = s_.subsegments.find(gabriel3d::key(a, b));
-  return it != s_.subsegments.end() &&
-         (sharp_segment_[it->second] || sharp_point_[a] == kNearApex || sharp_point_[b] == kNearApex);
 }
 
 bool BoundarySplitter::near_small_angle(int f, int a, int b, int c, double shortest) const {
@@ -146,34 +116,46 @@ bool BoundarySplitter::near_small_angle(int f, int a, int b, int c, double short
   auto short_halves = [&](int u, int w) {  // |uw| / 2 < shortest
     return CGAL::compare_squared_distance(s_.points[u], s_.points[w], 4 * limit) == CGAL::SMALLER;
   };
-  if (f < 0) return sharp_subsegment(a, b) || short_halves(a, b);
+  auto sharp_split = [&](int u, int w) {  // the subsegment is sharp and its midpoint protected
+    return features_.sharp_subsegment(s_, u, w) &&
+           features_.protects(s_, midpoint(s_.points[std::min(u, w)], s_.points[std::max(u, w)]));
+  };
+  if (f < 0) return sharp_split(a, b) || short_halves(a, b);
   int corner[3] = {a, b, c};  // sorted, as split_subfacet rounds the circumcenter
   std::sort(corner, corner + 3);
   const auto center = gabriel3d::rounded_circumcenter(s_.points[corner[0]], s_.points[corner[1]],
                                                       s_.points[corner[2]]);
   if (!center) return false;
-  const std::vector<Key> hit = encroached_subsegments(f, *center);
+  const std::vector<Key>& hit = encroached_subsegments(f, *center);
   if (!hit.empty())
     return std::any_of(hit.begin(), hit.end(), [&](const Key& k) {
-      return sharp_subsegment(k.first, k.second) || short_halves(k.first, k.second);
+      return sharp_split(k.first, k.second) || short_halves(k.first, k.second);
     });
-  return sharp_point_[a] || sharp_point_[b] || sharp_point_[c] ||
+  return ((features_.sharp_point(a) || features_.sharp_point(b) || features_.sharp_point(c)) &&
+          features_.protects(s_, *center)) ||
          CGAL::compare_squared_distance(*center, s_.points[a], limit) == CGAL::SMALLER;
+}
+
+bool BoundarySplitter::leaves_alone(int row, const std::vector<Triangle>& faces, const std::vector<Segment>& segments,
+                                    double shortest) const {
+  if (row < 0) return near_small_angle(-1, segments[-1 - row][0], segments[-1 - row][1], -1, shortest);
+  const auto [a, b, c] = faces[row];
+  const int f = common_facet(a, b, c);
+  return f >= 0 && near_small_angle(f, a, b, c, shortest);
 }
 
 bool BoundarySplitter::split_subsegment(int a, int b) {
   if (a > b) std::swap(a, b);  // the rounded midpoint does not depend on the order
   const P3 m = midpoint(s_.points[a], s_.points[b]);
   if (!may_add(m)) return false;
-  // the mark of the midpoint: near the apex an end is near, else on the subsegment's segment when that is sharp
-  const char sharp = std::max(sharp_point_[a], sharp_point_[b]) == kNearApex ? kNearApex
-                     : sharp_subsegment(a, b)                                ? kOnSharpSegment
-                                                                             : 0;
+  const char sharp = features_.midpoint_mark(s_, a, b);
   added_point(gabriel3d::split_subsegment(s_, a, b, 0.5, m), sharp);
   return true;
 }
 
-std::vector<Key> BoundarySplitter::encroached_subsegments(int f, const P3& z) const {
+const std::vector<Key>& BoundarySplitter::encroached_subsegments(int f, const P3& z) const {
+  auto [cached, fresh] = hits_.try_emplace({f, z.x(), z.y(), z.z()});
+  if (!fresh) return cached->second;
   const gabriel3d::Facet& facet = *s_.facets[f];
   std::vector<Key> hit;
   for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e) {
@@ -184,7 +166,7 @@ std::vector<Key> BoundarySplitter::encroached_subsegments(int f, const P3& z) co
       hit.push_back(gabriel3d::key(u, w));
   }
   std::sort(hit.begin(), hit.end());
-  return hit;
+  return cached->second = std::move(hit);
 }
 
 bool BoundarySplitter::split_subfacet(int f, int a, int b, int c) {
@@ -196,7 +178,7 @@ bool BoundarySplitter::split_subfacet(int f, int a, int b, int c) {
   const gabriel3d::Facet& facet = *s_.facets[f];
   // Shewchuk's rule: a subfacet circumcenter strictly inside a subsegment's diametral sphere is not inserted; the
   // subsegments of the facet it encroaches are split instead.
-  const std::vector<Key> hit = encroached_subsegments(f, *center);
+  const std::vector<Key> hit = encroached_subsegments(f, *center);  // a copy: the splits clear the cache
   if (!hit.empty()) {
     bool any = false;
     for (const Key& k : hit) any = split_subsegment(k.first, k.second) || any;

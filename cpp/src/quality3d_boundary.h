@@ -4,9 +4,12 @@
 // subsegment instead).
 #pragma once
 #include <functional>
+#include <map>
+#include <tuple>
 #include <vector>
 
 #include "gabriel3d_plc.h"
+#include "quality3d_small_angle.h"
 
 namespace nonobtuse::quality3d {
 
@@ -43,16 +46,15 @@ class BoundarySplitter {
   // The small-angle rule (its termination argument is at refine_interior's boundary split rule): is the split that
   // a point in the closed diametral sphere of subsegment ab (f == -1) or of subfacet abc of facet f asks for, i.e.
   // the subsegment, or the subsegments of f that abc's circumcenter encroaches, or else abc itself, (i) at a small
-  // input angle: a subsegment of a sharp segment or with an end near a sharp apex, or a subfacet with a corner on
-  // a sharp segment or near a sharp apex; or (ii) shorter than `shortest`: halves of a subsegment shorter than it,
-  // or a subfacet circumcenter closer than it to the corners (Shewchuk's terminator: the split would make a feature
-  // smaller than the tet it is made for)? Sharp (floating-point angles on the boundary this splitter was built
-  // from): a segment of s_ through two facets at a dihedral angle below sharp_dihedral (between the half-planes, so
-  // a reflex angle over 360 - that counts too), and the points on it; an apex, a point where two subsegments meet
-  // below small_apex or a subsegment leans over a facet through it below that (gabriel3d::segment_facet_angles);
-  // near it, the apex and the midpoints of subsegments with an end near it (the mark follows the splits along a
-  // segment from its sharp end). Lengths compared exactly against the double `shortest`.
+  // input angle and near it: a subsegment on a sharp segment or with an end near a sharp apex whose midpoint is in
+  // the protecting region, or a subfacet with a corner on a sharp segment or near a sharp apex whose circumcenter is
+  // (SharpFeatures); or (ii) shorter than `shortest`: halves of a subsegment shorter than it, or a subfacet
+  // circumcenter closer than it to the corners (Shewchuk's terminator: the split would make a feature smaller than
+  // the tet it is made for)? Lengths compared exactly against the double `shortest`.
   bool near_small_angle(int f, int a, int b, int c, double shortest) const;
+  // The rule for a point in the closed diametral sphere at `row` of faces (a subfacet; -1 - row: of segments).
+  bool leaves_alone(int row, const std::vector<Triangle>& faces, const std::vector<Segment>& segments,
+                    double shortest) const;
 
   // The split for a point in the closed diametral sphere of subsegment ab: its midpoint. False when refused.
   bool split_subsegment(int a, int b);
@@ -75,18 +77,16 @@ class BoundarySplitter {
   bool may_add(const P3& p);
   void added_point(int i, char sharp);
   // The constrained edges of facet f whose diametral spheres hold z strictly inside, sorted.
-  std::vector<gabriel3d::Key> encroached_subsegments(int f, const P3& z) const;
-  bool sharp_subsegment(int a, int b) const;
+  // Remembered per facet and point until the next split (the rule asks for the same subfacet's circumcenter for
+  // every tet whose circumcenter lies in its sphere: anchor.off spent 37% of its pass rescanning the facets).
+  const std::vector<gabriel3d::Key>& encroached_subsegments(int f, const P3& z) const;
+  mutable std::map<std::tuple<int, double, double, double>, std::vector<gabriel3d::Key>> hits_;
 
   gabriel3d::PlcState s_;
   gabriel3d::PointIndex index_;
   double min_length_;
   long long max_points_;
-  std::vector<char> sharp_segment_;  // per segment of s_ (the parents of subsegments): at a small dihedral angle
-  // per point: 0, kOnSharpSegment or kNearApex (near_small_angle)
-  static constexpr char kOnSharpSegment = 1, kNearApex = 2;
-  std::vector<char> sharp_point_;
-  void mark_sharp_apexes(double small_apex);
+  SharpFeatures features_;
 };
 
 }  // namespace nonobtuse::quality3d

@@ -1,44 +1,42 @@
 // 3D interior quality: Delaunay refinement of the interior of a mesh with a Gabriel boundary, the triangulation kept
 // between insertions, the boundary split where circumcenters encroach it (see refine_interior in quality3d.h).
-#include <CGAL/Delaunay_triangulation_3.h>
-#include <CGAL/Triangulation_cell_base_with_info_3.h>
-#include <CGAL/Triangulation_vertex_base_with_info_3.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <memory>
 #include <numeric>
 #include <queue>
-#include <set>
 #include <string>
 #include <tuple>
 
 #include "nonobtuse/quality3d.h"
 #include "quality3d_boundary.h"
+#include "quality3d_cells.h"
 #include "quality3d_rows.h"
+#include "quality3d_shape.h"
 #include "quality3d_spheres.h"
 
 namespace nonobtuse {
 namespace {
 
 using gabriel3d::from_cgal;
-using gabriel3d::K;
 using gabriel3d::P3;
 using gabriel3d::to_cgal;
 using quality3d::BoundarySplitter;
 using quality3d::canonical_tet;
 using quality3d::check_input;
-using quality3d::sorted_corners;
+using quality3d::tet_shape;
+using quality3d::tet_quality;
+using quality3d::TetQuality;
+using quality3d::TetShape;
 using quality3d::SphereIndex;
-using Vb = CGAL::Triangulation_vertex_base_with_info_3<int, K>;
-using Cb = CGAL::Triangulation_cell_base_with_info_3<int, K, CGAL::Delaunay_triangulation_cell_base_3<K>>;
-using Tds = CGAL::Triangulation_data_structure_3<Vb, Cb>;
-using DT = CGAL::Delaunay_triangulation_3<K, Tds>;
-using Cell = DT::Cell_handle;
-using Vertex = DT::Vertex_handle;
+using quality3d::Cell;
+using quality3d::corners;
+using quality3d::DT;
+using quality3d::flood_labels;
+using quality3d::label_cells;
+using quality3d::Vertex;
 
 class InteriorRefiner {
  public:
@@ -69,7 +67,7 @@ class InteriorRefiner {
     if (std::count(vertex_.begin(), vertex_.end(), Vertex()))
       throw InvalidInput("two points are equal: the tetrahedralization has fewer vertices");
     if (!conforming()) return false;
-    label_cells();
+    label_cells(dt_, mesh_.tets, mesh_.tet_labels, faces_);
     return true;
   }
 
@@ -138,114 +136,34 @@ class InteriorRefiner {
     return true;
   }
 
-  std::set<std::array<int, 3>> subfacet_keys() const {
-    std::set<std::array<int, 3>> keys;
-    for (std::array<int, 3> k : faces_) {
-      std::sort(k.begin(), k.end());
-      keys.insert(k);
-    }
-    return keys;
-  }
-
-  // Floods the labels of the cells labelled (>= 0) into the unlabelled finite cells (-1) across faces that are not
-  // subfacets.
-  void flood_labels(std::vector<Cell> stack) {
-    const auto subfacet = subfacet_keys();
-    while (!stack.empty()) {
-      Cell c = stack.back();
-      stack.pop_back();
-      for (int i = 0; i < 4; ++i) {
-        Cell n = c->neighbor(i);
-        if (n->info() >= 0 || dt_.is_infinite(n)) continue;
-        std::array<int, 3> k;
-        for (int j = 0, m = 0; j < 4; ++j)
-          if (j != i) k[m++] = c->vertex(j)->info();
-        std::sort(k.begin(), k.end());
-        if (subfacet.count(k)) continue;
-        n->info() = c->info();
-        stack.push_back(n);
-      }
-    }
-  }
-
-  // Domain cells: those of the input tets, then by flood fill across faces that are not subfacets (a Delaunay
-  // tetrahedralization with every subfacet as a face holds the same domain split differently where points are
-  // cospherical).
-  void label_cells() {
-    std::map<std::array<int, 4>, int> label_of;
-    for (std::size_t t = 0; t < mesh_.tets.size(); ++t)
-      label_of.emplace(sorted_corners(mesh_.tets[t]), mesh_.tet_labels[t]);
-    std::vector<Cell> stack;
-    for (auto c = dt_.all_cells_begin(); c != dt_.all_cells_end(); ++c) {
-      c->info() = -1;
-      if (dt_.is_infinite(c)) continue;
-      auto it = label_of.find(corners(c));
-      if (it != label_of.end()) {
-        c->info() = it->second;
-        stack.push_back(c);
-      }
-    }
-    flood_labels(std::move(stack));
-  }
-
-  // The circumcenter of c from its corners in index order: the rounding does not depend on the cell's history.
-  P3 circumcenter(Cell c) const {
+  // The circumsphere of c from its corners in index order: the rounding does not depend on the cell's history
+  // (exact for a cell flat in floating point, see tet_shape).
+  TetShape shape(Cell c) const {
     const std::array<int, 4> k = corners(c);
-    return CGAL::circumcenter(pts_[k[0]], pts_[k[1]], pts_[k[2]], pts_[k[3]]);
+    return tet_shape(pts_[k[0]], pts_[k[1]], pts_[k[2]], pts_[k[3]]);
   }
+  P3 circumcenter(Cell c) const { return shape(c).center; }
 
-  static std::array<int, 4> corners(Cell c) {
-    return sorted_corners({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
-  }
-
-  // A domain cell's shape and size against the bounds (floating point).
-  struct Quality {
-    double ratio;     // circumradius / shortest edge (inf for a flat cell)
-    double shortest;  // shortest edge
-    bool over;        // over a bound (or flat)
-    bool over_volume;
-  };
   // The corners in index order: the rounding does not depend on the cell's history (the order of a cell's
   // vertices follows the insertions, and the spatial sort of a bulk insertion is randomized).
-  Quality measure(Cell c) const {
+  TetQuality measure(Cell c) const {
     const std::array<int, 4> k = corners(c);
-    const P3 &a = pts_[k[0]], &b = pts_[k[1]], &d = pts_[k[2]], &e = pts_[k[3]];
-    double shortest = std::numeric_limits<double>::infinity();
-    const P3* v[4] = {&a, &b, &d, &e};
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) shortest = std::min(shortest, CGAL::squared_distance(*v[i], *v[j]));
-    const double radius2 = CGAL::squared_radius(a, b, d, e);
-    const double ratio = std::sqrt(radius2 / shortest);
-    const bool over_volume = std::abs(CGAL::volume(a, b, d, e)) > bounds_.volume_bounds[c->info()];
-    const bool over = (bounds_.radius_edge > 0 && ratio > bounds_.radius_edge) || over_volume || !std::isfinite(ratio);
-    return {ratio, std::sqrt(shortest), over, over_volume};
+    return tet_quality(pts_[k[0]], pts_[k[1]], pts_[k[2]], pts_[k[3]], bounds_.radius_edge,
+                       bounds_.volume_bounds[c->info()]);
   }
 
-  // The small-angle rule (as Triangle and TetGen leave what no insertion can fix near small input angles): a cell
-  // over a bound whose circumcenter lies in the closed diametral sphere at `row` (a subfacet, or -1 - a subsegment)
-  // is left alone when the split that sphere asks for is at a sharp feature, or, for a cell over the radius-edge
-  // bound alone, shorter than the cell's shortest edge (BoundarySplitter::near_small_angle). A cell over the volume
-  // bound is left near sharp features too: its split there starts the same shrinking chain across the small angle
-  // (slit-2.smesh: one pass went from 26 to 10,166 boundary points at its 8 degree slit before).
-  // Also left alone: a cell whose four corners lie on one facet, flat but for the rounding of the boundary points
-  // (joint.off: volumes near 1e-22 at edges near 1e-2, whose radius-edge ratio floating point cannot tell); no
-  // interior point splits it.
+  // The small-angle rule (BoundarySplitter::leaves_alone; as Triangle and TetGen leave what no insertion can fix
+  // near small input angles). Also left alone: a cell whose four corners lie on one facet, flat but for the
+  // rounding of the boundary points (joint.off: volumes near 1e-22 at edges near 1e-2); no interior point splits it.
   bool flat_on_facet(Cell c) const { return splitter_ && splitter_->on_one_facet(corners(c)); }
-  bool left_alone(const Quality& q, int row) const {
-    if (!splitter_ || !std::isfinite(q.ratio) || row == SphereIndex::kNone) return false;
-    const double shortest = q.over_volume ? 0.0 : q.shortest;  // 0: no split is shorter
-    if (row < 0) {
-      const Segment& s = segments_[-1 - row];
-      return splitter_->near_small_angle(-1, s[0], s[1], -1, shortest);
-    }
-    const auto [a, p, r] = faces_[row];
-    const int f = splitter_->common_facet(a, p, r);
-    return f >= 0 && splitter_->near_small_angle(f, a, p, r, shortest);
+  bool left_alone(const TetQuality& q, int row) const {
+    return splitter_ && std::isfinite(q.ratio) && row != SphereIndex::kNone &&
+           splitter_->leaves_alone(row, faces_, segments_, q.over_volume ? 0.0 : q.shortest);  // 0: none shorter
   }
 
   void push_if_bad(Cell c) {
     if (dt_.is_infinite(c) || c->info() < 0) return;
-    const Quality q = measure(c);
+    const TetQuality q = measure(c);
     if (!q.over) return;
     queue_.push({std::isfinite(q.ratio) ? q.ratio : std::numeric_limits<double>::max(), corners(c),
                  {c->vertex(0), c->vertex(1), c->vertex(2), c->vertex(3)}});
@@ -317,15 +235,21 @@ class InteriorRefiner {
   // the subfacet circumcenter encroached; around the chain circumcenter -> subfacet -> subsegment -> circumcenter the
   // factor is R / 2 >= 1, so radii never shrink below the local feature size and finitely many points fit.
   // Small input angles (the small-angle rule, left_alone): a tet is not split for when its split would lie at a
-  // sharp feature (a dihedral angle below 85 degrees or an apex below 60, where the chain's factor drops below 1), or,
-  // over the radius-edge bound alone, would be shorter than the tet's shortest edge l. The second clause never fires where the argument
-  // above holds (the split's radius is at least r / sqrt 2 > sqrt 2 l, or r / 2 > l for the subsegments a subfacet
-  // circumcenter encroaches), so the rule only stops chains that would shrink: every split made for a tet has
-  // insertion radius >= l and lies away from the sharp features, and a tet over the volume bound V makes splits of
-  // radius >= (3V / 4 pi)^(1/3) / 2. What stays unbounded are the cascades restore_gabriel runs between features at
-  // small angles that such a split reaches; they stop at min_length and max_boundary_points (refused, counted, the
-  // step handed back), and time_limit bounds every step. The tets left alone are counted (small_angle_rows), as
-  // Triangle's terminator and TetGen's -q leave them.
+  // sharp feature and near it (a dihedral angle below 85 degrees or an apex below 60, where the chain's factor drops
+  // below 1; near: the split point in the feature's protecting region, SharpFeatures), or, over the radius-edge bound
+  // alone, would be shorter than the tet's shortest edge l. The second clause never fires where the argument above
+  // holds (the split's radius is at least r / sqrt 2 > sqrt 2 l, or r / 2 > l for the subsegments a subfacet
+  // circumcenter encroaches), so it only stops chains that would shrink. The distance clause (a sketch): the region
+  // holds the balls around the sharp subsegments and apexes as large as the boundary's spacing rho there and the
+  // diametral spheres of the subsegments and subfacets at the features, fixed for the pass; a split made outside it
+  // encroaches nothing at a feature and lies at least about rho from it, where the facets meeting at the angle theta
+  // are at least about rho sin theta apart: that distance bounds the split's insertion radius from below as the
+  // local feature size does above, so the chains of splits made for tets stay above min(rho sin theta, lfs) / 2 and
+  // finitely many points fit; a tet over the volume bound V makes splits of radius >= (3V / 4 pi)^(1/3) / 2. What
+  // stays unbounded are the cascades restore_gabriel runs between features at small angles that such a split
+  // reaches; they stop at min_length and max_boundary_points (refused, counted, the step handed back), and
+  // time_limit bounds every step. The tets left alone are counted (small_angle_rows), as Triangle's terminator and
+  // TetGen's -q leave them.
   bool split_boundary() {
     struct Blocked {
       double ratio;
@@ -335,7 +259,7 @@ class InteriorRefiner {
     std::vector<Blocked> blocked;
     for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c) {
       if (c->info() < 0) continue;
-      const Quality q = measure(c);
+      const TetQuality q = measure(c);
       const P3 center = q.over ? circumcenter(c) : P3();
       if (!q.over || !finite(center) || flat_on_facet(c)) continue;
       const int row = spheres_->find(center);
@@ -430,7 +354,7 @@ class InteriorRefiner {
     std::vector<Cell> stack;
     for (auto c = dt_.finite_cells_begin(); c != dt_.finite_cells_end(); ++c)
       if (c->info() >= 0) stack.push_back(c);
-    flood_labels(std::move(stack));
+    flood_labels(dt_, faces_, std::move(stack));
     auto short_of = [&](const Regions& now, int label) {
       return now.volumes[label] < before.volumes[label] * (1 - 1e-9);
     };
@@ -440,7 +364,7 @@ class InteriorRefiner {
       Cell c = dt_.locate(at);
       if (dt_.is_infinite(c) || c->info() >= 0) continue;
       c->info() = label;
-      flood_labels({c});
+      flood_labels(dt_, faces_, {c});
       now = regions();
     }
     for (std::size_t label = 0; label < before.volumes.size(); ++label)
@@ -481,7 +405,7 @@ class InteriorRefiner {
                            c);
     std::sort(cells.begin(), cells.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
     for (const auto& [t, c] : cells) {
-      const Quality q = measure(c);
+      const TetQuality q = measure(c);
       if (q.over) {
         const P3 center = circumcenter(c);
         if (flat_on_facet(c) || (finite(center) && left_alone(q, spheres_->find(center))))

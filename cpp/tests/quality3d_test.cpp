@@ -1,6 +1,8 @@
 #include "nonobtuse/quality3d.h"
 
 #include "nonobtuse/gabriel3d.h"
+#include "quality3d_shape.h"
+#include "quality3d_small_angle.h"
 
 #include <gtest/gtest.h>
 
@@ -226,6 +228,83 @@ TEST(RefineInterior, RejectsLabelsWithoutBounds) {
   InteriorMesh m = cube_mesh();
   InteriorBounds bounds;  // no volume bound for label 0
   EXPECT_THROW(refine_interior(m, bounds), InvalidInput);
+}
+
+}  // namespace
+}  // namespace nonobtuse
+
+namespace nonobtuse {
+namespace {
+
+// A rectangle p0, p0 + u, p0 + v, p0 + u + v (u . v = 0) in a tilted plane: its corners rounded off the plane,
+// floating point makes its circumcenter (0.225, 0.7, 0.55), far from the rectangle's center p0 + (u + v) / 2 =
+// (0.3, 0.8, 0.4); the circumradius is half the diagonal, sqrt(0.14 + 0.10) / 2.
+TEST(TetShape, FlatInFloatingPointIsExactAndFinite) {
+  const quality3d::P3 a(0.1, 0.7, 0.3), u(0.1, 0.2, 0.3), v(0.3, 0.0, -0.1);
+  const quality3d::P3 b(a.x() + u.x(), a.y() + u.y(), a.z() + u.z()), c(a.x() + v.x(), a.y() + v.y(), a.z() + v.z());
+  const quality3d::P3 d(b.x() + v.x(), b.y() + v.y(), b.z() + v.z());
+  const quality3d::TetShape shape = quality3d::tet_shape(a, b, c, d);
+  EXPECT_TRUE(shape.exact);
+  EXPECT_NEAR(shape.center.x(), 0.3, 1e-9);
+  EXPECT_NEAR(shape.center.y(), 0.8, 1e-9);
+  EXPECT_NEAR(shape.center.z(), 0.4, 1e-9);
+  EXPECT_NEAR(shape.squared_radius, 0.24 / 4, 1e-12);
+}
+
+TEST(TetShape, AFullTetIsFloatingPoint) {
+  const quality3d::TetShape shape = quality3d::tet_shape({0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2});
+  EXPECT_FALSE(shape.exact);
+  EXPECT_EQ(shape.center, quality3d::P3(1, 1, 1));
+  EXPECT_DOUBLE_EQ(shape.squared_radius, 3.0);
+}
+
+}  // namespace
+}  // namespace nonobtuse
+
+namespace nonobtuse {
+namespace {
+
+// A prism of length 8 and height 1 over a 10-degree wedge (apex edge x = y = 0, z in [0, 1]), its long sides in
+// unit strips: the apex edge is the one sharp segment (10 degrees), its ends the sharp apexes. The protecting
+// region holds the ball of radius 1 around the edge's midpoint, the balls of radius 1 around the apexes and the
+// diametral spheres of the first strip's triangles (corners on the edge): (0.5, 0, 0.5) is in it, (5, 0, 0.5) is not
+// (distance 4 from the first strip, whose corners have x <= 1).
+TEST(SharpFeatures, TheProtectingRegionIsNearTheSharpEdgeOnly) {
+  const double t = std::tan(5.0 * 3.14159265358979323846 / 180.0);
+  PLC3 plc;
+  plc.points = {{0, 0, 0}, {0, 0, 1}};
+  auto side = [&](int i, int sign, int z) { return 2 + 4 * (i - 1) + 2 * (sign > 0) + z; };  // x = i, y = sign t i
+  for (int i = 1; i <= 8; ++i)
+    for (int sign : {-1, 1})
+      for (int z = 0; z <= 1; ++z) plc.points.push_back({double(i), sign * t * i, double(z)});
+  auto add = [&](int facet, Triangle tri) { plc.triangles.push_back(tri), plc.facet_ids.push_back(facet); };
+  for (int z = 0; z <= 1; ++z) {  // bottom (0) and top (1): the apex triangle, then quads
+    add(z, {z, side(1, -1, z), side(1, 1, z)});
+    for (int i = 1; i < 8; ++i) {
+      add(z, {side(i, -1, z), side(i + 1, -1, z), side(i + 1, 1, z)});
+      add(z, {side(i, -1, z), side(i + 1, 1, z), side(i, 1, z)});
+    }
+  }
+  for (int sign : {-1, 1}) {  // the long sides (2, 3): the first strip from the apex edge, then quads
+    const int f = sign < 0 ? 2 : 3;
+    add(f, {0, side(1, sign, 0), side(1, sign, 1)}), add(f, {0, side(1, sign, 1), 1});
+    for (int i = 1; i < 8; ++i) {
+      add(f, {side(i, sign, 0), side(i + 1, sign, 0), side(i + 1, sign, 1)});
+      add(f, {side(i, sign, 0), side(i + 1, sign, 1), side(i, sign, 1)});
+    }
+  }
+  add(4, {side(8, -1, 0), side(8, 1, 0), side(8, 1, 1)}), add(4, {side(8, -1, 0), side(8, 1, 1), side(8, -1, 1)});
+  const gabriel3d::PlcState s = gabriel3d::build_plc_state(plc);
+  const quality3d::SharpFeatures features(s, 85, 60);
+  EXPECT_TRUE(features.sharp_subsegment(s, 0, 1));
+  EXPECT_FALSE(features.sharp_subsegment(s, side(8, -1, 0), side(8, 1, 0)));
+  EXPECT_TRUE(features.protects(s, {0.5, 0, 0.5}));
+  EXPECT_FALSE(features.protects(s, {5, 0, 0.5}));
+  EXPECT_FALSE(features.protects(s, {2.5, 0, 0.5}));
+  // with the angle clauses off nothing is sharp or protected
+  const quality3d::SharpFeatures none(s, 0, 0);
+  EXPECT_FALSE(none.sharp_subsegment(s, 0, 1));
+  EXPECT_FALSE(none.protects(s, {0.5, 0, 0.5}));
 }
 
 }  // namespace

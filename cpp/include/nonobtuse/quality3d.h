@@ -77,9 +77,9 @@ struct InteriorRefinement {
   std::vector<int> blocked_rows;       // rows of tets over a bound whose circumcenters could not be inserted
   // The blocked rows left alone near small input angles (the small-angle rule: a tet whose circumcenter lies in the
   // closed diametral sphere of a subsegment or subfacet whose split would lie at a sharp feature, a segment where
-  // facets meet below 85 degrees or an apex below 60, or, over the radius-edge bound alone, would be shorter than
-  // the tet's shortest edge; see quality3d_boundary.h), and those with four corners on one facet (flat but for
-  // rounding), sorted.
+  // facets meet below 85 degrees or an apex below 60, and in its protecting region, or, over the radius-edge bound
+  // alone, would be shorter than the tet's shortest edge; see quality3d_boundary.h and quality3d_small_angle.h),
+  // and those with four corners on one facet (flat but for rounding), sorted.
   std::vector<int> small_angle_rows;
   std::vector<Point3> blocked_centers;  // their circumcenters (floating point)
   // The boundary at the end: the subfacets (faces of the Delaunay tetrahedralization, each oriented away from a

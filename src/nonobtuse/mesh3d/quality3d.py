@@ -52,10 +52,10 @@ class Quality3DResult:
             same with the suffix _outside_small_angles (over the tets not left alone), bad_tets (tets over a
             bound at the end), small_angle_tets (those of them the small-angle rule left alone: a tet whose
             circumcenter lies in the closed diametral sphere of a subsegment or subfacet whose split would lie
-            at a sharp feature, a segment where facets meet below 85 degrees or an apex below 60, or, over
-            the radius-edge bound alone, be shorter than the tet's shortest edge;
-            ``cpp/src/quality3d_boundary.h``; and a tet with its four corners on one facet, flat but for
-            rounding),
+            at a sharp feature, a segment where facets meet below 85 degrees or an apex below 60, and in its
+            protecting region, or, over the radius-edge bound alone, be shorter than the tet's shortest edge;
+            ``cpp/src/quality3d_boundary.h``, ``cpp/src/quality3d_small_angle.h``; and a tet with its four
+            corners on one facet, flat but for rounding),
             bad_tets_outside_small_angles, blocked_centers (tets over a bound the last interior pass left:
             centers that no split frees), inserted_by_passes (circumcenters the interior passes inserted),
             boundary_points_by_passes / boundary_rounds / refused_splits (the passes' own boundary splits,

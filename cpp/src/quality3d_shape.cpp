@@ -1,0 +1,36 @@
+// A tetrahedron's circumsphere, exact where floating point cannot tell it (see quality3d_shape.h).
+#include "quality3d_shape.h"
+
+#include <CGAL/Cartesian_converter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace nonobtuse::quality3d {
+
+TetShape tet_shape(const P3& a, const P3& b, const P3& c, const P3& d) {
+  const auto u = b - a, v = c - a, w = d - a;
+  const double det = u * CGAL::cross_product(v, w);  // as numpy's einsum of u and cross(v, w)
+  const double l = std::sqrt(std::max({u.squared_length(), v.squared_length(), w.squared_length()}));
+  if (std::abs(det) >= 0x1p-20 * (l * l * l))
+    return {CGAL::circumcenter(a, b, c, d), CGAL::squared_radius(a, b, c, d), false};
+  const CGAL::Cartesian_converter<gabriel3d::K, gabriel3d::EK> to_exact;
+  const gabriel3d::EK::Point_3 ea = to_exact(a), eb = to_exact(b), ec = to_exact(c), ed = to_exact(d);
+  const auto center = CGAL::circumcenter(ea, eb, ec, ed);
+  return {P3(CGAL::to_double(center.x()), CGAL::to_double(center.y()), CGAL::to_double(center.z())),
+          CGAL::to_double(CGAL::squared_distance(center, ea)), true};
+}
+
+TetQuality tet_quality(const P3& a, const P3& b, const P3& c, const P3& d, double radius_edge, double volume_bound) {
+  double shortest = std::numeric_limits<double>::infinity();
+  const P3* v[4] = {&a, &b, &c, &d};
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) shortest = std::min(shortest, CGAL::squared_distance(*v[i], *v[j]));
+  const double ratio = std::sqrt(tet_shape(a, b, c, d).squared_radius / shortest);
+  const bool over_volume = std::abs(CGAL::volume(a, b, c, d)) > volume_bound;
+  const bool over = (radius_edge > 0 && ratio > radius_edge) || over_volume || !std::isfinite(ratio);
+  return {ratio, std::sqrt(shortest), over, over_volume};
+}
+
+}  // namespace nonobtuse::quality3d
