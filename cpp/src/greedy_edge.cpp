@@ -8,12 +8,19 @@
 
 namespace nonobtuse::refine2d {
 
-double greedy_parameter(const State& st, const Side& start, const Point& s, const Point& e,
-                        const std::vector<Vertex_handle>& q, Sight sight, Vertex_handle* blocker) {
+Encroachers with_points(const std::vector<Vertex_handle>& vertices) {
+  Encroachers q;
+  q.reserve(vertices.size());
+  for (Vertex_handle v : vertices) q.push_back({v->point(), v});
+  return q;
+}
+
+double greedy_parameter(const State& st, const Side& start, const Point& s, const Point& e, const Encroachers& q,
+                        Sight sight, Vertex_handle* blocker) {
   double dx = e.x() - s.x(), dy = e.y() - s.y();
   std::vector<std::pair<double, Vertex_handle>> order;
-  for (Vertex_handle v : q) {
-    double wx = v->point().x() - s.x(), wy = v->point().y() - s.y();
+  for (const auto& [point, v] : q) {
+    double wx = point.x() - s.x(), wy = point.y() - s.y();
     double den = wx * dx + wy * dy;  // > |w|^2 > 0 for an encroacher: (q - s).(e - s) = |q - s|^2 - (s - q).(e - q)
     if (den > 0) order.emplace_back((wx * wx + wy * wy) / den, v);
   }
@@ -48,16 +55,16 @@ double greedy_parameter(const State& st, const Side& start, const Point& s, cons
   return best;
 }
 
-void keep_encroaching(const Point& s, const Point& e, std::vector<Vertex_handle>& q) {
-  q.erase(std::remove_if(q.begin(), q.end(), [&](Vertex_handle v) { return !inside_diametral_disk(s, e, v->point()); }),
+void keep_encroaching(const Point& s, const Point& e, Encroachers& q) {
+  q.erase(std::remove_if(q.begin(), q.end(), [&](const Encroacher& c) { return !inside_diametral_disk(s, e, c.p); }),
           q.end());
 }
 
-bool subsegment_is_empty(const State& st, const Side& start, const Point& s, const Point& p,
-                         const std::vector<Vertex_handle>& q, Sight sight) {
+bool subsegment_is_empty(const State& st, const Side& start, const Point& s, const Point& p, const Encroachers& q,
+                         Sight sight) {
   std::vector<Vertex_handle> inside;
-  for (Vertex_handle v : q)
-    if (inside_diametral_disk(s, p, v->point())) inside.push_back(v);
+  for (const Encroacher& c : q)
+    if (inside_diametral_disk(s, p, c.p)) inside.push_back(c.v);
   if (inside.empty()) return true;
   if (sight.obstacles != nullptr)
     return std::none_of(inside.begin(), inside.end(), [&](Vertex_handle v) { return sees(st, start, s, p, v, sight); });
@@ -73,7 +80,7 @@ bool subsegment_is_empty(const State& st, const Side& start, const Point& s, con
 
 int greedy_count(const State& st, const Side& side, const DiskWalk& walk) {
   if (walk.encroachers.empty()) return 0;  // most sides: no shadows to build (a polygon's million edges)
-  std::vector<Vertex_handle> q = walk.encroachers;
+  Encroachers q = with_points(walk.encroachers);
   // Every subsegment below lies on the side, up to rounding: each vertex's sight questions scan only the obstacles
   // near its triangle with the side.
   const ObstaclesInFront in_front(side.s->point(), side.e->point(), walk.obstacles);

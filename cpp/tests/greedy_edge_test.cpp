@@ -18,13 +18,14 @@ TEST(GreedyEdge, Figure3GreedyEndAndEmptiness) {
   testing::OwningState st(testing::half_disk({{17, 15}, {39, 30.7}}));
   const Side e{st.v(200), st.v(0)};
   DiskWalk w = walk_diametral_disk(st, e);
+  const Encroachers q = with_points(w.encroachers);
   Vertex_handle blocker;
   for (Sight sight : {Sight{}, Sight{&w.obstacles}}) {
-    EXPECT_NEAR(greedy_parameter(st, e, e.s->point(), e.e->point(), w.encroachers, sight, &blocker), 514.0 / 1700,
+    EXPECT_NEAR(greedy_parameter(st, e, e.s->point(), e.e->point(), q, sight, &blocker), 514.0 / 1700,
                 1e-15);
     EXPECT_EQ(blocker, st.v(201));
-    EXPECT_TRUE(subsegment_is_empty(st, e, Point(0, 0), Point(30, 0), w.encroachers, sight));
-    EXPECT_FALSE(subsegment_is_empty(st, e, Point(0, 0), Point(31, 0), w.encroachers, sight));
+    EXPECT_TRUE(subsegment_is_empty(st, e, Point(0, 0), Point(30, 0), q, sight));
+    EXPECT_FALSE(subsegment_is_empty(st, e, Point(0, 0), Point(31, 0), q, sight));
   }
   EXPECT_EQ(greedy_count(st, e, w), 1);
 }
@@ -37,9 +38,12 @@ TEST(GreedyEdge, Figure4CountsThreePoints) {
   DiskWalk w = walk_diametral_disk(st, e);
   ASSERT_EQ(w.encroachers.size(), 3u);
   EXPECT_EQ(greedy_count(st, e, w), 3);
-  std::vector<Vertex_handle> q = w.encroachers;
+  Encroachers q = with_points(w.encroachers);
   keep_encroaching(Point(20.2, 0), Point(100, 0), q);
-  EXPECT_EQ(q, (std::vector<Vertex_handle>{st.v(202), st.v(203)}));
+  ASSERT_EQ(q.size(), 2u);
+  EXPECT_EQ(q[0].v, st.v(202));
+  EXPECT_EQ(q[1].v, st.v(203));
+  EXPECT_EQ(q[1].p, Point(80, 2));
 }
 
 }  // namespace
