@@ -7,15 +7,21 @@
 
 namespace nonobtuse::refine2d {
 
-// An encroacher with its point stored alongside: the sweeps re-test every remaining encroacher at every step, and
-// a point set's hull edge has a large part of the input in its disk, so the scans read contiguous points instead
-// of chasing a vertex handle each.
+// The encroachers of an edge with their points stored alongside, sorted by the coordinate along which the edge
+// extends most: the sweeps re-test the remaining encroachers at every step, and a point set's hull edge has a
+// large part of the input in its disk. Contiguous points spare a vertex handle dereference each, and the order
+// lets a short subsegment's test skip, by binary search, the points whose coordinate lies outside its disk's
+// (every consumer's answer is independent of the order).
 struct Encroacher {
   Point p;
   Vertex_handle v;
 };
-using Encroachers = std::vector<Encroacher>;
-Encroachers with_points(const std::vector<Vertex_handle>& vertices);
+struct Encroachers {
+  std::vector<Encroacher> items;  // sorted by p[axis] (ties: as given)
+  int axis = 0;                   // 0: x, 1: y
+};
+// `vertices` with their points, the axis chosen by the edge [s, e].
+Encroachers with_points(const std::vector<Vertex_handle>& vertices, const Point& s, const Point& e);
 
 // The greedy end from s toward e (s on the side `start`, whose left face touches [s, e]): the smallest
 // t = |q - s|^2 / ((q - s) . d), d = e - s, over the vertices q of `q` that [s, s + t d] would see (`sight`;

@@ -111,12 +111,12 @@ Step choose_point(State& st, const Side& cur, const Encroachers& q, std::set<Key
 // fail (the apex is not among them), the walk is redone.
 void sweep(State& st, Side cur, std::set<Key>& deferred) {
   // Interfaces: both sides at once (the walk collected both sides' encroachers).
-  Encroachers q = with_points(walk_diametral_disk(st, cur).encroachers);
+  Encroachers q = with_points(walk_diametral_disk(st, cur).encroachers, cur.s->point(), cur.e->point());
   while (st.budget_left() && (st.is_violated(cur) || st.is_violated({cur.e, cur.s}))) {
     keep_encroaching(cur.s->point(), cur.e->point(), q);
     const Vertex_handle apex = st.apex(cur);
-    if (std::none_of(q.begin(), q.end(), [&](const Encroacher& c) { return c.v == apex; }))
-      q = with_points(walk_diametral_disk(st, cur).encroachers);
+    if (std::none_of(q.items.begin(), q.items.end(), [&](const Encroacher& c) { return c.v == apex; }))
+      q = with_points(walk_diametral_disk(st, cur).encroachers, cur.s->point(), cur.e->point());
     Point p;
     Step step = choose_point(st, cur, q, deferred, p);
     if (step == Step::Defer) st.enqueue(cur);
