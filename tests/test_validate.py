@@ -51,6 +51,15 @@ def test_each_invalid_kind_is_named(domain, message):
         validate_domain(domain)
 
 
+def test_duplicate_points_with_every_other_x_distinct():
+    # Random x are all distinct: validation passes on one sort of x; one repeated point is still named.
+    points = np.random.default_rng(1).uniform(0, 1, (50, 2))
+    assert len(validate_domain(Domain(points=points, convex_hull=True)).points) == 50
+    points[37] = points[12]
+    with pytest.raises(InvalidInputError, match=r"duplicate points: point 12 at .* and point 37 at"):
+        validate_domain(Domain(points=points, convex_hull=True))
+
+
 def test_duplicate_segments_are_dropped_and_recorded():
     d = validate_domain(square(extra_segments=[[1, 0], [2, 3]]))  # (1, 0) repeats (0, 1) reversed
     assert d.segments.tolist() == LOOP

@@ -2,18 +2,49 @@
 #include "greedy_edge.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "split_point.h"
 
 namespace nonobtuse::refine2d {
 
-double greedy_parameter(const State& st, const Side& start, const Point& s, const Point& e,
-                        const std::vector<Vertex_handle>& q, Sight sight, Vertex_handle* blocker) {
+Encroachers with_points(const std::vector<Vertex_handle>& vertices, const Point& s, const Point& e) {
+  Encroachers q;
+  q.axis = std::abs(e.y() - s.y()) > std::abs(e.x() - s.x()) ? 1 : 0;
+  q.items.reserve(vertices.size());
+  for (Vertex_handle v : vertices) q.items.push_back({v->point(), v});
+  std::stable_sort(q.items.begin(), q.items.end(),
+                   [axis = q.axis](const Encroacher& a, const Encroacher& b) { return a.p[axis] < b.p[axis]; });
+  return q;
+}
+
+namespace {
+
+// The items whose coordinate along q.axis may lie strictly inside the diametral disk of [s, p]: that disk spans
+// [min - |other|/2, max + |other|/2] along the axis (centre +- radius, radius <= (|dx| + |dy|) / 2), where min and
+// max are s's and p's coordinates and |other| their difference along the other axis. The float bounds use
+// |other| itself: its computed value is at least half the exact one, so the real-number bounds enclose the disk's,
+// and rounding to nearest is monotone, so no double coordinate inside the exact span falls outside the rounded one.
+std::pair<std::vector<Encroacher>::const_iterator, std::vector<Encroacher>::const_iterator> may_be_inside(
+    const Encroachers& q, const Point& s, const Point& p) {
+  const int a = q.axis;
+  const double margin = std::abs(p[1 - a] - s[1 - a]);
+  const double lo = std::min(s[a], p[a]) - margin, hi = std::max(s[a], p[a]) + margin;
+  auto first = std::lower_bound(q.items.begin(), q.items.end(), lo,
+                                [a](const Encroacher& c, double x) { return c.p[a] < x; });
+  auto last = std::upper_bound(first, q.items.end(), hi, [a](double x, const Encroacher& c) { return x < c.p[a]; });
+  return {first, last};
+}
+
+}  // namespace
+
+double greedy_parameter(const State& st, const Side& start, const Point& s, const Point& e, const Encroachers& q,
+                        Sight sight, Vertex_handle* blocker) {
   double dx = e.x() - s.x(), dy = e.y() - s.y();
   std::vector<std::pair<double, Vertex_handle>> order;
-  for (Vertex_handle v : q) {
-    double wx = v->point().x() - s.x(), wy = v->point().y() - s.y();
+  for (const auto& [point, v] : q.items) {
+    double wx = point.x() - s.x(), wy = point.y() - s.y();
     double den = wx * dx + wy * dy;  // > |w|^2 > 0 for an encroacher: (q - s).(e - s) = |q - s|^2 - (s - q).(e - q)
     if (den > 0) order.emplace_back((wx * wx + wy * wy) / den, v);
   }
@@ -48,16 +79,22 @@ double greedy_parameter(const State& st, const Side& start, const Point& s, cons
   return best;
 }
 
-void keep_encroaching(const Point& s, const Point& e, std::vector<Vertex_handle>& q) {
-  q.erase(std::remove_if(q.begin(), q.end(), [&](Vertex_handle v) { return !inside_diametral_disk(s, e, v->point()); }),
-          q.end());
+void keep_encroaching(const Point& s, const Point& e, Encroachers& q) {
+  auto [first, last] = may_be_inside(q, s, e);
+  const auto kept_from = first - q.items.cbegin(), kept_to = last - q.items.cbegin();
+  q.items.erase(q.items.begin() + kept_to, q.items.end());
+  q.items.erase(q.items.begin(), q.items.begin() + kept_from);
+  q.items.erase(std::remove_if(q.items.begin(), q.items.end(),
+                               [&](const Encroacher& c) { return !inside_diametral_disk(s, e, c.p); }),
+                q.items.end());
 }
 
-bool subsegment_is_empty(const State& st, const Side& start, const Point& s, const Point& p,
-                         const std::vector<Vertex_handle>& q, Sight sight) {
+bool subsegment_is_empty(const State& st, const Side& start, const Point& s, const Point& p, const Encroachers& q,
+                         Sight sight) {
   std::vector<Vertex_handle> inside;
-  for (Vertex_handle v : q)
-    if (inside_diametral_disk(s, p, v->point())) inside.push_back(v);
+  auto [first, last] = may_be_inside(q, s, p);
+  for (auto c = first; c != last; ++c)
+    if (inside_diametral_disk(s, p, c->p)) inside.push_back(c->v);
   if (inside.empty()) return true;
   if (sight.obstacles != nullptr)
     return std::none_of(inside.begin(), inside.end(), [&](Vertex_handle v) { return sees(st, start, s, p, v, sight); });
@@ -73,7 +110,7 @@ bool subsegment_is_empty(const State& st, const Side& start, const Point& s, con
 
 int greedy_count(const State& st, const Side& side, const DiskWalk& walk) {
   if (walk.encroachers.empty()) return 0;  // most sides: no shadows to build (a polygon's million edges)
-  std::vector<Vertex_handle> q = walk.encroachers;
+  Encroachers q = with_points(walk.encroachers, side.s->point(), side.e->point());
   // Every subsegment below lies on the side, up to rounding: each vertex's sight questions scan only the obstacles
   // near its triangle with the side.
   const ObstaclesInFront in_front(side.s->point(), side.e->point(), walk.obstacles);
@@ -83,9 +120,9 @@ int greedy_count(const State& st, const Side& side, const DiskWalk& walk) {
   int count = 0;
   // Each step places a point strictly between x and e; the count of the exact greedy is at most |q| (projecting
   // every vertex works), the bound below only guards against rounding making steps degenerate.
-  for (std::size_t step = 0; step < 2 * q.size() + 8; ++step) {
+  for (std::size_t step = 0; step < 2 * q.items.size() + 8; ++step) {
     keep_encroaching(x, e, q);
-    if (q.empty()) break;
+    if (q.items.empty()) break;
     double t = greedy_parameter(st, side, x, e, q, sight);
     if (t >= 1) break;
     Point p;

@@ -50,14 +50,14 @@ bool blocked_by_violated_boundary(const State& st, Vertex_handle blocker) {
 enum class Step { Place, Defer, Stuck };
 
 // Chooses the next Steiner point on `cur` (violated) given the walk's encroachers.
-Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& deferred, Point& p) {
+Step choose_point(State& st, const Side& cur, const Encroachers& q, std::set<Key>& deferred, Point& p) {
   const Point &s = cur.s->point(), &e = cur.e->point();
   auto empty = [&](const Point& c) {
-    return splittable(st, cur, c) && subsegment_is_empty(st, cur, s, c, w.encroachers, Sight{});
+    return splittable(st, cur, c) && subsegment_is_empty(st, cur, s, c, q, Sight{});
   };
   auto allowed = [&](const Point& c) { return empty(c) && !forbidder(st, cur, c); };
   Vertex_handle blocker;
-  const double t_greedy = greedy_parameter(st, cur, s, e, w.encroachers, Sight{}, &blocker);
+  const double t_greedy = greedy_parameter(st, cur, s, e, q, Sight{}, &blocker);
   const bool may_defer = !deferred.count(key(cur));
   auto defer = [&] {
     deferred.insert(key(cur));
@@ -87,7 +87,7 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
         // point, farther along, covers more (the layers of experiments/figure6_propagation.py: 2n - 1 -> n).
         const double te = std::min(t_end, 1.0);
         const Point end = te < 1 ? Point(s.x() + te * (e.x() - s.x()), s.y() + te * (e.y() - s.y())) : e;
-        if (subsegment_is_empty(st, cur, p, end, w.encroachers, Sight{})) return Step::Place;
+        if (subsegment_is_empty(st, cur, p, end, q, Sight{})) return Step::Place;
         break;
       }
       t = std::min(t_start, t * (1 - 0x1p-40));
@@ -110,14 +110,15 @@ Step choose_point(State& st, const Side& cur, const DiskWalk& w, std::set<Key>& 
 // they do not encroach its other subsegments, so the first walk's encroachers stay a superset; should that ever
 // fail (the apex is not among them), the walk is redone.
 void sweep(State& st, Side cur, std::set<Key>& deferred) {
-  DiskWalk w = walk_diametral_disk(st, cur);
   // Interfaces: both sides at once (the walk collected both sides' encroachers).
+  Encroachers q = with_points(walk_diametral_disk(st, cur).encroachers, cur.s->point(), cur.e->point());
   while (st.budget_left() && (st.is_violated(cur) || st.is_violated({cur.e, cur.s}))) {
-    keep_encroaching(cur.s->point(), cur.e->point(), w.encroachers);
-    if (std::find(w.encroachers.begin(), w.encroachers.end(), st.apex(cur)) == w.encroachers.end())
-      w = walk_diametral_disk(st, cur);
+    keep_encroaching(cur.s->point(), cur.e->point(), q);
+    const Vertex_handle apex = st.apex(cur);
+    if (std::none_of(q.items.begin(), q.items.end(), [&](const Encroacher& c) { return c.v == apex; }))
+      q = with_points(walk_diametral_disk(st, cur).encroachers, cur.s->point(), cur.e->point());
     Point p;
-    Step step = choose_point(st, cur, w, deferred, p);
+    Step step = choose_point(st, cur, q, deferred, p);
     if (step == Step::Defer) st.enqueue(cur);
     if (step != Step::Place) return;
     Vertex_handle v = split(st, cur, p);

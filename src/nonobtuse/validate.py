@@ -202,6 +202,11 @@ def _check_values(d: Domain) -> None:
 
 
 def _check_duplicate_points(d: Domain) -> None:
+    # Equal points have equal x: without two equal x (random inputs), one plain sort of x settles it (0.01 s
+    # at 1e6 points against 0.2 s for the lexicographic sort below, which runs otherwise).
+    x = np.sort(d.points[:, 0])
+    if not (x[1:] == x[:-1]).any():
+        return
     # Lexicographic order of (x, y), stable: as np.lexsort((y, x)), in half its time at 1e6 points (a complex
     # number orders by its real part, then its imaginary part; the points are finite here).
     xy = np.ascontiguousarray(d.points).view(np.complex128).ravel()
