@@ -217,8 +217,9 @@ class InteriorRefiner {
     vertex_.push_back(v);
     if (splitter_) splitter_->add_interior_point(p);
     std::vector<Cell> incident;
-    dt_.finite_incident_cells(v, std::back_inserter(incident));
-    for (Cell n : incident) n->info() = label;  // the cavity is in one region: it crosses no subfacet
+    dt_.incident_cells(v, std::back_inserter(incident));
+    // the cavity is in one region (it crosses no subfacet); an infinite cell (p on the hull) is outside it
+    for (Cell n : incident) n->info() = dt_.is_infinite(n) ? -1 : label;
     for (Cell n : incident) push_if_bad(n);
     return true;
   }
@@ -296,8 +297,8 @@ class InteriorRefiner {
       Vertex v = dt_.insert(p, hint);
       v->info() = static_cast<int>(i);
       vertex_.push_back(v);
-      std::vector<Cell> incident;
-      dt_.finite_incident_cells(v, std::back_inserter(incident));
+      std::vector<Cell> incident;  // infinite ones too: a point on the hull makes infinite cells, unlabelled
+      dt_.incident_cells(v, std::back_inserter(incident));
       for (Cell n : incident) n->info() = -1;
       hint = v->cell();
     }

@@ -165,6 +165,22 @@ TEST(RefineInterior, BlockedCenterSplitsTheBoundaryAndTheResultStaysGabriel) {
   EXPECT_THROW(refine_interior(m, bounds), InvalidInput);
 }
 
+TEST(RefineInterior, SameOutputOnEveryCallInOneProcess) {
+  // Boundary points on the hull make infinite cells; their labels were left as the allocator's memory had them, so a
+  // second identical call (memory reused) could take an infinite cell for the domain side of a subfacet and orient
+  // it the wrong way. Every call: the same rows, every subfacet facing away from the tet's inside (the origin).
+  InteriorBounds bounds;
+  bounds.volume_bounds = {0.5};
+  bounds.sharp_dihedral_degrees = bounds.small_apex_degrees = 0;
+  const auto first = refine_interior(regular_tet_boundary(), bounds);
+  for (int call = 0; call < 3; ++call) {
+    const auto r = refine_interior(regular_tet_boundary(), bounds);
+    EXPECT_EQ(r.faces, first.faces);
+    EXPECT_EQ(r.tets, first.tets);
+    for (const auto& f : r.faces) EXPECT_LT(det3(r.points[f[0]], r.points[f[1]], r.points[f[2]], {0, 0, 0}), 0);
+  }
+}
+
 TEST(RefineInterior, SmallAngleRuleLeavesTheTetAloneAndCountsIt) {
   // The regular tet: its facets meet at dihedral angles of acos(1/3) = 70.53 degrees (below the default 85: every
   // edge is sharp) and each edge leans over the facets through its ends at acos(1/sqrt 3) = 54.74 degrees (below
