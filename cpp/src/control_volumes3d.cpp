@@ -248,9 +248,9 @@ D3 triangle_circumcenter(const D3& a, const D3& b, const D3& c) {
 
 // The circumcenter of a positive tet in doubles or, where the tet is flat in doubles (den == 0: the doubles
 // would give NaN; *flat says so), computed exactly and rounded. Only these tets take the exact path, so every
-// other tet's center, hence every other output, is the one of the doubles bit for bit. Rare (34 of the
-// 8,880 tets of a UV sphere 30 x 40, none on tests/data/3d and ../shared/data/3d), so the exact kernel stays
-// off the loop's common path.
+// other tet's center, hence every other output, is the one of the doubles bit for bit. Rare (34 of the 3,666
+// tets of check3d's UV sphere 30 x 40; none on tests/data/3d, ../shared/data/3d and the 6.3M tets of the
+// 1e6-face torus), so the exact kernel stays off the loop's common path.
 D3 tet_circumcenter(const Point3& pa, const Point3& pb, const Point3& pc, const Point3& pd, bool* flat) {
   const D3 a = d3(pa), u = d3(pb) - a, v = d3(pc) - a, w = d3(pd) - a;
   const double den = dot(u, cross(v, w));
