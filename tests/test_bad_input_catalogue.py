@@ -31,12 +31,14 @@ import shlex
 import subprocess
 import sys
 from dataclasses import dataclass, field
+from fractions import Fraction
 from pathlib import Path
 
 import pytest
 
 import nonobtuse
 from nonobtuse.cli import main
+from nonobtuse.mesh3d import load_plc, tetrahedralize
 
 DEFECT = "issue 13 defect, fix under way"
 
@@ -562,19 +564,28 @@ def test_a_utf8_bom_does_not_lose_a_vertex(tmp_path, capsys):
         assert (code, got["points"], got["tets"]) == (want[0], want[1]["points"], want[1]["tets"])
 
 
-FLAT_TETS = ("control volumes of tets flat in floating point (exact volume > 0) are not computed: check3d "
-             "reports total_volume null and counts them in flat_in_floating_point")
-
-
-@pytest.mark.xfail(strict=True, reason=FLAT_TETS)
 def test_check3d_reports_finite_volumes_on_a_uv_sphere(tmp_path):
-    # A UV sphere 30 x 40 is a valid closed surface: its tetrahedralization has positive volume, a little
-    # under the ball's 4 pi / 3; the JSON output is strict JSON (no NaN) and nothing is printed as a warning.
+    # A UV sphere 30 x 40 is a valid closed surface whose tetrahedralization has tets of positive exact volume
+    # that are flat in floating point (cocircular ring points): their circumcenters are computed exactly. The
+    # control volumes then add up to the volume of the tetrahedralization, summed here exactly in rationals,
+    # within rounding; the JSON output is strict JSON (no NaN) and nothing is printed as a warning.
     (tmp_path / "uv.off").write_text(uv_sphere())
     code, out, err = _subprocess_json(["check3d", "uv.off"], tmp_path)
     assert "Warning" not in err, err[-500:]
     assert code in (0, 1) and out is not None
-    assert out["tets"] > 0 and 4.0 < out["control_volumes"]["total_volume"] < 4 * 3.1415927 / 3
+    assert out["control_volumes"]["flat_in_floating_point"] > 0
+    mesh = tetrahedralize(load_plc(str(tmp_path / "uv.off")), out["backend"])
+    assert len(mesh.tets) == out["tets"]
+    exact = sum(_exact_volume(mesh.points[t]) for t in mesh.tets)
+    assert 4.0 < exact < 4 * Fraction(31415927, 10**7) / 3
+    assert out["control_volumes"]["total_volume"] == pytest.approx(float(exact), rel=1e-13)
+
+
+def _exact_volume(corners) -> Fraction:
+    a, b, c, d = ([Fraction(float(x)) for x in q] for q in corners)
+    u, v, w = ([q[i] - a[i] for i in range(3)] for q in (b, c, d))
+    return (u[0] * (v[1] * w[2] - v[2] * w[1]) + u[1] * (v[2] * w[0] - v[0] * w[2])
+            + u[2] * (v[0] * w[1] - v[1] * w[0])) / 6
 
 
 def test_a_flipped_face_is_reoriented_not_refused(tmp_path, capsys):

@@ -129,6 +129,25 @@ def test_exact_signs_agree_with_clear_float_values(coords):
     assert cv.negative_couplings == int((cv.signs < 0).sum())
 
 
+def test_tets_flat_in_floating_point_get_exact_circumcenters_in_the_core_and_numpy():
+    # The points of a UV sphere 30 x 40 (poles and 29 rings of 40): their Delaunay tetrahedralization has tets
+    # of positive exact volume whose triple product is 0 in doubles (cocircular ring points). Their
+    # circumcenters are computed exactly, the same in C++ and numpy: every piece finite, the floats equal.
+    t = np.pi * np.arange(1, 30) / 30
+    f = 2 * np.pi * np.arange(40) / 40
+    rings = np.stack([np.outer(np.sin(t), np.cos(f)), np.outer(np.sin(t), np.sin(f)),
+                      np.repeat(np.cos(t)[:, None], 40, axis=1)], axis=2).reshape(-1, 3)
+    points = np.vstack([[0.0, 0.0, 1.0], rings, [0.0, 0.0, -1.0]])
+    tets = np.asarray(_core.delaunay_tetrahedra(points))
+    cv = control_volumes3d(tetmesh(points, tets))
+    assert cv.flat_in_floating_point > 0
+    assert np.isfinite(cv.dual_areas).all() and np.isfinite(cv.volumes).all()
+    shares = tet_voronoi_shares(points, tets)
+    np.testing.assert_array_equal(cv.volumes, np.bincount(tets.ravel(), weights=shares.ravel(),
+                                                          minlength=len(points)))
+    assert cv.volumes.sum() == pytest.approx(signed_tet_volumes(points, tets).sum(), rel=1e-13)
+
+
 @settings(derandomize=True, deadline=None, max_examples=20)
 @given(st.integers(0, 2**32 - 1), st.integers(5, 400))
 def test_core_magnitudes_are_the_numpy_formulas_bit_for_bit(seed, n):

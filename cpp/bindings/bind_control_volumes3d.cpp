@@ -33,7 +33,7 @@ void bind_control_volumes3d(py::module_& m) {
       "(InvalidInputError otherwise). Returns a dict: edges (E,2) int64 (a < b, sorted), sign (E,) int8\n"
       "(-1, 0, +1), dual_areas (E,) float64 (exact sign times the float magnitude), lengths (E,) float64,\n"
       "volumes (n,) float64, exact_evaluations (int: edges the interval filter left to exact arithmetic),\n"
-      "flat_in_floating_point (int: tets flat in doubles, whose pieces are NaN).");
+      "flat_in_floating_point (int: tets flat in doubles, whose circumcenters are exact, rounded).");
 }
 
 }  // namespace nonobtuse::bindings

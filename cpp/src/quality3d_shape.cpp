@@ -1,11 +1,11 @@
 // A tetrahedron's circumsphere, exact where floating point cannot tell it (see quality3d_shape.h).
 #include "quality3d_shape.h"
 
-#include <CGAL/Cartesian_converter.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "exact_circumsphere.h"
 
 namespace nonobtuse::quality3d {
 
@@ -15,11 +15,9 @@ TetShape tet_shape(const P3& a, const P3& b, const P3& c, const P3& d) {
   const double l = std::sqrt(std::max({u.squared_length(), v.squared_length(), w.squared_length()}));
   if (std::abs(det) >= 0x1p-20 * (l * l * l))
     return {CGAL::circumcenter(a, b, c, d), CGAL::squared_radius(a, b, c, d), false};
-  const CGAL::Cartesian_converter<gabriel3d::K, gabriel3d::EK> to_exact;
-  const gabriel3d::EK::Point_3 ea = to_exact(a), eb = to_exact(b), ec = to_exact(c), ed = to_exact(d);
-  const auto center = CGAL::circumcenter(ea, eb, ec, ed);
-  return {P3(CGAL::to_double(center.x()), CGAL::to_double(center.y()), CGAL::to_double(center.z())),
-          CGAL::to_double(CGAL::squared_distance(center, ea)), true};
+  auto point = [](const P3& p) { return Point3{p.x(), p.y(), p.z()}; };
+  const Circumsphere s = exact_circumsphere(point(a), point(b), point(c), point(d));
+  return {P3(s.center.x, s.center.y, s.center.z), s.squared_radius, true};
 }
 
 TetQuality tet_quality(const P3& a, const P3& b, const P3& c, const P3& d, double radius_edge, double volume_bound) {

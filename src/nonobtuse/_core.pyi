@@ -648,7 +648,7 @@ def control_volumes3d(points: typing.Annotated[numpy.typing.ArrayLike, numpy.flo
     (InvalidInputError otherwise). Returns a dict: edges (E,2) int64 (a < b, sorted), sign (E,) int8
     (-1, 0, +1), dual_areas (E,) float64 (exact sign times the float magnitude), lengths (E,) float64,
     volumes (n,) float64, exact_evaluations (int: edges the interval filter left to exact arithmetic),
-    flat_in_floating_point (int: tets flat in doubles, whose pieces are NaN).
+    flat_in_floating_point (int: tets flat in doubles, whose circumcenters are exact, rounded).
     """
 def coupling_signs(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], triangle_region: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], conductivity: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> EdgeClassification:
     """

@@ -20,6 +20,7 @@ struct ControlVolumes3D {
   std::vector<double> volumes;      // per point: its Voronoi cell clipped to the mesh (0 for unused points)
   int exact_evaluations = 0;        // edges the interval filter could not decide (evaluated exactly)
   long flat_in_floating_point = 0;  // tets whose circumcenter denominator (b-a).((c-a)x(d-a)) is 0 in doubles
+                                    // (their circumcenter is computed exactly, then rounded)
 };
 
 // The exact sign of every dual area A_e. sign(A_e) = sign(sum over T of ((C_f1 - M) x (C_T - M) +
@@ -28,9 +29,9 @@ struct ControlVolumes3D {
 // point, no division: the pieces are put over one positive common denominator).
 // The magnitudes are floating point: each tet's piece of A_e from the circumcenters in doubles, summed over the
 // tets around e in tet order; a vertex's volume is the sum over its tets (in order) of the pyramids piece * |e| / 6
-// over the pieces of its edges. A tet that is flat in doubles gives NaN pieces (counted in
-// flat_in_floating_point). The arithmetic is the one of nonobtuse.mesh3d.control_volumes3d's numpy formulas,
-// operation for operation.
+// over the pieces of its edges. The circumcenter of a tet that is flat in doubles (denominator 0, counted in
+// flat_in_floating_point; its exact volume is positive) is computed exactly and rounded, so no piece is NaN.
+// The arithmetic is the one of nonobtuse.mesh3d.control_volumes3d's numpy formulas, operation for operation.
 // tets: indices into points, each positively oriented (CGAL orientation, exact); InvalidInput on an index out
 // of range or a tet that is not positively oriented (flat or inverted), naming the tet and its vertices.
 // Cost: O(t) for t tets (a counting sort of the 6 t edge pieces by their smaller end), plus exact arithmetic for

@@ -44,7 +44,7 @@ def _control_volumes(cv: dict[str, Any]) -> list[tuple[str, str]]:
                                f"{_number(cv['min_coupling'])}; floating point)"),
         ("zero couplings", _number(cv["zero_couplings"])),
         ("total volume", _number(cv["total_volume"]) + "  (length units cubed)"
-         + (f"; {flat:,} tets flat in floating point not counted" if flat else "")),
+         + (f"; {flat:,} tets flat in floating point, their circumcenters exact" if flat else "")),
     ]
 
 

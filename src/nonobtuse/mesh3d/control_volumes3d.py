@@ -43,7 +43,7 @@ class ControlVolumes3D:
     negative_couplings: number of edges whose coupling is exactly negative (a positive off-diagonal).
     exact_evaluations: edges whose sign the interval filter left to exact arithmetic.
     flat_in_floating_point: tets whose volume is positive (exact orientation) but whose circumcenter
-                  denominator is 0 in floating point: their pieces are NaN.
+                  denominator is 0 in floating point: their circumcenters are computed exactly and rounded.
     """
 
     edges: np.ndarray
@@ -84,14 +84,33 @@ def tet_circumcenters(a: np.ndarray, b: np.ndarray, c: np.ndarray, d: np.ndarray
     u, v, w = b - a, c - a, d - a
     num = ((u * u).sum(1)[:, None] * np.cross(v, w) + (v * v).sum(1)[:, None] * np.cross(w, u)
            + (w * w).sum(1)[:, None] * np.cross(u, v))
-    return a + num / (2.0 * (u * np.cross(v, w)).sum(1)[:, None])
+    return a + num / (2.0 * _triple_products(u, v, w)[:, None])
+
+
+def _triple_products(u: np.ndarray, v: np.ndarray, w: np.ndarray) -> np.ndarray:
+    """u . (v x w) per row (k,), in the order of the circumcenters' denominator."""
+    return (u * np.cross(v, w)).sum(1)
+
+
+def _robust_tet_circumcenters(p: np.ndarray) -> np.ndarray:
+    """Circumcenters (t, 3) of tets p (t, 4, 3): :func:`tet_circumcenters`, except that a tet flat in
+    floating point (denominator 0, where the doubles give NaN or inf; its exact volume is positive) gets its
+    circumcenter computed in rationals and rounded to nearest, as the C++ core's control volumes do."""
+    from nonobtuse.mesh3d.quality3d_rounds import _exact_circumsphere  # that module imports this one
+
+    with np.errstate(divide="ignore", invalid="ignore"):
+        centers = tet_circumcenters(p[:, 0], p[:, 1], p[:, 2], p[:, 3])
+    a = p[:, 0]
+    for row in np.flatnonzero(_triple_products(p[:, 1] - a, p[:, 2] - a, p[:, 3] - a) == 0):
+        centers[row] = _exact_circumsphere(p[row])[0]
+    return centers
 
 
 def dual_area_pieces(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Per tet and local edge (t, 6): the edge as global vertex pairs (t, 6, 2) and the signed area of the
     quadrilateral piece of its dual Voronoi face inside the tet (t, 6). Tets must be positively oriented."""
     p = points[tets]  # (t, 4, 3)
-    ct = tet_circumcenters(p[:, 0], p[:, 1], p[:, 2], p[:, 3])
+    ct = _robust_tet_circumcenters(p)
     frames = tets[:, _EDGE_FRAMES]  # (t, 6, 4): i, j, k, l
     x = points[frames]  # (t, 6, 4, 3)
     xi, xj, xk, xl = (x[:, :, q].reshape(-1, 3) for q in range(4))
@@ -144,8 +163,7 @@ def control_volumes3d(mesh: TetMesh) -> ControlVolumes3D:
     tets = np.ascontiguousarray(mesh.tets, dtype=np.int64).reshape(-1, 4)
     d = _core.control_volumes3d(points, tets)
     signs, dual, lengths = d["sign"], d["dual_areas"], d["lengths"]
-    with np.errstate(invalid="ignore"):  # NaN areas of tets flat in floating point stay NaN
-        couplings = dual / lengths
+    couplings = dual / lengths
     return ControlVolumes3D(d["edges"].reshape(-1, 2), dual, lengths, couplings, d["volumes"], signs,
                             int((signs < 0).sum()), int(d["exact_evaluations"]),
                             int(d["flat_in_floating_point"]))

@@ -191,8 +191,7 @@ def control_volume_summary(mesh: TetMesh) -> dict[str, Any]:
     """The control-volume summary of ``mesh`` (:meth:`ControlVolumes3D.to_dict`), computed on the points
     scaled exactly by a power of two into a safe range and scaled back (None where the value overflows
     float64). ``flat_in_floating_point``: tets whose volume is positive (exact orientation) but 0 in floating
-    point; their circumcentres cannot be computed, so min_coupling and total_volume are then None when not
-    finite, and negative_couplings counts the other edges only."""
+    point; their circumcentres are computed exactly and rounded."""
     e = power_of_two_exponent(mesh.points)
     scaled = replace(mesh, points=np.ldexp(np.asarray(mesh.points, dtype=np.float64), -e))
     cv = control_volumes3d(scaled)
