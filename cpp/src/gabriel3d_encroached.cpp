@@ -5,7 +5,8 @@
 
 namespace nonobtuse::gabriel3d {
 
-EncroachedSubsegments::EncroachedSubsegments(const PlcState& s, const PointIndex& index) : s_(s), index_(index), balls_(s.points) {
+EncroachedSubsegments::EncroachedSubsegments(const PlcState& s, const PointIndex& index)
+    : s_(s), index_(index), balls_(s.points) {
   for (const auto& [sub, parent] : s.subsegments) track(sub);
 }
 
