@@ -1,17 +1,15 @@
 // Internal: the encroached subsegments of a PLC under refinement, kept up to date point by point instead of
 // rescanning every subsegment. Points are only ever added, so a subsegment stays encroached until it is split, and
 // an unencroached one becomes encroached only by a new point inside its diametral sphere: after each new point
-// only the subsegments whose search balls (gabriel3d_index.h) hold it are tested, and the two halves of a split
+// only the subsegments whose balls (gabriel3d_ball_grid.h) may hold it are tested, and the two halves of a split
 // subsegment get a full query. Decisions are exact (side_of_bounded_sphere); the set always equals what a full
 // scan with deepest_encroacher would find.
 #pragma once
-#include <cstdint>
-#include <map>
 #include <optional>
 #include <set>
-#include <unordered_map>
 #include <vector>
 
+#include "gabriel3d_ball_grid.h"
 #include "gabriel3d_plc.h"
 
 namespace nonobtuse::gabriel3d {
@@ -30,30 +28,14 @@ class EncroachedSubsegments {
   void check_against_full_scan() const;
 
  private:
-  struct Cell {
-    int level;  // cell side 2^level
-    std::int64_t x, y, z;
-    bool operator==(const Cell& o) const { return level == o.level && x == o.x && y == o.y && z == o.z; }
-  };
-  struct CellHash {
-    std::size_t operator()(const Cell& c) const;
-  };
   bool encroached_by_query(const Key& sub) const;
   void track(const Key& sub);    // a new subsegment: query it, file its ball
   void untrack(const Key& sub);  // a split one
-  // The cells of the level grid that a subsegment's search ball touches (at most 8 almost always); nullopt for a
-  // ball without finite bound (filed in everywhere_).
-  std::optional<std::vector<Cell>> cells_of(const Key& sub) const;
 
   const PlcState& s_;
   const PointIndex& index_;
   std::set<Key> encroached_;
-  // The search ball of each tracked subsegment, filed in every cell it touches of the grid of cell side 2^level, with
-  // level the smallest at which a ball spans at most two cells per axis: a point inside a ball lies in one of
-  // the ball's cells at the ball's level, so a point visits one cell per populated level.
-  std::unordered_map<Cell, std::vector<Key>, CellHash> cells_;
-  std::map<int, long> levels_;  // populated level -> number of balls filed there
-  std::set<Key> everywhere_;    // balls without finite bound: tested against every new point
+  SubsegmentBalls balls_;  // of the tracked subsegments
 };
 
 }  // namespace nonobtuse::gabriel3d

@@ -33,9 +33,12 @@ BoundarySplitter::BoundarySplitter(const std::vector<Point3>& points, const std:
                                    double small_apex)
     : s_(gabriel3d::build_plc_state(surface_plc(points, faces, face_facets, segments))),
       index_(s_.points),
+      balls_(s_.points),
       min_length_(min_length),
       max_points_(max_points),
-      features_(s_, sharp_dihedral, small_apex) {}
+      features_(s_, sharp_dihedral, small_apex) {
+  for (const auto& [k, parent] : s_.subsegments) balls_.add(k);
+}
 
 void BoundarySplitter::add_interior_point(const P3& p) {
   const int i = static_cast<int>(s_.points.size());
@@ -149,22 +152,24 @@ bool BoundarySplitter::split_subsegment(int a, int b) {
   const P3 m = midpoint(s_.points[a], s_.points[b]);
   if (!may_add(m)) return false;
   const char sharp = features_.midpoint_mark(s_, a, b);
-  added_point(gabriel3d::split_subsegment(s_, a, b, 0.5, m), sharp);
+  const int i = gabriel3d::split_subsegment(s_, a, b, 0.5, m);
+  balls_.remove(gabriel3d::key(a, b));
+  balls_.add(gabriel3d::key(a, i));
+  balls_.add(gabriel3d::key(i, b));
+  added_point(i, sharp);
   return true;
 }
 
 const std::vector<Key>& BoundarySplitter::encroached_subsegments(int f, const P3& z) const {
   auto [cached, fresh] = hits_.try_emplace({f, z.x(), z.y(), z.z()});
   if (!fresh) return cached->second;
-  const gabriel3d::Facet& facet = *s_.facets[f];
   std::vector<Key> hit;
-  for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e) {
-    if (!facet.cdt.is_constrained(*e)) continue;
-    const int u = e->first->vertex(FacetCDT::cw(e->second))->info();
-    const int w = e->first->vertex(FacetCDT::ccw(e->second))->info();
-    if (CGAL::side_of_bounded_sphere(s_.points[u], s_.points[w], z) == CGAL::ON_BOUNDED_SIDE)
-      hit.push_back(gabriel3d::key(u, w));
-  }
+  balls_.for_each_near(z, [&](const Key& k) {
+    const std::vector<int>& on = s_.segments[s_.subsegments.at(k)].facets;
+    if (std::find(on.begin(), on.end(), f) != on.end() &&
+        CGAL::side_of_bounded_sphere(s_.points[k.first], s_.points[k.second], z) == CGAL::ON_BOUNDED_SIDE)
+      hit.push_back(k);
+  });
   std::sort(hit.begin(), hit.end());
   return cached->second = std::move(hit);
 }
