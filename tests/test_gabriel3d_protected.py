@@ -164,6 +164,10 @@ def test_protected_rerun_has_limits_of_its_own_unless_given():
     alone = refine_gabriel(plc, split="protected")
     assert alone.stats["max_steiner"] == 10 * n + 10_000
     assert alone.stats["min_length"] == pytest.approx(1e-6 * diag, rel=1e-12)
+    shared = refine_gabriel(plc, fallback_own_limits=False)  # the 3D quality pass's repairs
+    assert shared.stats["strategy"] == "shells+protected"
+    assert shared.stats["max_steiner"] == 10 * n + 10_000
+    assert shared.stats["min_length"] == pytest.approx(1e-6 * diag, rel=1e-12)
 
 
 def test_u_off_converges_through_the_protected_rerun():

@@ -120,7 +120,7 @@ void bind_gabriel3d(py::module_& m) {
       [](const DoubleArray& points, const IndexArray& triangles, const IndexArray& facet_ids,
          const IndexArray& segments, const DoubleArray& holes, const DoubleArray& regions, long max_steiner,
          double min_length, long max_work, double time_limit, const std::string& split, bool protected_fallback,
-         long progress_every,
+         bool fallback_own_limits, long progress_every,
          const std::optional<std::function<void(long, long, long, double)>>& progress) {
         PLC3 plc = to_plc3(points, triangles, facet_ids, segments, holes, regions);
         const std::map<std::string, SplitRule> rules = {
@@ -139,6 +139,7 @@ void bind_gabriel3d(py::module_& m) {
         o.time_limit = time_limit;
         o.split = rules.at(split);
         o.protected_fallback = protected_fallback;
+        o.fallback_own_limits = fallback_own_limits;
         o.progress_every = progress_every;
         if (progress && *progress)
           o.progress = [f = *progress](const Refine3DProgress& p) {
@@ -150,7 +151,7 @@ void bind_gabriel3d(py::module_& m) {
       },
       py::arg("points"), py::arg("triangles"), py::arg("facet_ids"), py::arg("segments"), py::arg("holes"),
       py::arg("regions"), py::arg("max_steiner"), py::arg("min_length"), py::arg("max_work"), py::arg("time_limit"), py::arg("split"),
-      py::arg("protected_fallback"), py::arg("progress_every"), py::arg("progress"),
+      py::arg("protected_fallback"), py::arg("fallback_own_limits"), py::arg("progress_every"), py::arg("progress"),
       "Gabriel refinement of a PLC. max_steiner < 0, min_length < 0, max_work < 0: the defaults of Refine3DOptions (gabriel3d.h).\n"
       "progress: None or f(steiner, encroached_segments, encroached_facets, seconds).\n"
       "Returns a Refine3DResult.");

@@ -83,6 +83,7 @@ Refine3DResult refine_with(const PLC3& plc, const Refine3DOptions& options, bool
 // Only the fallback gets these limits: a protected run that does not converge spends up to 4 times the points, and
 // split="protected" alone is the study setting of the termination map, most of whose protected cases end at a limit.
 Refine3DOptions protected_limits(const Refine3DOptions& given, Refine3DOptions resolved) {
+  if (!given.fallback_own_limits) return resolved;
   if (given.max_steiner < 0) resolved.max_steiner *= 4;
   if (given.min_length < 0) resolved.min_length *= 1e-3;
   return resolved;

@@ -88,6 +88,10 @@ struct Refine3DOptions {
   long max_work = -1;
   SplitRule split = SplitRule::Shells;
   bool protected_fallback = true;  // run the protected strategy when the split rule's pass does not converge
+  // The fallback's limits of its own (4 times the Steiner budget, 1/1000 of min_length where those are left to the
+  // defaults; protected_limits in gabriel3d_strategy.cpp); false: the shared defaults, for callers that repair
+  // many times (the 3D quality pass) and would otherwise spend up to the work budget on each repair.
+  bool fallback_own_limits = true;
   long progress_every = 1000;  // insertions between progress calls; one more after each exact check of the mesh
   std::function<void(const Refine3DProgress&)> progress;
 };

@@ -229,6 +229,7 @@ def refine_gabriel(
     time_limit: float | None = None,
     split: Literal["shells", "midpoint", "greedy", "protected", "mirrored"] = "shells",
     protected_fallback: bool = True,
+    fallback_own_limits: bool = True,
     progress: Callable[[int, int, int, float], None] | bool | None = None,
     progress_every: int = 1000,
     started: float | None = None,
@@ -249,7 +250,8 @@ def refine_gabriel(
     split. When that pass does not converge (and time_limit has time left), the protected strategy runs from
     the input, and its result is returned if it converged (where max_steiner and min_length are left to the
     defaults, this rerun gets 4 times the Steiner budget and 1/1000 of the min_length: its split
-    rules bound the sizes by the input's features, and small angles need points in proportion to 1 / angle):
+    rules bound the sizes by the input's features, and small angles need points in proportion to 1 / angle;
+    fallback_own_limits=False gives it the shared defaults, as the 3D quality pass's repairs do):
     protecting balls at every apex vertex (an input segment leaning over a facet through its end at less
     than 90 degrees; radius a power of two <= 1/4 of the vertex's local feature size), each segment through
     an apex split on its ball's sphere, and subfacet split points strictly inside a ball moved to its sphere,
@@ -306,6 +308,7 @@ def refine_gabriel(
         math.inf if time_limit is None else max(0.0, float(time_limit) - (time.perf_counter() - started)),
         split,
         bool(protected_fallback),
+        bool(fallback_own_limits),
         int(progress_every),
         callback,
     )

@@ -94,8 +94,9 @@ def refine_quality3d(
     **gabriel_options: Any,
 ) -> Quality3DResult:
     """Repair the boundary of `plc` to Gabriel (refine_gabriel with ``gabriel_options``: max_steiner,
-    min_length, split, protected_fallback) and add interior points until every tet has radius-edge ratio <=
-    radius_edge and volume <= max_volume; no interior point is kept inside a subfacet's or subsegment's closed
+    min_length, split, protected_fallback; fallback_own_limits False unless given) and add interior points
+    until every tet has radius-edge ratio <= radius_edge and volume <= max_volume; no interior point is kept
+    inside a subfacet's or subsegment's closed
     diametral sphere.
 
     plc: as for refine_gabriel. max_volume: a volume bound for every tet, or a mapping {region attribute:
