@@ -117,8 +117,8 @@ class InteriorRefiner:
                       segments=surface.segments)
         left = self.time_limit - (time.perf_counter() - self.started)
         # the shared limits for the fallback too (unless given): a pass repairs again and again, and the
-        # fallback's own wider limits let each failing repair run to its work budget (cad_knife_2deg: over 200 s
-        # instead of 10 s, for the same 6-point result)
+        # fallback's own wider limits let each failing repair run to its work budget (cad_knife_2deg: over
+        # 200 s instead of 10 s, for the same 6-point result)
         options = {"fallback_own_limits": False, **self.gabriel_options}
         return refine_gabriel(plc, time_limit=max(0.0, share * left) if self.wall_clock else None,
                               control_volumes=False, **options)
