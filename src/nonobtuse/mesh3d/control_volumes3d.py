@@ -17,7 +17,9 @@ give magnitudes only, so a coefficient that is exactly 0 is 0.0 and never a roun
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
+from fractions import Fraction
 
 import numpy as np
 
@@ -96,13 +98,11 @@ def _robust_tet_circumcenters(p: np.ndarray) -> np.ndarray:
     """Circumcenters (t, 3) of tets p (t, 4, 3): :func:`tet_circumcenters`, except that a tet flat in
     floating point (denominator 0, where the doubles give NaN or inf; its exact volume is positive) gets its
     circumcenter computed in rationals and rounded to nearest, as the C++ core's control volumes do."""
-    from nonobtuse.mesh3d.quality3d_rounds import _exact_circumsphere  # that module imports this one
-
     with np.errstate(divide="ignore", invalid="ignore"):
         centers = tet_circumcenters(p[:, 0], p[:, 1], p[:, 2], p[:, 3])
     a = p[:, 0]
     for row in np.flatnonzero(_triple_products(p[:, 1] - a, p[:, 2] - a, p[:, 3] - a) == 0):
-        centers[row] = _exact_circumsphere(p[row])[0]
+        centers[row] = exact_circumsphere(p[row])[0]
     return centers
 
 
@@ -167,3 +167,31 @@ def control_volumes3d(mesh: TetMesh) -> ControlVolumes3D:
     return ControlVolumes3D(d["edges"].reshape(-1, 2), dual, lengths, couplings, d["volumes"], signs,
                             int((signs < 0).sum()), int(d["exact_evaluations"]),
                             int(d["flat_in_floating_point"]))
+
+
+def exact_circumsphere(corners: np.ndarray) -> tuple[np.ndarray, float, float]:
+    """The circumcenter (3,), circumradius and signed volume of one tet (4, 3), computed in rationals and
+    rounded (inf when beyond the double range, the center then too)."""
+    a, *rest = [[Fraction(float(x)) for x in q] for q in corners]
+    u, v, w = ([q[i] - a[i] for i in range(3)] for q in rest)
+
+    def cross(x: list[Fraction], y: list[Fraction]) -> list[Fraction]:
+        return [x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]]
+
+    def dot(x: list[Fraction], y: list[Fraction]) -> Fraction:
+        return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]
+
+    det = dot(u, cross(v, w))
+    if det == 0:
+        return np.full(3, np.inf), math.inf, 0.0
+    vw, wu, uv = cross(v, w), cross(w, u), cross(u, v)
+    offset = [(dot(u, u) * vw[i] + dot(v, v) * wu[i] + dot(w, w) * uv[i]) / (2 * det) for i in range(3)]
+
+    def rounded(x: Fraction) -> float:
+        try:
+            return float(x)
+        except OverflowError:
+            return math.copysign(math.inf, x)
+
+    center = np.array([rounded(a[i] + offset[i]) for i in range(3)])
+    return center, math.sqrt(rounded(dot(offset, offset))), float(det / 6)

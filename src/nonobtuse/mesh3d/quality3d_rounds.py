@@ -8,7 +8,6 @@ import math
 import time
 from collections.abc import Mapping
 from dataclasses import replace
-from fractions import Fraction
 from typing import Any
 
 import numpy as np
@@ -16,7 +15,7 @@ from scipy.spatial import cKDTree
 
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.mesh3d.control_volumes3d import tet_circumcenters
+from nonobtuse.mesh3d.control_volumes3d import exact_circumsphere, tet_circumcenters
 from nonobtuse.mesh3d.gabriel import refine_gabriel
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
@@ -25,9 +24,9 @@ def tet_circumspheres(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray,
     """Circumcenters (t, 3) (:func:`~nonobtuse.mesh3d.control_volumes3d.tet_circumcenters`), circumradii (t,)
     and volumes (t,) of tets (t, 4) int64 over points (n, 3) float64 (positively oriented tets give positive
     volumes). Floating point where the orientation determinant is at least 2^-20 L^3 (L the longest edge from
-    the first corner: its rounding error is then below 2^-30 of it), else exact (:func:`_exact_circumsphere`),
-    rounded: a tet flat in floating point gets its true ratio, never NaN (the rule of ``tet_shape`` in
-    cpp/src/quality3d_shape.cpp, so both measures agree)."""
+    the first corner: its rounding error is then below 2^-30 of it), else exact
+    (``control_volumes3d.exact_circumsphere``), rounded: a tet flat in floating point gets its true ratio,
+    never NaN (the rule of ``tet_shape`` in cpp/src/quality3d_shape.cpp, so both measures agree)."""
     p = points[tets]
     with np.errstate(divide="ignore", invalid="ignore"):
         centers = tet_circumcenters(p[:, 0], p[:, 1], p[:, 2], p[:, 3])
@@ -37,36 +36,8 @@ def tet_circumspheres(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray,
     volume = det / 6.0  # as signed_tet_volumes
     longest = np.sqrt((edges**2).sum(2).max(1))
     for row in np.flatnonzero(~(np.abs(det) >= 2.0**-20 * (longest * longest * longest))):
-        centers[row], radius[row], volume[row] = _exact_circumsphere(p[row])
+        centers[row], radius[row], volume[row] = exact_circumsphere(p[row])
     return centers, radius, volume
-
-
-def _exact_circumsphere(corners: np.ndarray) -> tuple[np.ndarray, float, float]:
-    """The circumcenter (3,), circumradius and signed volume of one tet (4, 3), computed in rationals and
-    rounded (inf when beyond the double range, the center then too)."""
-    a, *rest = [[Fraction(float(x)) for x in q] for q in corners]
-    u, v, w = ([q[i] - a[i] for i in range(3)] for q in rest)
-
-    def cross(x: list[Fraction], y: list[Fraction]) -> list[Fraction]:
-        return [x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]]
-
-    def dot(x: list[Fraction], y: list[Fraction]) -> Fraction:
-        return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]
-
-    det = dot(u, cross(v, w))
-    if det == 0:
-        return np.full(3, np.inf), math.inf, 0.0
-    vw, wu, uv = cross(v, w), cross(w, u), cross(u, v)
-    offset = [(dot(u, u) * vw[i] + dot(v, v) * wu[i] + dot(w, w) * uv[i]) / (2 * det) for i in range(3)]
-
-    def rounded(x: Fraction) -> float:
-        try:
-            return float(x)
-        except OverflowError:
-            return math.copysign(math.inf, x)
-
-    center = np.array([rounded(a[i] + offset[i]) for i in range(3)])
-    return center, math.sqrt(rounded(dot(offset, offset))), float(det / 6)
 
 
 def shortest_edges(points: np.ndarray, tets: np.ndarray) -> np.ndarray:
