@@ -1,5 +1,5 @@
-// Internal: one pass of the Gabriel refinement of a PLC (gabriel3d_refine.cpp); the strategy that chooses and
-// combines passes is in gabriel3d_strategy.cpp.
+// Internal: one pass of the Gabriel refinement of a PLC (gabriel3d_refine_once.cpp; its Refiner is in
+// gabriel3d_refiner.h). The strategy that chooses and combines passes is in gabriel3d_strategy.cpp.
 #pragma once
 #include "nonobtuse/gabriel3d.h"
 
