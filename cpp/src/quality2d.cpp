@@ -160,20 +160,22 @@ class QualityRefiner {
     const long long placed_before = st_.placed();
     st_.enqueue_all();  // the boundary first (a no-op after a strategy left it nonobtuse), as Triangle does
     boundary_.repair_boundary(true);
+    long long removed = 0;
     if (refine_all() && final_stats().bad_triangles == 0) {  // converged: take back boundary points not needed
       auto put_back = [this](Vertex_handle v) {
         push_around(v);
         boundary_.repair_boundary();
       };
       boundary_.repair_boundary();
-      prune_boundary_points(st_, [this](Face_handle f) { return bad(f, shape_of(f)); }, put_back);
+      removed = prune_boundary_points(st_, [this](Face_handle f) { return bad(f, shape_of(f)); }, put_back);
       renumber(compact_added(st_));
       refine_all();  // nothing to do unless an undone removal came back as a different Delaunay tie
     }
     Quality2DStats out = final_stats();
     out.interior_points = st_.interior_points();
     out.interior_budget = budget_;
-    out.boundary_splits = st_.placed() - placed_before;
+    out.boundary_splits = st_.placed() - placed_before + removed;
+    out.boundary_points_removed = removed;
     return out;
   }
 

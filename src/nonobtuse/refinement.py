@@ -146,7 +146,9 @@ def _diagnosis(g: _core.Refine2DDiagnosis) -> dict[str, Any]:
 def _quality_stats(q: _core.Quality2DStats, min_angle: float | None) -> dict[str, Any]:
     """``stats["quality"]``: ``min_angle`` (the bound asked, degrees, or None), ``interior_points``,
     ``interior_budget``, ``boundary_splits`` (boundary Steiner points the quality refinement placed: with the
-    greedy strategy all of them, since it then also refines the boundary),
+    greedy strategy all of them, since it then also refines the boundary), ``boundary_points_removed``
+    (boundary Steiner points taken back after convergence, where the mesh keeps the certificate and the bounds
+    without them; ``steiner_points`` counts what is left),
     ``triangles``, ``bad_triangles`` (left bad outside small-input-angle regions: 0 when converged),
     ``small_angle_triangles`` (skinny triangles left alone near input angles below 60 degrees),
     ``min_angle_degrees`` (every triangle) and ``min_angle_outside_small_angles_degrees`` (floats, computed in
@@ -157,6 +159,7 @@ def _quality_stats(q: _core.Quality2DStats, min_angle: float | None) -> dict[str
         "interior_points": q.interior_points,
         "interior_budget": q.interior_budget,
         "boundary_splits": q.boundary_splits,
+        "boundary_points_removed": q.boundary_points_removed,
         "triangles": q.triangles,
         "bad_triangles": q.bad_triangles,
         "small_angle_triangles": q.small_angle_triangles,

@@ -45,6 +45,8 @@ struct Quality2DStats {
   long long interior_budget = 0;    // the budget used (max_interior, its default resolved)
   long long boundary_splits = 0;    // boundary Steiner points the interior refinement caused (encroached
                                     // subsegments split, and the sides those splits left obtuse)
+  long long boundary_points_removed = 0;  // boundary Steiner points taken back after convergence (of the
+                                          // strategy's or of boundary_splits; quality2d_prune.cpp)
   long long bad_triangles = 0;      // triangles still bad at the end, outside small-input-angle regions
   long long small_angle_triangles = 0;  // bad triangles left alone near small input angles (see quality2d.cpp)
   long long triangles = 0;          // domain triangles of the result
