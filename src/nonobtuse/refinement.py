@@ -174,8 +174,9 @@ def _fewer_boundary_points(other: _core.Refine2DResult, first: _core.Refine2DRes
     midpoints and shells): it converged where the first did not, or both converged and it has strictly fewer
     boundary Steiner points and no more vertices (so the first's vertex count, within 1.1x Triangle's on
     bench_quality2d, stays a bound). Measured on bench_quality2d (2026-12-03): kept on cdt_ditch (2 boundary
-    points against 3, Triangle 3; 13 vertices against 14) at 25 and 30 degrees and on spiral.node at 25 (4
-    against 5, Triangle 5; 23 vertices against 25); elsewhere its short pieces drew more points."""
+    points against 3, Triangle 3; 13 vertices against 14) at 25 and 30 degrees; on spiral.node at 25 it ties
+    now that unneeded boundary points are taken back (4 both; it was kept at 4 against 5 before); elsewhere
+    its short pieces drew more points (the demo section: 1680 against 1228)."""
     if other.status != CONVERGED or first.status != CONVERGED:
         return other.status == CONVERGED and first.status != CONVERGED
     return (other.steiner_points < first.steiner_points

@@ -29,7 +29,7 @@ struct Quality2DOptions {
   // (midpoints and shells of every side with an obtuse apex, quality2d_boundary.cpp); true, the paper's minimal
   // greedy boundary first, then the quality refinement (splitting only what the interior encroaches). Neither
   // wins everywhere: the minimal boundary's short pieces draw interior cascades on most inputs (the demo
-  // section: 1964 boundary points against 1270), but where few pieces suffice it needs fewer points (cdt_ditch:
+  // section: 1680 boundary points against 1228), but where few pieces suffice it needs fewer points (cdt_ditch:
   // 2 against 3). nonobtuse.refine runs both and keeps the better (refinement.py). Other strategies always run
   // their own boundary first.
   bool minimal_boundary_first = false;
