@@ -9,7 +9,8 @@ area bound). Boundary Steiner points are counted the same way for both tools: ou
 input's that lie on an output segment (ours is checked against refine's stats["steiner_points"]).
 Our smallest angle is the one outside small-input-angle regions (triangles there are left alone, as Triangle
 does), and both counts are given. boundary_mode: which boundary refine kept (its quality_boundary="best":
-"midpoints" or "minimal").
+"midpoints" or "minimal"); removed: the boundary Steiner points it took back after convergence (already
+subtracted from boundary_steiner).
 
     PYTHONPATH=src .venv/bin/python -m experiments bench_quality2d [--out DIR]
 
@@ -74,6 +75,7 @@ def ours(d: Domain, degrees: float) -> dict:
                            f"stats say {r.stats['steiner_points']} Steiner points")
     return {"status": r.status, "certificate": r.stats["obtuse_boundary_sides"],
             "vertices": len(r.mesh.points), "boundary_steiner": boundary_steiner,
+            "removed": q["boundary_points_removed"],
             "interior": r.stats["interior_points"], "boundary_mode": q["boundary"],
             "min_angle_outside": round(q["min_angle_outside_small_angles_degrees"], 3),
             "min_angle": round(q["min_angle_degrees"], 3),
@@ -107,7 +109,8 @@ def main() -> None:
             row["vertex_ratio"] = round(row["vertices"] / row["tri_vertices"], 3)
             rows.append(row)
             r = row
-            print(f"{name:28s} {degrees:4g} deg  ours {r['vertices']:6d} v ({r['boundary_steiner']:5d} bnd, "
+            print(f"{name:28s} {degrees:4g} deg  ours {r['vertices']:6d} v ({r['boundary_steiner']:5d} bnd "
+                  f"after {r['removed']} removed, "
                   f"{r['status']}, min {r['min_angle_outside']:6.2f}, {r['seconds']:.3f} s)  triangle "
                   f"{r['tri_vertices']:6d} v ({r['tri_boundary_steiner']:5d} bnd, "
                   f"min {r['tri_min_angle']:6.2f}, "
@@ -122,9 +125,12 @@ def main() -> None:
     tied = [f"{r['input']} {r['degrees']:g}" for r in rows
             if r["boundary_steiner"] == r["tri_boundary_steiner"]]
     more = sum(r["boundary_steiner"] > r["tri_boundary_steiner"] for r in rows)
+    adds = [r for r in rows if r["tri_boundary_steiner"] > 0]
+    fewer_where_adds = sum(r["boundary_steiner"] < r["tri_boundary_steiner"] for r in adds)
     print(f"vertex ratio ours / Triangle: median {np.median(ratios):.3f}, max {ratios.max():.3f}; boundary "
           f"Steiner points fewer on {fewer} of {len(rows)}, more on {more}, equal on {len(tied)} "
-          f"({', '.join(tied)}) -> {path}")
+          f"({', '.join(tied)}); fewer on {fewer_where_adds} of the {len(adds)} where Triangle adds any "
+          f"-> {path}")
 
 
 if __name__ == "__main__":

@@ -45,6 +45,7 @@ void bind_quality2d(py::module_& m) {
       .def_readonly("interior_points", &Quality2DStats::interior_points)
       .def_readonly("interior_budget", &Quality2DStats::interior_budget)
       .def_readonly("boundary_splits", &Quality2DStats::boundary_splits)
+      .def_readonly("boundary_points_removed", &Quality2DStats::boundary_points_removed)
       .def_readonly("bad_triangles", &Quality2DStats::bad_triangles)
       .def_readonly("small_angle_triangles", &Quality2DStats::small_angle_triangles)
       .def_readonly("triangles", &Quality2DStats::triangles)

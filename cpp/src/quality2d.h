@@ -18,8 +18,9 @@ Vertex_handle insert_interior(State& st, const Point& p, Face_handle located);
 // subsegment is split instead (nearest_shell at acute input angles, else its midpoint), and so is every boundary
 // side a split leaves obtuse (the greedy rule where no such point passes the exact checks), so every boundary
 // side keeps a nonobtuse apex. Stops when no bad triangle is left outside small-input-angle regions, or at a
-// budget (options.max_interior, or the state's Steiner budget for the subsegment splits). Returns what it did and
-// left.
+// budget (options.max_interior, or the state's Steiner budget for the subsegment splits). When none is left, the
+// boundary Steiner points no longer needed are removed (prune_boundary_points) and the added vertices renumbered
+// (compact_added). Returns what it did and left.
 Quality2DStats refine_quality(State& st, const Quality2DOptions& options);
 
 }  // namespace nonobtuse::refine2d

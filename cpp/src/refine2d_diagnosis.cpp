@@ -23,6 +23,13 @@ void Propagation::end(long long placed) {
   current_ = -1;
 }
 
+void Propagation::renumber(const std::vector<int>& to) {
+  std::vector<int> kept;
+  for (std::size_t k = 0; k < to.size(); ++k)
+    if (to[k] >= 0) kept.push_back(steiner_cause(static_cast<long long>(k)));
+  cause_of_point_ = std::move(kept);
+}
+
 namespace {
 
 constexpr std::size_t kTop = 10;

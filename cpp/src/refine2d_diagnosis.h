@@ -23,6 +23,8 @@ class Propagation {
   int steiner_cause(long long k) const {
     return k < static_cast<long long>(cause_of_point_.size()) ? cause_of_point_[k] : -1;
   }
+  // Added vertex k becomes vertex to[k] (-1: removed), as State's compact_added renumbers them.
+  void renumber(const std::vector<int>& to);
 
  private:
   static std::pair<int, int> key(int s, int e) { return {std::min(s, e), std::max(s, e)}; }

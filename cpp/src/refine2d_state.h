@@ -39,7 +39,8 @@ class State {
   long long placed() const { return placed_; }  // Steiner points inserted on constraints so far
   bool budget_left() const { return placed_ < budget_; }
   // Every vertex inserted after the input's, in insertion order (its index is n_input() + its position): the
-  // Steiner points on constraints (split) and the interior points (insert_interior, quality2d.cpp).
+  // Steiner points on constraints (split) and the interior points (insert_interior, quality2d.cpp); a null handle
+  // for a point removed since (remove_boundary_point) until compact_added.
   const std::vector<Vertex_handle>& added() const { return added_; }
   long long interior_points() const { return static_cast<long long>(added_.size()) - placed_; }
   // One row per input constraint edge, in the order of the input CDT's boundary sides (an interface once).
@@ -107,6 +108,9 @@ class State {
   friend Vertex_handle split(State& st, const Side& side, const Point& p);
   // Inserts a point strictly inside the domain, off every constraint (quality2d.cpp), the other mutation.
   friend Vertex_handle insert_interior(State& st, const Point& p, Face_handle located);
+  // Removes a boundary Steiner point and renumbers the vertices after the removed ones (quality2d_prune.cpp).
+  friend std::vector<Face_handle> remove_boundary_point(State& st, Vertex_handle v);
+  friend std::vector<int> compact_added(State& st);
 
   // Every side of `sides` (the boundary sides) on the hull, no interface, every vertex on a constraint.
   bool is_convex_polygon(const std::vector<Side>& sides) const;

@@ -198,6 +198,9 @@ class Quality2DStats:
     def bad_triangles(self) -> int:
         ...
     @property
+    def boundary_points_removed(self) -> int:
+        ...
+    @property
     def boundary_splits(self) -> int:
         ...
     @property

@@ -29,7 +29,7 @@ struct Quality2DOptions {
   // (midpoints and shells of every side with an obtuse apex, quality2d_boundary.cpp); true, the paper's minimal
   // greedy boundary first, then the quality refinement (splitting only what the interior encroaches). Neither
   // wins everywhere: the minimal boundary's short pieces draw interior cascades on most inputs (the demo
-  // section: 1964 boundary points against 1270), but where few pieces suffice it needs fewer points (cdt_ditch:
+  // section: 1680 boundary points against 1228), but where few pieces suffice it needs fewer points (cdt_ditch:
   // 2 against 3). nonobtuse.refine runs both and keeps the better (refinement.py). Other strategies always run
   // their own boundary first.
   bool minimal_boundary_first = false;
@@ -45,6 +45,8 @@ struct Quality2DStats {
   long long interior_budget = 0;    // the budget used (max_interior, its default resolved)
   long long boundary_splits = 0;    // boundary Steiner points the interior refinement caused (encroached
                                     // subsegments split, and the sides those splits left obtuse)
+  long long boundary_points_removed = 0;  // boundary Steiner points taken back after convergence (of the
+                                          // strategy's or of boundary_splits; quality2d_prune.cpp)
   long long bad_triangles = 0;      // triangles still bad at the end, outside small-input-angle regions
   long long small_angle_triangles = 0;  // bad triangles left alone near small input angles (see quality2d.cpp)
   long long triangles = 0;          // domain triangles of the result
