@@ -27,7 +27,14 @@ namespace nonobtuse::gabriel3d {
 // sigma) applies, and the budgets bound those runs; the exact check of the result decides the status either way.
 // Not covered: the collar circles of two consecutive subsegments are tangent at their shared point, and the cusp
 // between them (outside both balls) still takes facet points ever closer to that point (measured on the shared
-// schonhardt.off: a min_length stop at 3,250 points); overlapping collar balls would close it.
+// schonhardt.off: a min_length stop at 3,250 points); overlapping collar balls would close it. Nor does (2) survive
+// rounding: it needs y exactly on the sphere of [p, q], and a subfacet (p, q, x) of F with x strictly outside B has
+// a diametral sphere (centre m + s u, s > 0, u in F towards x) that strictly holds every point z of B's closed half on
+// x's side but p and q (|z - m - s u|^2 - r^2 - s^2 = |z - m|^2 - r^2 - 2 s (z - m).u < 0), so for delta < 90 degrees
+// it holds every point of C_G: F's subfacets on sigma are Gabriel only when cospherical with C_G, and after rounding
+// the exact test decides by noise. Measured on spike 80 (split="protected"): 166 of the 186 subsegment splits that
+// split_subfacet makes are such Thales subfacets, all vertices and the encroacher within 1e-15 r of the sphere, whose
+// circumcenter is the midpoint (refused above, so sigma is split); experiments/README.md has the variants tried.
 std::optional<P3> collar_split_point(const P3& p, const P3& q, const P3& c, const std::vector<Key>& chain,
                                      const std::vector<P3>& points) {
   const P3 m = CGAL::midpoint(p, q);
