@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 
 #include "gabriel3d_plc.h"
 
@@ -23,10 +24,15 @@ double angle(const Vec& a, const Vec& b) {  // in [0, 180]
 }
 Vec normal(const Facet& f) { return cross(f.u, f.v); }
 
+// Appends the kFew smallest angles of one kind, ties in input order (as a stable sort would list them first).
 void keep_smallest(std::vector<InputAngle>& all, std::vector<InputAngle>&& kind) {
-  std::stable_sort(kind.begin(), kind.end(), [](const auto& x, const auto& y) { return x.degrees < y.degrees; });
-  if (kind.size() > kFew) kind.resize(kFew);
-  all.insert(all.end(), kind.begin(), kind.end());
+  std::vector<std::size_t> order(kind.size());
+  std::iota(order.begin(), order.end(), 0);
+  const auto few = order.begin() + static_cast<std::ptrdiff_t>(std::min(kFew, order.size()));
+  std::partial_sort(order.begin(), few, order.end(), [&](std::size_t x, std::size_t y) {
+    return kind[x].degrees < kind[y].degrees || (kind[x].degrees == kind[y].degrees && x < y);
+  });
+  for (auto it = order.begin(); it != few; ++it) all.push_back(std::move(kind[*it]));
 }
 
 // The input segments at each input vertex.
