@@ -60,6 +60,7 @@ void bind_result_classes(py::module_& m) {
       .def_readonly("smallest_angles", &Refine3DDiagnosis::smallest_angles)
       .def_readonly("steiner_per_vertex", &Refine3DDiagnosis::per_vertex)
       .def_readonly("steiner_per_segment", &Refine3DDiagnosis::per_segment)
+      .def_readonly("encroached_per_segment", &Refine3DDiagnosis::encroached_per_segment)
       .def_readonly("stop_reason", &Refine3DDiagnosis::stop_reason)
       .def("__repr__", [](const Refine3DDiagnosis& d) { return "<Refine3DDiagnosis " + d.stop_reason + ">"; });
   using Result = Refine3DResult;

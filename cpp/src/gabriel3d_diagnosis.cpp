@@ -168,7 +168,37 @@ std::vector<InputAngle> smallest_input_angles(const PlcState& s) {
   return out;
 }
 
-void count_steiner(const PlcState& s, Refine3DDiagnosis& d) {
+namespace {
+
+// Where the encroached subsegments of `check` lie: input segment and the encroacher's (see encroached_per_segment).
+std::vector<SteinerCount> count_encroached(const PlcState& s, const GabrielReport& check) {
+  std::vector<int> on_segment(s.points.size(), -1);  // per Steiner point on a segment: its input segment
+  std::vector<Key> rows;                              // the check's segment rows: s.subsegments in map order
+  for (const auto& [sub, parent] : s.subsegments) {
+    rows.push_back(sub);
+    for (int end : {sub.first, sub.second})
+      if (end >= s.n_input) on_segment[end] = parent;
+  }
+  std::map<std::vector<int>, long> counts;
+  for (const auto& e : check.segments) {
+    const InputSegment& seg = s.segments[s.subsegments.at(rows[e.index])];
+    std::vector<int> where{seg.a, seg.b};
+    if (e.vertex < s.n_input) {
+      where.push_back(e.vertex);
+    } else if (on_segment[e.vertex] >= 0) {
+      where.push_back(s.segments[on_segment[e.vertex]].a);
+      where.push_back(s.segments[on_segment[e.vertex]].b);
+    }
+    ++counts[where];
+  }
+  std::vector<SteinerCount> out;
+  for (auto& [where, count] : counts) out.push_back({where, count});
+  return top(std::move(out));
+}
+
+}  // namespace
+
+void count_steiner(const PlcState& s, const GabrielReport& check, Refine3DDiagnosis& d) {
   std::vector<P3> input(s.points.begin(), s.points.begin() + s.n_input);
   PointIndex index(input);
   std::vector<SteinerCount> per_vertex(s.n_input);
@@ -178,6 +208,7 @@ void count_steiner(const PlcState& s, Refine3DDiagnosis& d) {
   std::vector<SteinerCount> per_segment;
   for (const auto& seg : s.segments) per_segment.push_back({{seg.a, seg.b}, seg.steiner});
   d.per_segment = top(std::move(per_segment));
+  d.encroached_per_segment = count_encroached(s, check);
 }
 
 double smallest_subsegment(const PlcState& s) {

@@ -113,8 +113,9 @@ std::vector<InputAngle> smallest_input_angles(const PlcState& s);
 // Every angle between an input segment and a facet through one of its ends where the segment leans over the facet
 // (its projection points into the facet): kind "segment-facet", vertices {apex, segment end}. Floating point.
 std::vector<InputAngle> segment_facet_angles(const PlcState& s);
-// Steiner points per input segment and per nearest input vertex, top few.
-void count_steiner(const PlcState& s, Refine3DDiagnosis& d);
+// Steiner points per input segment and per nearest input vertex, top few; and the subsegments `check` found
+// encroached (its segment rows in the order of s.subsegments) by input segment and encroacher.
+void count_steiner(const PlcState& s, const GabrielReport& check, Refine3DDiagnosis& d);
 // The length of the shortest subsegment (floating point), 0 without subsegments.
 double smallest_subsegment(const PlcState& s);
 

@@ -78,7 +78,7 @@ Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool
   out.greedy_splits = refiner.greedy_splits;
   out.steiner_on_facets = refiner.steiner_on_facets;
   out.smallest_subsegment = smallest_subsegment(s);
-  count_steiner(s, out.diagnosis);
+  count_steiner(s, out.certificate, out.diagnosis);
   if (clean) {
     out.status = RefineStatus::Converged;
     out.diagnosis.stop_reason = "every boundary face and subsegment has an empty diametral sphere";

@@ -446,6 +446,9 @@ class Refine3DDiagnosis:
     def __repr__(self) -> str:
         ...
     @property
+    def encroached_per_segment(self) -> list[SteinerCount]:
+        ...
+    @property
     def smallest_angles(self) -> list[InputAngle3D]:
         ...
     @property

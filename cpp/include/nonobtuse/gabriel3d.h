@@ -113,6 +113,10 @@ struct Refine3DDiagnosis {
   std::vector<InputAngle> smallest_angles;   // the few smallest of each kind, ascending
   std::vector<SteinerCount> per_vertex;      // Steiner points by nearest input vertex, top few
   std::vector<SteinerCount> per_segment;     // Steiner points on each input segment, top few
+  // The subsegments the exact check of the returned mesh found encroached, counted by their input segment (a, b)
+  // and their deepest encroacher's: where = {a, b, c, d} for a point of input segment (c, d), {a, b, v} for input
+  // vertex v, {a, b} for a point inside a facet; top few. Empty after convergence.
+  std::vector<SteinerCount> encroached_per_segment;
   std::string stop_reason;
 };
 

@@ -106,7 +106,10 @@ class Gabriel3DResult:
             each strategy pass), time_limit (as given; None: none), work (units spent by every attempt
             together), seconds (wall time from
             refine_gabriel's ``started``), diagnosis (smallest input angles with kind/degrees/vertices/facets,
-            Steiner points per input vertex and per input segment, stop_reason), warnings (the PLC's, from
+            Steiner points per input vertex and per input segment, encroached_per_segment: the subsegments
+            the certificate found encroached by input segment [a, b] and encroacher, where [a, b, c, d] (a
+            point of input segment [c, d]), [a, b, v] (input vertex v) or [a, b] (a facet point), top few,
+            stop_reason), warnings (the PLC's, from
             validation), negative_couplings (edges of mesh whose control-volume coupling is negative,
             :func:`control_volumes3d`; floating point).
     report: the GabrielReport of mesh.
@@ -218,6 +221,7 @@ def _diagnosis(g: _core.Refine3DDiagnosis) -> dict[str, Any]:
                             for a in g.smallest_angles],
         "steiner_per_vertex": [{"where": c.where, "count": c.count} for c in g.steiner_per_vertex],
         "steiner_per_segment": [{"where": c.where, "count": c.count} for c in g.steiner_per_segment],
+        "encroached_per_segment": [{"where": c.where, "count": c.count} for c in g.encroached_per_segment],
         "stop_reason": g.stop_reason,
     }
 
