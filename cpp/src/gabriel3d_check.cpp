@@ -209,23 +209,23 @@ Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex&
   P3 center(ball.center[0], ball.center[1], ball.center[2]);
   if (ball.everything) center = c < 0 ? CGAL::midpoint(pa, pb) : CGAL::centroid(pa, pb, points[c]);
   double radius = std::sqrt(CGAL::to_double(CGAL::squared_distance(center, pa)));
-  // Candidates by decreasing floating-point depth; the first one the exact predicate confirms is reported. Deep
-  // encroachers are confirmed at once, so a big sphere over many points costs one exact test, not one per point.
-  std::vector<std::pair<double, int>> found;
+  // The deepest confirmed candidate: the smallest (-depth, index) among those the exact predicate confirms and
+  // `ignore` lets through, as a sort by that key would find first. A candidate is tested only when its key beats
+  // the best so far: no sort, and ignore() (a facet's 2D test) only for points strictly inside the sphere.
+  std::pair<double, int> best{HUGE_VAL, -1};
   index.for_each_in(ball, [&](int t) {
-    if (t == a || t == b || t == c || (ignore && ignore(t))) return;
-    double depth = 1.0 - std::sqrt(CGAL::to_double(CGAL::squared_distance(center, points[t]))) / radius;
-    found.emplace_back(-depth, t);
-  });
-  if (candidates) *candidates += found.size();
-  std::sort(found.begin(), found.end());
-  for (const auto& [minus_depth, t] : found) {
+    if (t == a || t == b || t == c) return;
+    if (candidates) ++*candidates;
+    const double depth = 1.0 - std::sqrt(CGAL::to_double(CGAL::squared_distance(center, points[t]))) / radius;
+    const std::pair<double, int> key{-depth, t};
+    if (best.second >= 0 && !(key < best)) return;
     const P3& pt = points[t];
     bool inside = c < 0 ? CGAL::side_of_bounded_sphere(pa, pb, pt) == CGAL::ON_BOUNDED_SIDE
                         : CGAL::side_of_bounded_sphere(pa, pb, points[c], pt) == CGAL::ON_BOUNDED_SIDE;
-    if (inside) return {-1, t, -minus_depth};
-  }
-  return {};
+    if (inside && !(ignore && ignore(t))) best = key;
+  });
+  if (best.second < 0) return {};
+  return {-1, best.second, -best.first};
 }
 
 GabrielReport check_gabriel_until(const std::vector<P3>& pts, const std::vector<Triangle>& faces,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numeric>
 
 #include "gabriel3d_plc.h"
 
@@ -23,10 +24,15 @@ double angle(const Vec& a, const Vec& b) {  // in [0, 180]
 }
 Vec normal(const Facet& f) { return cross(f.u, f.v); }
 
+// Appends the kFew smallest angles of one kind, ties in input order (as a stable sort would list them first).
 void keep_smallest(std::vector<InputAngle>& all, std::vector<InputAngle>&& kind) {
-  std::stable_sort(kind.begin(), kind.end(), [](const auto& x, const auto& y) { return x.degrees < y.degrees; });
-  if (kind.size() > kFew) kind.resize(kFew);
-  all.insert(all.end(), kind.begin(), kind.end());
+  std::vector<std::size_t> order(kind.size());
+  std::iota(order.begin(), order.end(), 0);
+  const auto few = order.begin() + static_cast<std::ptrdiff_t>(std::min(kFew, order.size()));
+  std::partial_sort(order.begin(), few, order.end(), [&](std::size_t x, std::size_t y) {
+    return kind[x].degrees < kind[y].degrees || (kind[x].degrees == kind[y].degrees && x < y);
+  });
+  for (auto it = order.begin(); it != few; ++it) all.push_back(std::move(kind[*it]));
 }
 
 // The input segments at each input vertex.
@@ -95,6 +101,26 @@ std::vector<SteinerCount> top(std::vector<SteinerCount> counts) {
   return counts;
 }
 
+// Calls emit(angle) for every segment-facet angle (see segment_facet_angles) unless skip(its degrees); the facet's
+// domain test (points_into, most of the cost) runs only for the angles not skipped.
+template <class Skip, class Emit>
+void for_each_segment_facet_angle(const PlcState& s, Skip&& skip, Emit&& emit) {
+  const auto at = segments_at(s);
+  for (int v = 0; v < s.n_input; ++v)
+    for (int g : at[v]) {
+      const auto& seg = s.segments[g];
+      int end = seg.a == v ? seg.b : seg.a;
+      Vec d = sub(s.points[end], s.points[v]);
+      for (int f : s.point_facets[v]) {
+        const Facet& facet = *s.facets[f];
+        if (facet.vertex.count(end)) continue;
+        double deg = std::abs(90.0 - angle(d, normal(facet)));
+        if (skip(deg) || !points_into(facet, v, d)) continue;
+        emit(InputAngle{"segment-facet", deg, {v, end}, {facet.id}});
+      }
+    }
+}
+
 }  // namespace
 
 // Dihedral angles between facets sharing an input segment (angle between the two half-planes).
@@ -118,27 +144,25 @@ std::vector<InputAngle> dihedral_angles(const PlcState& s) {
 // Angles between an input segment and a facet through one of its ends, where the segment leans over the facet
 // (its projection points into the facet); other directions are covered by the segment-segment angles.
 std::vector<InputAngle> segment_facet_angles(const PlcState& s) {
-  const auto at = segments_at(s);
   std::vector<InputAngle> out;
-  for (int v = 0; v < s.n_input; ++v)
-    for (int g : at[v]) {
-      const auto& seg = s.segments[g];
-      int end = seg.a == v ? seg.b : seg.a;
-      Vec d = sub(s.points[end], s.points[v]);
-      for (int f : s.point_facets[v]) {
-        const Facet& facet = *s.facets[f];
-        if (facet.vertex.count(end) || !points_into(facet, v, d)) continue;
-        double deg = std::abs(90.0 - angle(d, normal(facet)));
-        out.push_back({"segment-facet", deg, {v, end}, {facet.id}});
-      }
-    }
+  for_each_segment_facet_angle(s, [](double) { return false; }, [&](InputAngle&& a) { out.push_back(std::move(a)); });
   return out;
 }
 
 std::vector<InputAngle> smallest_input_angles(const PlcState& s) {
   std::vector<InputAngle> out;
   keep_smallest(out, segment_segment(s, segments_at(s)));
-  keep_smallest(out, segment_facet_angles(s));
+  // Only the kFew smallest segment-facet angles are kept, ties in input order: an angle no smaller than the
+  // kFew-th smallest of those listed before it cannot be among them, and skips the domain test.
+  std::vector<InputAngle> segment_facet;
+  std::vector<double> few;  // the kFew smallest degrees listed so far, ascending
+  auto skip = [&](double deg) { return few.size() == kFew && deg >= few.back(); };
+  for_each_segment_facet_angle(s, skip, [&](InputAngle&& a) {
+    few.insert(std::upper_bound(few.begin(), few.end(), a.degrees), a.degrees);
+    if (few.size() > kFew) few.pop_back();
+    segment_facet.push_back(std::move(a));
+  });
+  keep_smallest(out, std::move(segment_facet));
   keep_smallest(out, dihedral_angles(s));
   std::stable_sort(out.begin(), out.end(), [](const auto& x, const auto& y) { return x.degrees < y.degrees; });
   return out;

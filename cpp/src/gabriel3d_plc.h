@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "gabriel3d_index.h"
+#include "gabriel3d_scan_memo.h"
 
 namespace nonobtuse::gabriel3d {
 
@@ -26,6 +27,7 @@ using Q2 = EK::Point_2;
 struct FacetFaceInfo {
   bool in_domain = false;
   int nesting = -1;  // number of constraints crossed from the outside (domain: odd)
+  ScanMemo scan;     // Refiner::encroached_subfacets' last answer for this face
 };
 using Vb2 = CGAL::Triangulation_vertex_base_with_info_2<int, EK>;  // info: global point index
 using Fbb2 = CGAL::Triangulation_face_base_with_info_2<FacetFaceInfo, EK>;

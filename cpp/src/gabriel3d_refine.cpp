@@ -31,7 +31,7 @@ std::vector<SubfacetRef> Refiner::encroached_subfacets() const {
       if (!fh->info().in_domain) continue;
       int a = fh->vertex(0)->info(), b = fh->vertex(1)->info(), c = fh->vertex(2)->info();
       if (CGAL::collinear(s_.points[a], s_.points[b], s_.points[c])) continue;  // rounding; left to the final check
-      if (subfacet_encroached(static_cast<int>(f), a, b, c)) out.push_back(canonical({static_cast<int>(f), a, b, c}));
+      if (subfacet_encroached(static_cast<int>(f), a, b, c, &fh->info().scan)) out.push_back(canonical({static_cast<int>(f), a, b, c}));
       if (out_of_time()) return {};  // one facet can hold most subfacets; run() stops after the scan
     }
   }

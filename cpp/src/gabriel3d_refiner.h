@@ -84,17 +84,18 @@ class Refiner {
   // for points in the facet's plane; they differ only through the rounding of the frame and of Steiner points
   // (near-cocircular points, e.g. a regular 10-gon, where splitting for them wasted hundreds of points). Points
   // of f inside the 2D circumcircle lie behind a subsegment and do count. The exact check of the final mesh is
-  // authoritative either way; repair() fixes what it finds.
-  bool subfacet_encroached(int f, int a, int b, int c) const {
+  // authoritative either way; repair() fixes what it finds. memo: the face's last scan (gabriel3d_scan_memo.h).
+  bool subfacet_encroached(int f, int a, int b, int c, ScanMemo* memo = nullptr) const {
     ++work_;
     const Facet& facet = *s_.facets[f];
-    const Q2 &pa = facet.vertex.at(a)->point(), &pb = facet.vertex.at(b)->point(), &pc = facet.vertex.at(c)->point();
     auto artifact = [&](int t) {
       auto it = facet.vertex.find(t);
       return ignore_frame_artifacts_ && it != facet.vertex.end() &&
-             CGAL::side_of_bounded_circle(pa, pb, pc, it->second->point()) != CGAL::ON_BOUNDED_SIDE;
+             CGAL::side_of_bounded_circle(facet.vertex.at(a)->point(), facet.vertex.at(b)->point(),
+                                          facet.vertex.at(c)->point(), it->second->point()) != CGAL::ON_BOUNDED_SIDE;
     };
-    return deepest_encroacher(s_.points, index_, a, b, c, nullptr, artifact).vertex >= 0;
+    return memo ? encroached_since_memo(s_.points, index_, a, b, c, *memo, artifact)
+                : deepest_encroacher(s_.points, index_, a, b, c, nullptr, artifact).vertex >= 0;
   }
   // Splits `sub` if it still exists and (unless `always`) is still encroached by a vertex. `pending`: a point not
   // inserted (a refused circumcenter) that the greedy rule treats as one more encroacher.

@@ -48,46 +48,54 @@ void set_face_facet(DT3::Cell_handle c, int i, int f) {
 // a subfacet with an empty open diametral sphere is Delaunay unless points lie on that sphere) is marked on its two
 // cells (the first facet listing it wins); a facet with a subfacet missing from the Delaunay tetrahedralization
 // (cospherical points, e.g. a cube's square faces) is covered by centroid: every Delaunay face with its corners on
-// the facet and its centroid inside the facet's domain. Returns that flag per facet. Subfacets are grouped by
-// their smallest corner, so that the cells around each point are collected once, not once per subfacet.
-std::vector<bool> mark_subfacets(const PlcState& s, const DT3& dt, const std::vector<DT3::Vertex_handle>& vertex) {
+// the facet and its centroid inside the facet's domain. Returns that flag per facet. One pass over the faces of the
+// cells, each looked up among the subfacets filed under its smallest corner (a handful), instead of collecting the
+// cells around every point (CGAL's incident_cells was most of this function's time).
+std::vector<bool> mark_subfacets(const PlcState& s, const DT3& dt) {
   struct Subfacet {
     int b, c, facet;  // the two larger corners
+    bool found;
   };
-  std::vector<std::vector<Subfacet>> by_corner(s.points.size());
+  // The subfacets by smallest corner, in facet order within a corner (compressed rows: first[a] .. first[a + 1]).
+  std::vector<int> first(s.points.size() + 1, 0);
+  std::vector<Corners> keys;
+  std::vector<int> facet_of_key;
   for (std::size_t f = 0; f < s.facets.size(); ++f) {
     const FacetCDT& cdt = s.facets[f]->cdt;
     for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
       if (!fh->info().in_domain) continue;
-      Corners k = corners(fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info());
-      by_corner[k[0]].push_back({k[1], k[2], static_cast<int>(f)});
+      keys.push_back(corners(fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()));
+      facet_of_key.push_back(static_cast<int>(f));
+      ++first[keys.back()[0] + 1];
+    }
+  }
+  std::partial_sum(first.begin(), first.end(), first.begin());
+  std::vector<Subfacet> by_corner(keys.size());
+  std::vector<int> next(first.begin(), first.end() - 1);
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    by_corner[next[keys[k][0]]++] = {keys[k][1], keys[k][2], facet_of_key[k], false};
+  // Each face once, from the cell of smaller address of its two (infinite cells included, for the hull's faces);
+  // the neighbor is not dereferenced, and each cell's corners are read once.
+  const auto infinite = dt.infinite_vertex();
+  for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
+    int v[4];
+    for (int i = 0; i < 4; ++i) v[i] = c->vertex(i) == infinite ? -1 : c->vertex(i)->info();
+    for (int i = 0; i < 4; ++i) {
+      if (&*c->neighbor(i) < &*c) continue;
+      const int a = v[(i + 1) % 4], b = v[(i + 2) % 4], d = v[(i + 3) % 4];
+      if (a < 0 || b < 0 || d < 0) continue;
+      const Corners k = corners(a, b, d);
+      for (int e = first[k[0]]; e < first[k[0] + 1]; ++e) {
+        Subfacet& sub = by_corner[e];
+        if (sub.b != k[1] || sub.c != k[2]) continue;
+        if (c->info().facet[i] == kUnknown) set_face_facet(c, i, sub.facet);
+        sub.found = true;
+      }
     }
   }
   std::vector<bool> by_centroid(s.facets.size(), false);
-  std::vector<DT3::Cell_handle> cells;
-  for (std::size_t a = 0; a < by_corner.size(); ++a) {
-    if (by_corner[a].empty()) continue;
-    cells.clear();
-    dt.incident_cells(vertex[a], std::back_inserter(cells));
-    for (const Subfacet& sub : by_corner[a]) {
-      bool found = false;
-      for (auto c : cells) {
-        int ia = c->index(vertex[a]);
-        for (int i = 0; i < 4 && !found; ++i) {
-          if (i == ia) continue;
-          int j = (i + 1) % 4 == ia ? (i + 2) % 4 : (i + 1) % 4;  // the two corners other than a
-          int m = 6 - i - ia - j;
-          if (dt.is_infinite(c->vertex(j)) || dt.is_infinite(c->vertex(m))) continue;
-          int vj = c->vertex(j)->info(), vm = c->vertex(m)->info();
-          if (std::min(vj, vm) != sub.b || std::max(vj, vm) != sub.c) continue;
-          set_face_facet(c, i, sub.facet);
-          found = true;
-        }
-        if (found) break;
-      }
-      if (!found) by_centroid[sub.facet] = true;
-    }
-  }
+  for (const Subfacet& sub : by_corner)
+    if (!sub.found) by_centroid[sub.facet] = true;
   return by_centroid;
 }
 
@@ -164,10 +172,8 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
   DT3 dt(input.begin(), input.end());
   Restricted out;
   if (dt.dimension() < 3) return out;
-  std::vector<DT3::Vertex_handle> vertex(s.points.size());
-  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) vertex[v->info()] = v;
   for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) c->info() = CellInfo{};
-  const std::vector<bool> by_centroid = mark_subfacets(s, dt, vertex);
+  const std::vector<bool> by_centroid = mark_subfacets(s, dt);
   // Cells with all four corners on one facet covered by centroid are flat up to the rounding of Steiner points
   // (or non-planar input): they belong to the facet, not to the volume. Their component is -2 - facet; they are
   // never entered nor output, and their faces towards ordinary cells cover the facet. Exception: a cell with a
