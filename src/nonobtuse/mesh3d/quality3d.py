@@ -102,7 +102,8 @@ def refine_quality3d(
     **gabriel_options: Any,
 ) -> Quality3DResult:
     """Repair the boundary of `plc` to Gabriel (refine_gabriel with ``gabriel_options``: max_steiner,
-    min_length, split, protected_fallback; fallback_own_limits False unless given) and add interior points
+    min_length, split, protected_fallback; fallback_own_limits: True unless given for the one repair of the
+    input's own boundary, False for the others) and add interior points
     until every tet has radius-edge ratio <= radius_edge and volume <= max_volume; no interior point is kept
     inside a subfacet's or subsegment's closed
     diametral sphere.
@@ -165,11 +166,15 @@ def refine_quality3d(
     # TetGen's facet splits can start a cascade that the input's own boundary does not have (points near small
     # input angles): when that repair does not converge within its budget, the input's boundary is repaired
     tetgen_surface = surface is not plc
-    g = _repair_tetgen_surface(refiner, surface) if tetgen_surface else refiner.repair(plc, np.zeros((0, 3)))
+    # The repair of the input's own boundary, run once, takes the protected rerun's wider limits unless
+    # fallback_own_limits is given (u.off converges only so); the repairs of the rounds do not
+    own_limits = {"fallback_own_limits": gabriel_options.get("fallback_own_limits", True)}
+    g = _repair_tetgen_surface(refiner, surface) if tetgen_surface else refiner.repair(plc, np.zeros((0, 3)),
+                                                                                       **own_limits)
     if g.status != "converged" and tetgen_surface:
         surface_note = f"input (the repair of TetGen's surface ended {g.status})"
         surface, start = plc, "boundary"
-        g = refiner.repair(surface, np.zeros((0, 3)))
+        g = refiner.repair(surface, np.zeros((0, 3)), **own_limits)
     stats: dict[str, Any] = {"radius_edge": radius_edge, "max_volume_bound": _jsonable_bound(max_volume),
                              "start": start, "rounds": 0, "surface": surface_note,
                              "boundary_repair": dict(g.stats)}
