@@ -16,9 +16,15 @@ from nonobtuse import _core
 from nonobtuse.cli import EXIT_INVALID, EXIT_OK, main
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.mesh3d import check_gabriel, load_plc, read_tetmesh_json
+from nonobtuse.mesh3d.gabriel import refine_gabriel
 from nonobtuse.mesh3d.plc import PLC, TetMesh
-from nonobtuse.mesh3d.quality3d import refine_quality3d
-from nonobtuse.mesh3d.quality3d_rounds import shortest_edges, tet_circumspheres
+from nonobtuse.mesh3d.quality3d import (
+    SURFACE_STEINER_PER_POINT,
+    _repair_tetgen_surface,
+    _tetgen_surface,
+    refine_quality3d,
+)
+from nonobtuse.mesh3d.quality3d_rounds import InteriorRefiner, shortest_edges, tet_circumspheres
 
 DATA3D = Path(__file__).resolve().parent / "data" / "3d"
 SHARED3D = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "3d"
@@ -162,6 +168,26 @@ def test_budget_and_unrepaired_boundary_are_statuses():
     schonhardt = load_plc(DATA3D / "schonhardt.off")
     r = refine_quality3d(schonhardt, radius_edge=2.0, max_steiner=5, protected_fallback=False)
     assert r.status == "budget_exhausted" and r.stats["rounds"] == 0
+
+
+@needs_tetgen
+def test_the_repair_of_tetgens_surface_stops_at_its_steiner_budget():
+    # icosphere_jitter: the budget is not reached, the mesh is the one refine_gabriel gives without it
+    plc = load_plc(DATA3D / "icosphere_jitter.off")
+    surface = _tetgen_surface(plc, "pq2.0AQ")[0]
+    refiner = InteriorRefiner(plc, None, 2.0, None, 0.0, {})
+    within = _repair_tetgen_surface(refiner, surface)
+    free = refine_gabriel(surface, control_volumes=False, fallback_own_limits=False)
+    assert within.status == free.status == "converged"
+    assert np.array_equal(within.mesh.points, free.mesh.points)
+    assert np.array_equal(within.mesh.tets, free.mesh.tets)
+    # Schonhardt's prism: TetGen's surface cascades; the first pass stops at the budget and no protected rerun
+    # follows (refine_quality3d then repairs the input's boundary)
+    plc = load_plc(DATA3D / "schonhardt.off")
+    surface = _tetgen_surface(plc, "pq2.0AQ")[0]
+    r = _repair_tetgen_surface(InteriorRefiner(plc, None, 2.0, None, 0.0, {}), surface)
+    assert r.status == "budget_exhausted" and r.stats["other_attempt"] == ""
+    assert r.stats["steiner_points"] == SURFACE_STEINER_PER_POINT * len(surface.points) + 1000
 
 
 @pytest.mark.parametrize("bounds", [{"radius_edge": 1.0}, {"radius_edge": float("nan")}, {"max_volume": 0},

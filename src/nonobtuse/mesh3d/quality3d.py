@@ -28,6 +28,14 @@ from nonobtuse.mesh3d.gabriel import GabrielReport, check_gabriel, control_volum
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 from nonobtuse.mesh3d.quality3d_rounds import InteriorRefiner, tet_quality
 
+# The Steiner budget of the repair of TetGen's surface, per point of that surface (plus 1,000): the repairs
+# that converge on the bench corpus add at most 2.3 per point (fandisk.off 2.26, gc_spot.ply 2.29,
+# icosphere_jitter.off 2.3; anchor.off 0.51); wedge-1.smesh's had added 7.5 (88,000 on 11,675 points, 59 s
+# CPU) and was still growing, towards the default 10 per point and then the protected rerun's as many: no
+# result in 200 s. Deterministic, unlike the time share it replaces. The interior passes' boundary splits are
+# bounded by it too (they add at most 1.1 per surface point on the converging inputs: anchor.off).
+SURFACE_STEINER_PER_POINT = 3
+
 QualityStatus = Literal["converged", "quality_blocked", "budget_exhausted", "min_length_reached", "stalled"]
 Start = Literal["tetgen", "boundary"]
 
@@ -94,7 +102,8 @@ def refine_quality3d(
     **gabriel_options: Any,
 ) -> Quality3DResult:
     """Repair the boundary of `plc` to Gabriel (refine_gabriel with ``gabriel_options``: max_steiner,
-    min_length, split, protected_fallback; fallback_own_limits False unless given) and add interior points
+    min_length, split, protected_fallback; fallback_own_limits: True unless given for the one repair of the
+    input's own boundary, False for the others) and add interior points
     until every tet has radius-edge ratio <= radius_edge and volume <= max_volume; no interior point is kept
     inside a subfacet's or subsegment's closed
     diametral sphere.
@@ -111,8 +120,9 @@ def refine_quality3d(
     repair's max_steiner). start: "tetgen" lets TetGen (-pq R -a V, the 3d extra) split the facets for the
     bounds before the Gabriel repair and takes its -Y interior points on the repaired boundary as the first
     interior points (it falls back to "boundary" when TetGen is missing or fails); "boundary" starts from the
-    input boundary and its repair alone (also taken when the repair of TetGen's surface does not converge:
-    within its work budget, or half the time with a time_limit).
+    input boundary and its repair alone (also taken when the repair of TetGen's surface does not converge
+    within SURFACE_STEINER_PER_POINT Steiner points per surface point + 1,000, or half the time with a
+    time_limit: :func:`_repair_tetgen_surface`).
     progress: True prints a line per round to stderr; a callable gets (round, interior_points, bad_tets,
     blocked_tets, seconds). started: time.perf_counter() at which the caller's work began (time_limit counts
     from it).
@@ -153,13 +163,18 @@ def refine_quality3d(
     switches = _tetgen_switches(max_volume, radius_edge)
     surface, surface_note = _tetgen_surface(plc, switches + "AQ") if start == "tetgen" else (plc, "input")
     refiner = InteriorRefiner(plc, max_volume, radius_edge, time_limit, started, gabriel_options)
-    # TetGen's facet splits can make the repair harder (points near small input angles): with half the time
-    # left, it stops and the input's own boundary is repaired instead
-    g = refiner.repair(surface, np.zeros((0, 3)), share=0.5 if surface is not plc else 1.0)
-    if g.status != "converged" and surface is not plc:
+    # TetGen's facet splits can start a cascade that the input's own boundary does not have (points near small
+    # input angles): when that repair does not converge within its budget, the input's boundary is repaired
+    tetgen_surface = surface is not plc
+    # The repair of the input's own boundary, run once, takes the protected rerun's wider limits unless
+    # fallback_own_limits is given (u.off converges only so); the repairs of the rounds do not
+    own_limits = {"fallback_own_limits": gabriel_options.get("fallback_own_limits", True)}
+    g = _repair_tetgen_surface(refiner, surface) if tetgen_surface else refiner.repair(plc, np.zeros((0, 3)),
+                                                                                       **own_limits)
+    if g.status != "converged" and tetgen_surface:
         surface_note = f"input (the repair of TetGen's surface ended {g.status})"
         surface, start = plc, "boundary"
-        g = refiner.repair(surface, np.zeros((0, 3)))
+        g = refiner.repair(surface, np.zeros((0, 3)), **own_limits)
     stats: dict[str, Any] = {"radius_edge": radius_edge, "max_volume_bound": _jsonable_bound(max_volume),
                              "start": start, "rounds": 0, "surface": surface_note,
                              "boundary_repair": dict(g.stats)}
@@ -225,6 +240,23 @@ def refine_quality3d(
              "warnings": list(plc.warnings), "seconds": time.perf_counter() - started}
     mesh.stats = stats
     return Quality3DResult(mesh, cast(QualityStatus, status), stats, report, small_angle)
+
+
+def _repair_tetgen_surface(refiner: InteriorRefiner, surface: PLC) -> Any:
+    """refine_gabriel of TetGen's `surface` within SURFACE_STEINER_PER_POINT Steiner points per surface point
+    (+ 1,000) and half the time left (with a time_limit): the first strategy pass alone, then, unless that
+    pass converged or ran out of its budget, the protected strategy on the surface with the same limits, as
+    refine_gabriel's own fallback runs it (mc_gyroid.off converges so). A pass that used up its Steiner budget
+    is a cascade the protected rerun does not stop either (wedge-1.smesh: 47,700 points each, 26 s CPU each);
+    the caller then repairs the input's own boundary."""
+    cap = SURFACE_STEINER_PER_POINT * len(surface.points) + 1000
+    options = refiner.gabriel_options
+    first = refiner.repair(surface, np.zeros((0, 3)), share=0.5, max_steiner=cap, protected_fallback=False)
+    protect = options.get("protected_fallback", True) and options.get("split") not in ("protected",
+                                                                                        "mirrored")
+    if first.status in ("converged", "budget_exhausted") or not protect:
+        return first
+    return refiner.repair(surface, np.zeros((0, 3)), share=0.5, max_steiner=cap, split="protected")
 
 
 def _tetgen_switches(max_volume: Any, radius_edge: float | None) -> str:

@@ -80,9 +80,12 @@ class InteriorRefiner:
         self.boundary_points = self.boundary_rounds = self.refused_splits = 0  # the passes' boundary splits
         self.lazy_tried = False  # the first pass tried without the small-angle rule's angle clauses
 
-    def repair(self, surface: PLC, interior: np.ndarray, share: float = 1.0) -> Any:
+    def repair(self, surface: PLC, interior: np.ndarray, share: float = 1.0, max_steiner: int | None = None,
+               **overrides: Any) -> Any:
         """refine_gabriel of `surface` with `interior` (k, 3) as isolated points (after surface's points),
-        within `share` of the time left (without a time limit: within its own work budget)."""
+        within `share` of the time left (without a time limit: within its own work budget) and within
+        `max_steiner` Steiner points when given (or the caller's max_steiner, if smaller); `overrides` replace
+        the caller's refine_gabriel options."""
         points = np.concatenate([surface.points, np.asarray(interior, dtype=np.float64).reshape(-1, 3)])
         plc = replace(self.plc, points=points, triangles=surface.triangles, facet_ids=surface.facet_ids,
                       segments=surface.segments)
@@ -90,7 +93,9 @@ class InteriorRefiner:
         # the shared limits for the fallback too (unless given): a pass repairs again and again, and the
         # fallback's own wider limits let each failing repair run to its work budget (cad_knife_2deg: over
         # 200 s instead of 10 s, for the same 6-point result)
-        options = {"fallback_own_limits": False, **self.gabriel_options}
+        options = {"fallback_own_limits": False, **self.gabriel_options, **overrides}
+        if max_steiner is not None:
+            options["max_steiner"] = min(max_steiner, options.get("max_steiner") or max_steiner)
         return refine_gabriel(plc, time_limit=max(0.0, share * left) if self.wall_clock else None,
                               control_volumes=False, **options)
 
