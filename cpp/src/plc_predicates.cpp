@@ -8,6 +8,7 @@
 #include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
+#include <array>
 #include <string>
 
 #include "fork_join.h"
@@ -132,36 +133,40 @@ std::vector<std::array<int, 2>> triangle_soup_self_intersections(const std::vect
 
 namespace {
 
-// Per triangle, whether its corners are those of a face of one of `cells` (a triangle with a repeated corner never
-// is). The triangles are bucketed by their smallest corner (CSR), and every face of every cell looks in its
-// smallest corner's bucket (about two triangles): O(cells + triangles), the cells read in order, instead of a walk
-// around a vertex's ~80 incident cells per triangle (CGAL's is_facet), which took 5 s for 1e6 triangles.
-std::vector<char> faces_among_cells(std::size_t points, const std::vector<PlcTriangle>& triangles,
-                                    const std::vector<std::array<int, 4>>& cells) {
-  std::vector<std::size_t> start(points + 1, 0);
-  auto sorted = [](int a, int b, int c) {
-    if (a > b) std::swap(a, b);
-    if (b > c) std::swap(b, c);
-    if (a > b) std::swap(a, b);
-    return std::array<int, 3>{a, b, c};
-  };
-  for (const auto& t : triangles) ++start[std::min({t[0], t[1], t[2]}) + 1];
-  for (std::size_t v = 0; v < points; ++v) start[v + 1] += start[v];
-  std::vector<std::pair<std::array<int, 3>, std::size_t>> bucket(triangles.size());
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    auto k = sorted(triangles[t][0], triangles[t][1], triangles[t][2]);
-    bucket[fill[k[0]]++] = {k, t};
-  }
-  std::vector<char> is_face(triangles.size(), 0);
-  for (const auto& c : cells)
-    for (int i = 0; i < 4; ++i) {
-      auto k = sorted(c[(i + 1) % 4], c[(i + 2) % 4], c[(i + 3) % 4]);
-      for (std::size_t e = start[k[0]]; e < start[k[0] + 1]; ++e)
-        if (bucket[e].first == k) is_face[bucket[e].second] = 1;
-    }
-  return is_face;
+std::array<int, 3> sorted3(int a, int b, int c) {
+  if (a > b) std::swap(a, b);
+  if (b > c) std::swap(b, c);
+  if (a > b) std::swap(a, b);
+  return {a, b, c};
 }
+
+// The triangles filed under their smallest corner (compressed rows: first[a] .. first[a + 1]), each as (its two
+// larger corners, its index): about two per corner. A face of a cell is looked up in its smallest corner's row,
+// O(1) two-int comparisons, instead of a walk around a vertex's ~80 incident cells per triangle (CGAL's is_facet,
+// 5 s for 1e6 triangles).
+struct TrianglesByCorner {
+  std::vector<int> first;
+  std::vector<std::array<int, 3>> rows;
+
+  TrianglesByCorner(std::size_t points, const std::vector<PlcTriangle>& triangles)
+      : first(points + 1, 0), rows(triangles.size()) {
+    for (const auto& t : triangles) ++first[std::min({t[0], t[1], t[2]}) + 1];
+    for (std::size_t v = 0; v < points; ++v) first[v + 1] += first[v];
+    std::vector<int> next(first.begin(), first.end() - 1);
+    for (std::size_t t = 0; t < triangles.size(); ++t) {
+      const auto k = sorted3(triangles[t][0], triangles[t][1], triangles[t][2]);
+      rows[next[k[0]]++] = {k[1], k[2], static_cast<int>(t)};
+    }
+  }
+
+  // Sets is_face of every triangle with corners {a, b, c} (distinct: a triangle with a repeated corner never
+  // matches).
+  void mark(int a, int b, int c, std::vector<char>& is_face) const {
+    const auto k = sorted3(a, b, c);
+    for (int e = first[k[0]]; e < first[k[0] + 1]; ++e)
+      if (rows[e][0] == k[1] && rows[e][1] == k[2]) is_face[rows[e][2]] = 1;
+  }
+};
 
 // Sorts the cells lexicographically: a counting sort on the first corner, then each first corner's ~20 cells
 // sorted (0.9 -> 0.3 s for 9.85M cells, where std::sort compares whole rows).
@@ -192,12 +197,26 @@ DelaunayFaces delaunay_faces(const std::vector<PlcPoint>& points, const std::vec
     for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) seen[v->info()] = 1;
     for (std::size_t i = 0; i < points.size(); ++i)
       if (!seen[i]) throw InvalidInput("point " + std::to_string(i) + " coincides with another point");
+    // One pass over all cells (infinite ones included, for the hull's faces) reads each cell's corners once, keeps
+    // the finite cells and looks each face up once, from the cell of smaller address of its two (the neighbor is
+    // not dereferenced): half the lookups of every face of every finite cell.
+    const TrianglesByCorner by_corner(points.size(), triangles);
+    out.is_face.assign(triangles.size(), 0);
     out.cells.reserve(dt.number_of_finite_cells());
-    for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-      out.cells.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
-  }  // the triangulation's memory goes before the sort and the face lookup
+    const auto infinite = dt.infinite_vertex();
+    for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
+      std::array<int, 4> v;
+      for (int i = 0; i < 4; ++i) v[i] = c->vertex(i) == infinite ? -1 : c->vertex(i)->info();
+      if (std::min({v[0], v[1], v[2], v[3]}) >= 0) out.cells.push_back(v);
+      if (triangles.empty()) continue;
+      for (int i = 0; i < 4; ++i) {
+        const int a = v[(i + 1) % 4], b = v[(i + 2) % 4], d = v[(i + 3) % 4];
+        if (&*c->neighbor(i) < &*c || a < 0 || b < 0 || d < 0) continue;
+        by_corner.mark(a, b, d, out.is_face);
+      }
+    }
+  }  // the triangulation's memory goes before the sort
   sort_cells(points.size(), out.cells);
-  out.is_face = faces_among_cells(points.size(), triangles, out.cells);
   return out;
 }
 
