@@ -19,7 +19,7 @@ std::size_t SubsegmentBalls::CellHash::operator()(const Cell& c) const {
   return h;
 }
 
-std::optional<std::vector<SubsegmentBalls::Cell>> SubsegmentBalls::cells_of(const Key& sub) const {
+std::optional<SubsegmentBalls::Cells> SubsegmentBalls::cells_of(const Key& sub) const {
   const SearchBall ball = search_ball(points_[sub.first], points_[sub.second]);
   if (ball.everything) return std::nullopt;
   const auto& c = ball.center;
@@ -31,12 +31,12 @@ std::optional<std::vector<SubsegmentBalls::Cell>> SubsegmentBalls::cells_of(cons
   std::frexp(2.0 * r, &level);  // 2^level > 2 r: at most two cells per axis (three where rounding shifts an end)
   // Not below 2^-1000 (no overflow in cell_index's scaling), nor so fine that indices pass 2^53.
   level = std::max({level, -1000, std::ilogb(reach + r) - 52});
-  std::vector<Cell> out;
+  Cells out;
   const std::int64_t x1 = cell_index(c[0] + r, level), y1 = cell_index(c[1] + r, level);
   const std::int64_t z1 = cell_index(c[2] + r, level);
   for (std::int64_t x = cell_index(c[0] - r, level); x <= x1; ++x)
     for (std::int64_t y = cell_index(c[1] - r, level); y <= y1; ++y)
-      for (std::int64_t z = cell_index(c[2] - r, level); z <= z1; ++z) out.push_back({level, x, y, z});
+      for (std::int64_t z = cell_index(c[2] - r, level); z <= z1; ++z) out.cell[out.size++] = {level, x, y, z};
   return out;
 }
 
@@ -47,7 +47,7 @@ void SubsegmentBalls::add(const Key& sub) {
     return;
   }
   for (const Cell& cell : *cells) cells_[cell].push_back(sub);
-  ++levels_[cells->front().level];
+  ++levels_[cells->cell[0].level];
 }
 
 void SubsegmentBalls::remove(const Key& sub) {
@@ -62,7 +62,7 @@ void SubsegmentBalls::remove(const Key& sub) {
     filed.erase(std::find(filed.begin(), filed.end(), sub));
     if (filed.empty()) cells_.erase(it);
   }
-  if (--levels_[cells->front().level] == 0) levels_.erase(cells->front().level);
+  if (--levels_[cells->cell[0].level] == 0) levels_.erase(cells->cell[0].level);
 }
 
 }  // namespace nonobtuse::gabriel3d

@@ -5,6 +5,7 @@
 // point strictly inside a sphere lies in one of its cells at its level, so a query visits one cell per populated
 // level (and the balls without finite bound). Candidates only: the caller decides exactly.
 #pragma once
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -38,8 +39,16 @@ class SubsegmentBalls {
   };
   // floor(x / 2^level) for |x / 2^level| < 2^62 (exact but for underflow, which keeps the sign).
   static std::int64_t cell_index(double x, int level);
-  // The cells a subsegment's search ball touches (at most 8 almost always); nullopt without finite bound.
-  std::optional<std::vector<Cell>> cells_of(const Key& sub) const;
+  // The cells a subsegment's search ball touches: at most 8 almost always, 27 at most (three per axis); in place,
+  // not on the heap (one allocation per add or remove was a tenth of their time on fandisk).
+  struct Cells {
+    std::array<Cell, 27> cell;
+    int size = 0;
+    const Cell* begin() const { return cell.data(); }
+    const Cell* end() const { return cell.data() + size; }
+  };
+  // nullopt without finite bound.
+  std::optional<Cells> cells_of(const Key& sub) const;
 
   const std::vector<P3>& points_;
   std::unordered_map<Cell, std::vector<Key>, CellHash> cells_;

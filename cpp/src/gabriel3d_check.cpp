@@ -116,8 +116,9 @@ SearchBall search_ball(const P3& a, const P3& b, const P3& c) {
 }
 
 PointIndex::PointIndex(const std::vector<P3>& points) : points_(points) {
-  order_.resize(points.size());
-  std::iota(order_.begin(), order_.end(), 0);
+  order_.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    order_.push_back({{points[i].x(), points[i].y(), points[i].z()}, static_cast<int>(i)});
   rebuild();
 }
 
@@ -126,7 +127,7 @@ void PointIndex::add(int i) {
   // Every query scans the pending list: keep it near sqrt(n) (a rebuild costs O(n log n)), not a fraction of n,
   // which made each query O(n) and refinement quadratic.
   if (pending_.size() > 256 && pending_.size() * pending_.size() > 16 * order_.size()) {
-    order_.insert(order_.end(), pending_.begin(), pending_.end());
+    for (int j : pending_) order_.push_back({{points_[j].x(), points_[j].y(), points_[j].z()}, j});
     pending_.clear();
     rebuild();
   }
@@ -144,7 +145,7 @@ int PointIndex::build(int begin, int end) {
   node.lo = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
   node.hi = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   for (int k = begin; k < end; ++k) {
-    const P3& p = points_[order_[k]];
+    const auto& p = order_[k].p;
     for (int d = 0; d < 3; ++d) {
       node.lo[d] = std::min(node.lo[d], p[d]);
       node.hi[d] = std::max(node.hi[d], p[d]);
@@ -158,7 +159,7 @@ int PointIndex::build(int begin, int end) {
     if (node.hi[d] - node.lo[d] > node.hi[axis] - node.lo[axis]) axis = d;
   int mid = (begin + end) / 2;
   std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
-                   [&](int i, int j) { return points_[i][axis] < points_[j][axis]; });
+                   [&](const Item& i, const Item& j) { return i.p[axis] < j.p[axis]; });
   int left = build(begin, mid);
   int right = build(mid, end);
   nodes_[id].left = left;
@@ -192,7 +193,7 @@ int PointIndex::nearest(const P3& q) const {
     const Node& node = nodes_[stack[--top]];
     if (box_distance2(node, c) > best2) continue;
     if (node.left < 0) {
-      for (int k = node.begin; k < node.end; ++k) consider(order_[k]);
+      for (int k = node.begin; k < node.end; ++k) consider(order_[k].i);
     } else {  // visit the nearer child first (pushed last)
       bool left_first = box_distance2(nodes_[node.left], c) <= box_distance2(nodes_[node.right], c);
       stack[top++] = left_first ? node.right : node.left;

@@ -57,11 +57,17 @@ class PointIndex {
     int begin, end;                // range in order_
     int left = -1, right = -1;
   };
+  // An indexed point with its coordinates: the tree's points in tree order, so that the leaves' scans and the
+  // builds read memory in sequence (with point indices only, every coordinate was a random access).
+  struct Item {
+    std::array<double, 3> p;
+    int i;
+  };
   void rebuild();
   int build(int begin, int end);
   double box_distance2(const Node& node, const std::array<double, 3>& q) const;
   const std::vector<P3>& points_;
-  std::vector<int> order_;
+  std::vector<Item> order_;
   std::vector<Node> nodes_;
   std::vector<int> pending_;
 };
@@ -69,7 +75,7 @@ class PointIndex {
 template <class Visit>
 void PointIndex::for_each_in(const SearchBall& ball, Visit&& visit) const {
   if (ball.everything) {
-    for (int i : order_) visit(i);
+    for (const Item& item : order_) visit(item.i);
     for (int i : pending_) visit(i);
     return;
   }
@@ -90,8 +96,11 @@ void PointIndex::for_each_in(const SearchBall& ball, Visit&& visit) const {
     const Node& node = nodes_[stack[--top]];
     if (box_distance2(node, c) > r2) continue;
     if (node.left < 0) {
-      for (int k = node.begin; k < node.end; ++k)
-        if (d2(order_[k]) <= r2) visit(order_[k]);
+      for (int k = node.begin; k < node.end; ++k) {
+        const auto& p = order_[k].p;
+        double dx = p[0] - c[0], dy = p[1] - c[1], dz = p[2] - c[2];
+        if (dx * dx + dy * dy + dz * dz <= r2) visit(order_[k].i);
+      }
     } else {
       stack[top++] = node.left;
       stack[top++] = node.right;
