@@ -25,6 +25,25 @@ P3 midpoint(const P3& a, const P3& b) {
   return P3(a.x() + 0.5 * (b.x() - a.x()), a.y() + 0.5 * (b.y() - a.y()), a.z() + 0.5 * (b.z() - a.z()));
 }
 
+// The points of a list from index `from` on, indexed: is one of them strictly inside the diametral sphere of ab
+// (c null) or of triangle abc? (exact)
+class FreshPoints {
+ public:
+  FreshPoints(const std::vector<P3>& points, std::size_t from) : pts_(points.begin() + from, points.end()), index_(pts_) {}
+  bool inside(const P3& a, const P3& b, const P3* c) const {
+    bool hit = false;
+    index_.for_each_in(c ? gabriel3d::search_ball(a, b, *c) : gabriel3d::search_ball(a, b), [&](int t) {
+      hit = hit || (c ? CGAL::side_of_bounded_sphere(a, b, *c, pts_[t]) : CGAL::side_of_bounded_sphere(a, b, pts_[t])) ==
+                       CGAL::ON_BOUNDED_SIDE;
+    });
+    return hit;
+  }
+
+ private:
+  std::vector<P3> pts_;
+  gabriel3d::PointIndex index_;
+};
+
 }  // namespace
 
 BoundarySplitter::BoundarySplitter(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
@@ -244,28 +263,48 @@ long BoundarySplitter::follow(const std::function<bool(int, int, int)>& is_face)
 }
 
 bool BoundarySplitter::restore_gabriel(const std::function<bool()>& stop) {
+  // The subsegments and subfacets the last scan of each level found free (sorted), and the number of points then:
+  // points are only added, so a free one is encroached now exactly when one of the points added since is strictly
+  // inside its sphere (FreshPoints); the others are checked against all. The scans find what full scans would.
+  std::vector<Key> free_subs;
+  std::vector<std::array<int, 4>> free_faces;
+  std::size_t subs_from = s_.points.size(), faces_from = s_.points.size();
   for (;;) {
     // Level 1: subsegments, until none is encroached.
     for (;;) {
-      std::vector<Key> subs;
-      for (const auto& [k, parent] : s_.subsegments)
-        if (encroached(k.first, k.second, -1)) subs.push_back(k);
+      const FreshPoints fresh(s_.points, subs_from);
+      std::vector<Key> subs, free;
+      for (const auto& [k, parent] : s_.subsegments) {
+        const bool hit = std::binary_search(free_subs.begin(), free_subs.end(), k)
+                             ? fresh.inside(s_.points[k.first], s_.points[k.second], nullptr)
+                             : encroached(k.first, k.second, -1);
+        (hit ? subs : free).push_back(k);  // in key order: sorted
+      }
+      free_subs = std::move(free);
+      subs_from = s_.points.size();
       if (subs.empty()) break;
       for (const Key& k : subs)
         if (stop() || !split_subsegment(k.first, k.second)) return false;
     }
     // Level 2: the subfacets one scan finds encroached, each split when its turn comes if it is still a face.
-    std::vector<std::array<int, 4>> found;  // facet, corners
+    const FreshPoints fresh(s_.points, faces_from);
+    std::vector<std::array<int, 4>> found, free;  // facet, corners
     for (std::size_t f = 0; f < s_.facets.size(); ++f) {
       const FacetCDT& cdt = s_.facets[f]->cdt;
       for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
         if (!fh->info().in_domain) continue;
         std::array<int, 4> r{static_cast<int>(f), fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()};
         std::sort(r.begin() + 1, r.end());
-        if (!CGAL::collinear(s_.points[r[1]], s_.points[r[2]], s_.points[r[3]]) && encroached(r[1], r[2], r[3]))
-          found.push_back(r);
+        const P3 &a = s_.points[r[1]], &b = s_.points[r[2]], &c = s_.points[r[3]];
+        if (CGAL::collinear(a, b, c)) continue;
+        const bool hit = std::binary_search(free_faces.begin(), free_faces.end(), r) ? fresh.inside(a, b, &c)
+                                                                                      : encroached(r[1], r[2], r[3]);
+        (hit ? found : free).push_back(r);
       }
     }
+    std::sort(free.begin(), free.end());
+    free_faces = std::move(free);
+    faces_from = s_.points.size();
     if (found.empty()) return true;
     std::sort(found.begin(), found.end());
     for (const auto& [f, a, b, c] : found) {
