@@ -57,6 +57,7 @@ BoundarySplitter::BoundarySplitter(const std::vector<Point3>& points, const std:
       max_points_(max_points),
       features_(s_, sharp_dihedral, small_apex) {
   for (const auto& [k, parent] : s_.subsegments) balls_.add(k);
+  subs_from_ = faces_from_ = s_.points.size();
 }
 
 void BoundarySplitter::add_interior_point(const P3& p) {
@@ -263,31 +264,25 @@ long BoundarySplitter::follow(const std::function<bool(int, int, int)>& is_face)
 }
 
 bool BoundarySplitter::restore_gabriel(const std::function<bool()>& stop) {
-  // The subsegments and subfacets the last scan of each level found free (sorted), and the number of points then:
-  // points are only added, so a free one is encroached now exactly when one of the points added since is strictly
-  // inside its sphere (FreshPoints); the others are checked against all. The scans find what full scans would.
-  std::vector<Key> free_subs;
-  std::vector<std::array<int, 4>> free_faces;
-  std::size_t subs_from = s_.points.size(), faces_from = s_.points.size();
   for (;;) {
     // Level 1: subsegments, until none is encroached.
     for (;;) {
-      const FreshPoints fresh(s_.points, subs_from);
+      const FreshPoints fresh(s_.points, subs_from_);
       std::vector<Key> subs, free;
       for (const auto& [k, parent] : s_.subsegments) {
-        const bool hit = std::binary_search(free_subs.begin(), free_subs.end(), k)
+        const bool hit = std::binary_search(free_subs_.begin(), free_subs_.end(), k)
                              ? fresh.inside(s_.points[k.first], s_.points[k.second], nullptr)
                              : encroached(k.first, k.second, -1);
         (hit ? subs : free).push_back(k);  // in key order: sorted
       }
-      free_subs = std::move(free);
-      subs_from = s_.points.size();
+      free_subs_ = std::move(free);
+      subs_from_ = s_.points.size();
       if (subs.empty()) break;
       for (const Key& k : subs)
         if (stop() || !split_subsegment(k.first, k.second)) return false;
     }
     // Level 2: the subfacets one scan finds encroached, each split when its turn comes if it is still a face.
-    const FreshPoints fresh(s_.points, faces_from);
+    const FreshPoints fresh(s_.points, faces_from_);
     std::vector<std::array<int, 4>> found, free;  // facet, corners
     for (std::size_t f = 0; f < s_.facets.size(); ++f) {
       const FacetCDT& cdt = s_.facets[f]->cdt;
@@ -297,14 +292,14 @@ bool BoundarySplitter::restore_gabriel(const std::function<bool()>& stop) {
         std::sort(r.begin() + 1, r.end());
         const P3 &a = s_.points[r[1]], &b = s_.points[r[2]], &c = s_.points[r[3]];
         if (CGAL::collinear(a, b, c)) continue;
-        const bool hit = std::binary_search(free_faces.begin(), free_faces.end(), r) ? fresh.inside(a, b, &c)
+        const bool hit = std::binary_search(free_faces_.begin(), free_faces_.end(), r) ? fresh.inside(a, b, &c)
                                                                                       : encroached(r[1], r[2], r[3]);
         (hit ? found : free).push_back(r);
       }
     }
     std::sort(free.begin(), free.end());
-    free_faces = std::move(free);
-    faces_from = s_.points.size();
+    free_faces_ = std::move(free);
+    faces_from_ = s_.points.size();
     if (found.empty()) return true;
     std::sort(found.begin(), found.end());
     for (const auto& [f, a, b, c] : found) {
