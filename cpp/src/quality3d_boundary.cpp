@@ -29,12 +29,15 @@ P3 midpoint(const P3& a, const P3& b) {
 // (c null) or of triangle abc? (exact)
 class FreshPoints {
  public:
-  FreshPoints(const std::vector<P3>& points, std::size_t from) : pts_(points.begin() + from, points.end()), index_(pts_) {}
+  FreshPoints(const std::vector<P3>& points, std::size_t from)
+      : pts_(points.begin() + from, points.end()), index_(pts_) {}
   bool inside(const P3& a, const P3& b, const P3* c) const {
     bool hit = false;
     index_.for_each_in(c ? gabriel3d::search_ball(a, b, *c) : gabriel3d::search_ball(a, b), [&](int t) {
-      hit = hit || (c ? CGAL::side_of_bounded_sphere(a, b, *c, pts_[t]) : CGAL::side_of_bounded_sphere(a, b, pts_[t])) ==
-                       CGAL::ON_BOUNDED_SIDE;
+      if (hit) return;
+      const CGAL::Bounded_side side =
+          c ? CGAL::side_of_bounded_sphere(a, b, *c, pts_[t]) : CGAL::side_of_bounded_sphere(a, b, pts_[t]);
+      hit = side == CGAL::ON_BOUNDED_SIDE;
     });
     return hit;
   }
