@@ -25,6 +25,28 @@ P3 midpoint(const P3& a, const P3& b) {
   return P3(a.x() + 0.5 * (b.x() - a.x()), a.y() + 0.5 * (b.y() - a.y()), a.z() + 0.5 * (b.z() - a.z()));
 }
 
+// The points of a list from index `from` on, indexed: is one of them strictly inside the diametral sphere of ab
+// (c null) or of triangle abc? (exact)
+class FreshPoints {
+ public:
+  FreshPoints(const std::vector<P3>& points, std::size_t from)
+      : pts_(points.begin() + from, points.end()), index_(pts_) {}
+  bool inside(const P3& a, const P3& b, const P3* c) const {
+    bool hit = false;
+    index_.for_each_in(c ? gabriel3d::search_ball(a, b, *c) : gabriel3d::search_ball(a, b), [&](int t) {
+      if (hit) return;
+      const CGAL::Bounded_side side =
+          c ? CGAL::side_of_bounded_sphere(a, b, *c, pts_[t]) : CGAL::side_of_bounded_sphere(a, b, pts_[t]);
+      hit = side == CGAL::ON_BOUNDED_SIDE;
+    });
+    return hit;
+  }
+
+ private:
+  std::vector<P3> pts_;
+  gabriel3d::PointIndex index_;
+};
+
 }  // namespace
 
 BoundarySplitter::BoundarySplitter(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
@@ -38,6 +60,7 @@ BoundarySplitter::BoundarySplitter(const std::vector<Point3>& points, const std:
       max_points_(max_points),
       features_(s_, sharp_dihedral, small_apex) {
   for (const auto& [k, parent] : s_.subsegments) balls_.add(k);
+  subs_from_ = faces_from_ = s_.points.size();
 }
 
 void BoundarySplitter::add_interior_point(const P3& p) {
@@ -247,25 +270,39 @@ bool BoundarySplitter::restore_gabriel(const std::function<bool()>& stop) {
   for (;;) {
     // Level 1: subsegments, until none is encroached.
     for (;;) {
-      std::vector<Key> subs;
-      for (const auto& [k, parent] : s_.subsegments)
-        if (encroached(k.first, k.second, -1)) subs.push_back(k);
+      const FreshPoints fresh(s_.points, subs_from_);
+      std::vector<Key> subs, free;
+      for (const auto& [k, parent] : s_.subsegments) {
+        const bool hit = std::binary_search(free_subs_.begin(), free_subs_.end(), k)
+                             ? fresh.inside(s_.points[k.first], s_.points[k.second], nullptr)
+                             : encroached(k.first, k.second, -1);
+        (hit ? subs : free).push_back(k);  // in key order: sorted
+      }
+      free_subs_ = std::move(free);
+      subs_from_ = s_.points.size();
       if (subs.empty()) break;
       for (const Key& k : subs)
         if (stop() || !split_subsegment(k.first, k.second)) return false;
     }
     // Level 2: the subfacets one scan finds encroached, each split when its turn comes if it is still a face.
-    std::vector<std::array<int, 4>> found;  // facet, corners
+    const FreshPoints fresh(s_.points, faces_from_);
+    std::vector<std::array<int, 4>> found, free;  // facet, corners
     for (std::size_t f = 0; f < s_.facets.size(); ++f) {
       const FacetCDT& cdt = s_.facets[f]->cdt;
       for (auto fh = cdt.finite_faces_begin(); fh != cdt.finite_faces_end(); ++fh) {
         if (!fh->info().in_domain) continue;
         std::array<int, 4> r{static_cast<int>(f), fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()};
         std::sort(r.begin() + 1, r.end());
-        if (!CGAL::collinear(s_.points[r[1]], s_.points[r[2]], s_.points[r[3]]) && encroached(r[1], r[2], r[3]))
-          found.push_back(r);
+        const P3 &a = s_.points[r[1]], &b = s_.points[r[2]], &c = s_.points[r[3]];
+        if (CGAL::collinear(a, b, c)) continue;
+        const bool hit = std::binary_search(free_faces_.begin(), free_faces_.end(), r) ? fresh.inside(a, b, &c)
+                                                                                      : encroached(r[1], r[2], r[3]);
+        (hit ? found : free).push_back(r);
       }
     }
+    std::sort(free.begin(), free.end());
+    free_faces_ = std::move(free);
+    faces_from_ = s_.points.size();
     if (found.empty()) return true;
     std::sort(found.begin(), found.end());
     for (const auto& [f, a, b, c] : found) {

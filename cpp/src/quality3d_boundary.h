@@ -83,6 +83,13 @@ class BoundarySplitter {
   // circumcenter for every tet whose circumcenter lies in its sphere: anchor.off spent 37% of its pass rescanning).
   const std::vector<gabriel3d::Key>& encroached_subsegments(int f, const P3& z) const;
   mutable std::map<std::tuple<int, double, double, double>, std::vector<gabriel3d::Key>> hits_;
+  // The subsegments and subfacets (facet, sorted corners) that restore_gabriel's last scan of each level found
+  // free, sorted, and the number of points then: points are only added (interior ones too, between calls), so a free
+  // one is encroached now exactly when one of the points added since is strictly inside its sphere; the others are
+  // checked against all points. The scans find what full scans would.
+  std::vector<gabriel3d::Key> free_subs_;
+  std::vector<std::array<int, 4>> free_faces_;
+  std::size_t subs_from_ = 0, faces_from_ = 0;
 
   gabriel3d::PlcState s_;
   gabriel3d::PointIndex index_;
