@@ -169,12 +169,13 @@ def refine_quality3d(
     # The repair of the input's own boundary, run once, takes the protected rerun's wider limits unless
     # fallback_own_limits is given (u.off converges only so); the repairs of the rounds do not
     own_limits = {"fallback_own_limits": gabriel_options.get("fallback_own_limits", True)}
-    g = _repair_tetgen_surface(refiner, surface) if tetgen_surface else refiner.repair(plc, np.zeros((0, 3)),
-                                                                                       **own_limits)
-    if g.status != "converged" and tetgen_surface:
-        surface_note = f"input (the repair of TetGen's surface ended {g.status})"
-        surface, start = plc, "boundary"
-        g = refiner.repair(surface, np.zeros((0, 3)), **own_limits)
+    if tetgen_surface:
+        g = _repair_tetgen_surface(refiner, surface)
+        if g.status != "converged":
+            surface_note = f"input (the repair of TetGen's surface ended {g.status})"
+            surface, start = plc, "boundary"
+    if surface is plc:
+        g = refiner.repair(plc, np.zeros((0, 3)), **own_limits)
     stats: dict[str, Any] = {"radius_edge": radius_edge, "max_volume_bound": _jsonable_bound(max_volume),
                              "start": start, "rounds": 0, "surface": surface_note,
                              "boundary_repair": dict(g.stats)}
