@@ -1,6 +1,7 @@
 // Paired points on the two segments of a needle corner.
 #include "gabriel3d_needle_pairs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -14,7 +15,8 @@ namespace {
 
 // Facet corners below kPairDegrees are paired. Measured with `refine_gabriel`'s defaults on tests/data/3d and the
 // shared corpus (experiments/README.md, "needle corners"): at 1 degree mc_torus.off's first pass ends at min_length
-// (a fan of 1.4-2.9 degree corners at vertex 556), at 3 degrees it converges.
+// (a fan of 1.4-2.9 degree corners at vertex 556); at 2 degrees it converges but mc_gyroid.off and part.off end at
+// min_length; at 3 degrees all of them converge.
 constexpr double kPairDegrees = 3.0;
 
 double distance(const P3& p, const P3& q) { return std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q))); }
@@ -42,17 +44,27 @@ NeedleCorners needle_corners(const PlcState& s) {
   for (std::size_t f = 0; f < s.facets.size(); ++f) {
     std::map<int, std::vector<int>> at;  // vertex -> the facet's segments there
     for (int i : on_facet[f]) at[s.segments[i].a].push_back(i), at[s.segments[i].b].push_back(i);
-    for (const auto& [v, segs] : at)
+    for (const auto& [v, segs] : at) {
+      auto other_end = [&, v = v](int seg) { return s.segments[seg].a == v ? s.segments[seg].b : s.segments[seg].a; };
+      auto angle = [&, v = v](std::size_t i, std::size_t j) {
+        return corner_angle(s.points[v], s.points[other_end(segs[i])], s.points[other_end(segs[j])]);
+      };
       for (std::size_t i = 0; i < segs.size(); ++i)
         for (std::size_t j = i + 1; j < segs.size(); ++j) {
-          NeedleCorner k;
-          k.apex = v, k.facet = static_cast<int>(f), k.seg[0] = segs[i], k.seg[1] = segs[j];
-          for (int e : {0, 1})
-            k.end[e] = s.segments[k.seg[e]].a == v ? s.segments[k.seg[e]].b : s.segments[k.seg[e]].a;
-          const double theta = corner_angle(s.points[v], s.points[k.end[0]], s.points[k.end[1]]);
-          k.c = std::cos(theta / 2);
-          if (theta < pair_below && seen.insert({k.seg[0], k.seg[1]}).second) out.corners.push_back(k);
+          const double theta = angle(i, j);
+          // A corner is two consecutive segments around v: none of the facet's other segments at v inside it
+          // (a planar direction is inside the wedge iff it makes less than theta with both sides).
+          bool consecutive = theta < pair_below;
+          for (std::size_t k = 0; k < segs.size() && consecutive; ++k)
+            consecutive = k == i || k == j || std::max(angle(i, k), angle(k, j)) >= theta;
+          if (!consecutive || !seen.insert({segs[i], segs[j]}).second) continue;
+          NeedleCorner corner;
+          corner.apex = v, corner.facet = static_cast<int>(f), corner.seg[0] = segs[i], corner.seg[1] = segs[j];
+          corner.end[0] = other_end(segs[i]), corner.end[1] = other_end(segs[j]);
+          corner.c = std::cos(theta / 2);
+          out.corners.push_back(corner);
         }
+    }
   }
   for (std::size_t i = 0; i < out.corners.size(); ++i)
     for (int seg : out.corners[i].seg) out.of_segment[seg].push_back(static_cast<int>(i));

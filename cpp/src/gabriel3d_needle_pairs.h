@@ -21,7 +21,8 @@ struct NeedleCorner {
   double c = 1.0;
 };
 
-// The facet corners below kPairDegrees, and per input segment the indices of the corners it is a side of. Floating
+// The facet corners below kPairDegrees (two segments of a facet consecutive around their common vertex), and per
+// input segment the indices of the corners it is a side of. Floating
 // point angles: the choice of corners is a strategy, not a certificate. Cost: O(s log s + sum over facets of
 // (segments at a vertex)^2) for s segments.
 struct NeedleCorners {
