@@ -22,9 +22,9 @@ struct NeedleCorner {
 };
 
 // The facet corners below kPairDegrees (two segments of a facet consecutive around their common vertex), and per
-// input segment the indices of the corners it is a side of. Floating
-// point angles: the choice of corners is a strategy, not a certificate. Cost: O(s log s + sum over facets of
-// (segments at a vertex)^2) for s segments.
+// input segment the indices of the corners it is a side of. Floating point angles: the choice of corners is a
+// strategy, not a certificate. Cost: O(s log s) for s segments plus, per facet and vertex with m of the facet's
+// segments, O(m^2) angles and O(m) more per pair below kPairDegrees.
 struct NeedleCorners {
   std::vector<NeedleCorner> corners;
   std::vector<std::vector<int>> of_segment;
