@@ -11,6 +11,7 @@
 #include "gabriel3d_collar.h"
 #include "gabriel3d_encroached.h"
 #include "gabriel3d_mirror.h"
+#include "gabriel3d_needle_pairs.h"
 #include "gabriel3d_protect.h"
 #include "gabriel3d_refine.h"
 
@@ -42,7 +43,7 @@ class Refiner {
       : s_(s), o_(o), ignore_frame_artifacts_(ignore_frame_artifacts), protection_(protection), index_(s.points),
         encroached_subsegments_(s, index_), start_(std::chrono::steady_clock::now()), acute_(s.n_input, false),
         collared_(protection ? collared_segments(s) : std::vector<bool>{}),
-        mirror_pairs_(mirror ? mirror_pairs(s, 90.0) : std::vector<MirrorPair>{}) {
+        mirror_pairs_(mirror ? mirror_pairs(s, 90.0) : std::vector<MirrorPair>{}), needle_(needle_corners(s)) {
     std::vector<std::vector<int>> ends(s.n_input);
     for (const auto& seg : s.segments) ends[seg.a].push_back(seg.b), ends[seg.b].push_back(seg.a);
     for (int v = 0; v < s.n_input; ++v)
@@ -112,6 +113,10 @@ class Refiner {
   // and their images do not come back). Images that are existing points, within min_length of one, or strictly
   // inside a protecting ball are not placed.
   void mirror(int m);
+  // Places the partners (gabriel3d_needle_pairs.h) of point m, just split onto subsegment (a, b), on the other
+  // segments of the needle corners its segment belongs to, and theirs on the corners beyond (breadth first, one
+  // point per segment reached). Refused partners are skipped.
+  void partner(int m, int a, int b);
 
   PlcState& s_;
   const Refine3DOptions& o_;
@@ -128,6 +133,7 @@ class Refiner {
   std::vector<bool> collared_;  // per input segment: collared (gabriel3d_collar.h); empty without protection
   std::vector<MirrorPair> mirror_pairs_;  // below 90 degrees, as the collars; empty unless the mirrored strategy runs
   std::set<int> images_;                  // points placed by mirror()
+  NeedleCorners needle_;  // the facet corners whose segments' points get partners
 };
 
 }  // namespace nonobtuse::gabriel3d
