@@ -79,6 +79,39 @@ void Refiner::mirror(int m) {
   }
 }
 
+void Refiner::partner(int m, int a, int b) {
+  if (needle_.corners.empty()) return;
+  // Breadth first over the corners: each segment reached gets one point, the partner of its neighbour's.
+  struct Placed {
+    int point, a, b, segment;
+  };
+  std::vector<Placed> queue{{m, a, b, s_.subsegments.at(key(a, m))}};
+  std::set<int> reached{queue[0].segment};
+  for (std::size_t i = 0; i < queue.size(); ++i)
+    for (int index : needle_.of_segment[queue[i].segment])
+      for (int side : {0, 1}) {
+        const NeedleCorner& corner = needle_.corners[index];
+        const Placed x = queue[i];
+        if (corner.seg[side] != x.segment || reached.count(corner.seg[1 - side]) || budget_left()) continue;
+        work_ += 4;  // the partner's exact sphere checks
+        const std::optional<PartnerSplit> p = partner_split(s_, corner, side, x.point, x.a, x.b);
+        // The rungs to the points of this chain are about r theta long, under min_length near the corner by
+        // design; every other point, and both new subsegments, must respect it.
+        if (!p || too_short(s_.points[p->u], p->point) || too_short(p->point, s_.points[p->w])) continue;
+        bool near = false;
+        index_.for_each_in({{p->point.x(), p->point.y(), p->point.z()}, o_.min_length, false}, [&](int j) {
+          near = near || (std::none_of(queue.begin(), queue.end(), [&](const Placed& q) { return q.point == j; }) &&
+                          too_short(p->point, s_.points[j]));
+        });
+        if (near) continue;
+        const int id = split_subsegment(s_, p->u, p->w, p->t, p->point);
+        ++steiner_on_segments;
+        inserted(id, key(p->u, p->w));
+        reached.insert(corner.seg[1 - side]);
+        queue.push_back({id, p->u, p->w, corner.seg[1 - side]});
+      }
+}
+
 void Refiner::inserted(int m, const std::optional<Key>& split) {
   index_.add(m);
   encroached_subsegments_.added(m, split);
@@ -123,7 +156,8 @@ std::optional<Stop> Refiner::split(const Key& sub, bool always, bool* inserted_p
   *inserted_point = true;
   inserted(id, sub);
   mirror(id);
-  if (stations_ && stations_->grouped(parent)) return place_station(parent, id, {a, b});
+  if (stations_) return stations_->grouped(parent) ? place_station(parent, id, {a, b}) : std::nullopt;
+  partner(id, a, b);
   return std::nullopt;
 }
 

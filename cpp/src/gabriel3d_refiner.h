@@ -11,6 +11,7 @@
 #include "gabriel3d_collar.h"
 #include "gabriel3d_encroached.h"
 #include "gabriel3d_mirror.h"
+#include "gabriel3d_needle_pairs.h"
 #include "gabriel3d_protect.h"
 #include "gabriel3d_refine.h"
 #include "gabriel3d_stations.h"
@@ -44,7 +45,7 @@ class Refiner {
         index_(s.points),
         encroached_subsegments_(s, index_), start_(std::chrono::steady_clock::now()), acute_(s.n_input, false),
         collared_(protection ? collared_segments(s) : std::vector<bool>{}),
-        mirror_pairs_(mirror ? mirror_pairs(s, 90.0) : std::vector<MirrorPair>{}) {
+        mirror_pairs_(mirror ? mirror_pairs(s, 90.0) : std::vector<MirrorPair>{}), needle_(needle_corners(s)) {
     if (stations)  // the feet of the stations (place_station) stand in for the mirror along grouped segments
       mirror_pairs_.erase(std::remove_if(mirror_pairs_.begin(), mirror_pairs_.end(),
                                          [&](const MirrorPair& p) { return stations->grouped(p.segment); }),
@@ -127,6 +128,10 @@ class Refiner {
   // Places in facet f the point base + w (1 + 1/64), w the component of p - base orthogonal to input segment
   // `along` (through base) and to f's normal, if it lies strictly inside f's domain.
   std::optional<Stop> place_foot(int f, int p, int base, int along);
+  // Places the partners (gabriel3d_needle_pairs.h) of point m, just split onto subsegment (a, b), on the other
+  // segments of the needle corners its segment belongs to, and theirs on the corners beyond (breadth first, one
+  // point per segment reached). Refused partners are skipped.
+  void partner(int m, int a, int b);
 
   PlcState& s_;
   const Refine3DOptions& o_;
@@ -144,6 +149,7 @@ class Refiner {
   std::vector<bool> collared_;  // per input segment: collared (gabriel3d_collar.h); empty without protection
   std::vector<MirrorPair> mirror_pairs_;  // below 90 degrees, as the collars; empty unless the mirrored strategy runs
   std::set<int> images_;                  // points placed by mirror()
+  NeedleCorners needle_;  // the facet corners whose segments' points get partners
 };
 
 }  // namespace nonobtuse::gabriel3d

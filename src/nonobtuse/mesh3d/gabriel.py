@@ -251,7 +251,10 @@ def refine_gabriel(
     segments, or where the greedy piece or the rest would be under 1/4 of the subsegment;
     stats["greedy_splits"] counts the greedy points), then encroached subfacets at their circumcenter, unless
     it encroaches a subsegment of the facet or lies outside the facet, in which case that subsegment is
-    split. When that pass does not converge (and time_limit has time left), the protected strategy runs from
+    split. At facet corners below 3 degrees (every rule), a point split onto one of the two segments at
+    distance r from the corner also goes on the other at cos(angle / 2) r, checked exactly, so that the two
+    never encroach each other (needle facets of marching-cubes surfaces). When that pass does not converge
+    (and time_limit has time left), the protected strategy runs from
     the input, and its result is returned if it converged (where max_steiner and min_length are left to the
     defaults, this rerun gets 4 times the Steiner budget and 1/1000 of the min_length: its split
     rules bound the sizes by the input's features, and small angles need points in proportion to 1 / angle;
