@@ -6,11 +6,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
 import pytest
 
-from nonobtuse.mesh3d import check_gabriel, load_plc, refine_gabriel
-from nonobtuse.mesh3d.plc import PLC
+from nonobtuse.mesh3d import load_plc, refine_gabriel
+from test_gabriel3d_protected import assert_certified
 
 DATA = Path(__file__).resolve().parents[1] / ".." / "shared" / "data" / "3d"
 
@@ -30,21 +29,6 @@ def strip_box_off(length: float = 256.0, w0: float = 15 * 2.0**-15, w1: float = 
     lines += [" ".join(repr(float(c)) for c in p) for p in start + end]
     lines += [f"{len(f)} " + " ".join(map(str, f)) for f in faces]
     return "\n".join(lines) + "\n"
-
-
-def enclosed_volume(plc: PLC) -> float:
-    p = plc.points[plc.triangles]
-    return float(np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2])).sum() / 6.0)
-
-
-def assert_certified(res, plc: PLC) -> None:
-    assert res.status == "converged", res.stats["diagnosis"]["stop_reason"]
-    again = check_gabriel(res.mesh)  # exact, independent of the refinement's own certificate
-    assert again.ok and again.n_faces > 0 and again.n_segments > 0
-    np.testing.assert_array_equal(res.mesh.points[: len(plc.points)], plc.points)
-    t = res.mesh.points[res.mesh.tets]
-    volume = np.linalg.det(t[:, 1:] - t[:, :1]).sum() / 6.0
-    assert volume == pytest.approx(abs(enclosed_volume(plc)), rel=1e-9)
 
 
 def test_thin_strip_box_converges_with_stations(tmp_path):
