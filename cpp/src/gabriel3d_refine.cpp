@@ -149,12 +149,14 @@ std::optional<Stop> Refiner::split(const Key& sub, bool always, bool* inserted_p
   if (s_.at.count({m.x(), m.y(), m.z()}))  // rounding hit an existing vertex: no progress possible here
     return Stop{RefineStatus::Stalled, "the split point of subsegment (" + std::to_string(a) + ", " +
                                             std::to_string(b) + ") rounds onto an existing vertex"};
+  const int parent = s_.subsegments.at(sub);
   int id = split_subsegment(s_, a, b, t, m);
   ++steiner_on_segments;
   if (greedy) ++greedy_splits;
   *inserted_point = true;
   inserted(id, sub);
   mirror(id);
+  if (stations_) return stations_->grouped(parent) ? place_station(parent, id, {a, b}) : std::nullopt;
   partner(id, a, b);
   return std::nullopt;
 }

@@ -6,13 +6,26 @@
 namespace nonobtuse::gabriel3d {
 
 Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool ignore_frame_artifacts,
-                          bool protect, bool mirror) {
+                          bool protect, bool mirror, bool stations) {
   PlcState s = build_plc_state(plc);
   Refine3DResult out;
   out.diagnosis.smallest_angles = smallest_input_angles(s);
+  std::optional<Stations> groups;
+  if (stations) groups.emplace(s);
+  if (groups && groups->empty()) groups.reset();
   std::optional<Protection> protection;
-  if (protect) protection.emplace(s, protecting_balls(s, plc));
-  Refiner refiner(s, options, ignore_frame_artifacts, protection ? &*protection : nullptr, mirror);
+  if (protect) {
+    std::vector<ProtectingBall> balls = protecting_balls(s, plc);
+    if (groups)  // the stations take over at the ends of grouped segments (a ball's sphere points there cannot be
+                 // matched in doubles: experiments/README.md, step.off)
+      balls.erase(std::remove_if(balls.begin(), balls.end(), [&](const ProtectingBall& b) { return groups->at_end(b.apex); }),
+                  balls.end());
+    protection.emplace(s, std::move(balls));
+  }
+  // With groups, the mirrored facet meshes too (along the small dihedral edges elsewhere; Refiner leaves the grouped
+  // segments to the stations).
+  Refiner refiner(s, options, ignore_frame_artifacts, protection ? &*protection : nullptr, mirror || groups,
+                  groups ? &*groups : nullptr);
   // Refine the subfacets, restrict the Delaunay tetrahedralization, check it exactly; where its boundary faces
   // differ from the subfacets (cospherical points) and are encroached, split those too and start over. After a
   // stop, the mesh is rebuilt once more so that it shows every point inserted (repair() may stop half-way).
@@ -21,6 +34,7 @@ Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool
     out.protecting_balls = static_cast<long>(protection->balls().size());
     stop = refiner.place_protecting_points();
   }
+  if (groups) stop = refiner.place_apex_stations();
   Restricted mesh;
   std::vector<Key> segments;
   bool clean = false;

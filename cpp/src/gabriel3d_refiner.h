@@ -14,6 +14,7 @@
 #include "gabriel3d_needle_pairs.h"
 #include "gabriel3d_protect.h"
 #include "gabriel3d_refine.h"
+#include "gabriel3d_stations.h"
 
 namespace nonobtuse::gabriel3d {
 
@@ -39,11 +40,16 @@ inline SubfacetRef canonical(SubfacetRef r) {
 class Refiner {
  public:
   Refiner(PlcState& s, const Refine3DOptions& o, bool ignore_frame_artifacts, const Protection* protection,
-          bool mirror)
-      : s_(s), o_(o), ignore_frame_artifacts_(ignore_frame_artifacts), protection_(protection), index_(s.points),
+          bool mirror, const Stations* stations = nullptr)
+      : s_(s), o_(o), ignore_frame_artifacts_(ignore_frame_artifacts), protection_(protection), stations_(stations),
+        index_(s.points),
         encroached_subsegments_(s, index_), start_(std::chrono::steady_clock::now()), acute_(s.n_input, false),
         collared_(protection ? collared_segments(s) : std::vector<bool>{}),
         mirror_pairs_(mirror ? mirror_pairs(s, 90.0) : std::vector<MirrorPair>{}), needle_(needle_corners(s)) {
+    if (stations)  // the feet of the stations (place_station) stand in for the mirror along grouped segments
+      mirror_pairs_.erase(std::remove_if(mirror_pairs_.begin(), mirror_pairs_.end(),
+                                         [&](const MirrorPair& p) { return stations->grouped(p.segment); }),
+                          mirror_pairs_.end());
     std::vector<std::vector<int>> ends(s.n_input);
     for (const auto& seg : s.segments) ends[seg.a].push_back(seg.b), ends[seg.b].push_back(seg.a);
     for (int v = 0; v < s.n_input; ++v)
@@ -54,6 +60,8 @@ class Refiner {
 
   // Splits every input segment through a protected apex where it leaves the apex's ball.
   std::optional<Stop> place_protecting_points();
+  // Places the stations of the input vertices where two segments of a group meet (gabriel3d_stations.h).
+  std::optional<Stop> place_apex_stations();
   // Runs to convergence of the subfacets and subsegments, or to a stop.
   std::optional<Stop> run();
   // Splits the encroached faces and subsegments of the restricted Delaunay mesh (which can differ from the
@@ -113,6 +121,13 @@ class Refiner {
   // and their images do not come back). Images that are existing points, within min_length of one, or strictly
   // inside a protecting ball are not placed.
   void mirror(int m);
+  // Places the images of point m, on input segment `segment` between points `around`, on the other segments of
+  // its group (gabriel3d_stations.h); each image's rounding is chosen among nearby doubles so that, by exact
+  // predicates, it and the station's points placed before it do not encroach each other's new subsegments.
+  std::optional<Stop> place_station(int segment, int m, const std::vector<int>& around);
+  // Places in facet f the point base + w (1 + 1/64), w the component of p - base orthogonal to input segment
+  // `along` (through base) and to f's normal, if it lies strictly inside f's domain.
+  std::optional<Stop> place_foot(int f, int p, int base, int along);
   // Places the partners (gabriel3d_needle_pairs.h) of point m, just split onto subsegment (a, b), on the other
   // segments of the needle corners its segment belongs to, and theirs on the corners beyond (breadth first, one
   // point per segment reached). Refused partners are skipped.
@@ -122,6 +137,7 @@ class Refiner {
   const Refine3DOptions& o_;
   bool ignore_frame_artifacts_;
   const Protection* protection_;  // nullptr: no protecting balls
+  const Stations* stations_;      // nullptr: no stations
   std::set<int> segment_sphere_points_;  // placed by place_protecting_points: where a segment leaves a ball
   std::set<int> arc_points_;             // placed on a ball's sphere by arc_split_point
   PointIndex index_;

@@ -54,15 +54,16 @@ void set_limits(Refine3DResult& r, const Refine3DOptions& options) {
 // once more from the input counting them: their extra points usually break the near-cospherical ties.
 // The second attempt gets the work (and time) the first left; it runs only when some is left (else it would return
 // the bare input).
-Refine3DResult refine_with(const PLC3& plc, const Refine3DOptions& options, bool protect, bool mirror) {
-  Refine3DResult first = gabriel3d::refine_once(plc, options, true, protect, mirror);
+Refine3DResult refine_with(const PLC3& plc, const Refine3DOptions& options, bool protect, bool mirror,
+                           bool stations = false) {
+  Refine3DResult first = gabriel3d::refine_once(plc, options, true, protect, mirror, stations);
   set_limits(first, options);
   if (first.status != RefineStatus::Stalled || first.seconds >= options.time_limit || first.work >= options.max_work)
     return first;
   Refine3DOptions rest = options;
   rest.time_limit = std::max(0.0, options.time_limit - first.seconds);
   rest.max_work = options.max_work - first.work;
-  Refine3DResult second = gabriel3d::refine_once(plc, rest, false, protect, mirror);
+  Refine3DResult second = gabriel3d::refine_once(plc, rest, false, protect, mirror, stations);
   second.seconds += first.seconds;
   second.work += first.work;
   second.diagnosis.stop_reason += " (second attempt; the first stalled: " + first.diagnosis.stop_reason + ")";
@@ -113,7 +114,7 @@ Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& given) {
   Refine3DOptions rest = protected_limits(given, options);
   rest.split = SplitRule::Shells;
   rest.time_limit = std::max(0.0, options.time_limit - first.seconds);
-  Refine3DResult second = refine_with(plc, rest, true, false);
+  Refine3DResult second = refine_with(plc, rest, true, false, true);
   const double seconds = first.seconds + second.seconds;
   const long work = first.work + second.work;
   second.strategy = "protected";

@@ -262,10 +262,15 @@ def refine_gabriel(
     protecting balls at every apex vertex (an input segment leaning over a facet through its end at less
     than 90 degrees; radius a power of two <= 1/4 of the vertex's local feature size), each segment through
     an apex split on its ball's sphere, and subfacet split points strictly inside a ball moved to its sphere,
-    which ends the cascade down small segment-facet angles. split="mirrored" runs the protected strategy
+    which ends the cascade down small segment-facet angles. Where the input has near-parallel close
+    segments (ends pairwise within 1e-5 of their length: a thin strip, a needle facet's long sides), the
+    rerun places stations instead (gabriel3d_stations.h): a point split onto one goes on the others too, at
+    equal distance from a shared end or at the foot of the perpendicular, its rounding checked exactly, and
+    its foot in a facet the segment leans over; no balls at their ends, mirrored facet meshes elsewhere
+    (step.off). split="mirrored" runs the protected strategy
     plus mirrored facet meshes (a point placed on a facet whose foot lies on a segment where it meets another
     facet below 90 degrees also goes to its image on that facet, verified exactly: gabriel3d_mirror.h); it
-    is no default fallback, since it converged on none of the inputs the protected rerun fails on.
+    is no default fallback, since it converged on none of the inputs the protected rerun failed on then.
     split="protected" or "mirrored" runs only that strategy; protected_fallback=False returns the first pass
     as it ended. stats["strategy"] names the strategy of the returned mesh ("shells", ..., or
     "shells+protected" after the fallback), stats["other_attempt"] the status and stop reason of the attempt
