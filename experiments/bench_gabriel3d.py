@@ -24,8 +24,8 @@ ours`` runs only those rows. CSV to bench_gabriel3d.csv (bench_gabriel3d_quick.c
 
 ``--scaling [FACES...]``: instead, check3d end to end (a fresh ``nonobtuse check3d --json`` process) on
 jittered tori (:func:`torus_surface`) of 1e4, 1e5, 1e6 faces (or those given), with the cgal and tetgen
-backends: faces, points, backend, exit, seconds, peak_mb to bench_gabriel3d_scaling.csv; the tori are
-written to DIR/cache.
+backends: faces, points, backend, exit, seconds, cpu_seconds, load (1-minute average at the start), peak_mb
+to bench_gabriel3d_scaling.csv; the tori are written to DIR/cache.
 
 Run: ``PYTHONPATH=src .venv/bin/python -m experiments bench_gabriel3d [--quick] [--out DIR] [files...]``
 (default: our refinement limited to 60 s and its default budget, 10 n + 10,000 points; --quick: inputs
@@ -35,6 +35,7 @@ up to 500 triangles, our refinement limited to 20 s and 2,000 points, about 1 mi
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 import time
 from pathlib import Path
@@ -157,13 +158,15 @@ def with_time_ratios(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
     return rows
 
 
-SCALING_COLUMNS = ["faces", "points", "backend", "exit", "seconds", "peak_mb"]
+SCALING_COLUMNS = ["faces", "points", "backend", "exit", "seconds", "cpu_seconds", "load", "peak_mb"]
 
 
 def check3d_scaling(args: argparse.Namespace) -> list[dict[str, Any]]:
     """check3d end to end (``nonobtuse check3d FILE --backend B --json`` in a fresh process: load, validate,
     tetrahedralize, exact check, control volumes, JSON) on :func:`torus_surface` of each size in
-    args.scaling, written to the cache first; wall seconds and peak resident memory of the process."""
+    args.scaling, written to the cache first; wall seconds, CPU seconds (user + system) and peak resident
+    memory of the process, and the 1-minute load average when it started (the machine is shared: the wall
+    time follows the others' load, the CPU time much less)."""
     import resource
     import subprocess
 
@@ -175,17 +178,21 @@ def check3d_scaling(args: argparse.Namespace) -> list[dict[str, Any]]:
             write_off(path, points, triangles)
         for backend in args.scaling_backends:
             print(f"bench_gabriel3d: check3d {path.name} --backend {backend}", file=sys.stderr)
+            load = os.getloadavg()[0]
+            before = resource.getrusage(resource.RUSAGE_CHILDREN)
             t0 = time.perf_counter()
             command = [sys.executable, "-c", "import sys; from nonobtuse.cli import main; sys.exit(main())",
                        "check3d", str(path), "--backend", backend, "--json"]
             done = subprocess.run(command, capture_output=True, text=True)
             seconds = time.perf_counter() - t0
-            peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024  # the largest child so far
+            after = resource.getrusage(resource.RUSAGE_CHILDREN)
+            cpu = (after.ru_utime + after.ru_stime) - (before.ru_utime + before.ru_stime)
+            peak = after.ru_maxrss / 1024  # the largest child so far
             if done.returncode not in (0, 1):  # 1: not Gabriel, an answer
                 print(done.stderr[-500:], file=sys.stderr)
             rows.append({"faces": len(triangles), "points": len(points),
                          "backend": backend, "exit": done.returncode, "seconds": round(seconds, 2),
-                         "peak_mb": round(peak)})
+                         "cpu_seconds": round(cpu, 2), "load": round(load, 1), "peak_mb": round(peak)})
     return rows
 
 

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "gabriel3d_plc.h"
+#include "points_delaunay.h"
 
 namespace nonobtuse::gabriel3d {
 namespace {
@@ -170,11 +171,8 @@ void number_regions(const DT3& dt, const Inside& inside, std::vector<double>& at
 
 }  // namespace
 
-Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
-  std::vector<std::pair<P3, int>> input;
-  input.reserve(s.points.size());
-  for (std::size_t i = 0; i < s.points.size(); ++i) input.emplace_back(s.points[i], static_cast<int>(i));
-  DT3 dt(input.begin(), input.end());
+// restrict_delaunay on the Delaunay tetrahedralization dt of s.points.
+Restricted restrict_triangulation(const PlcState& s, const PLC3& plc, DT3& dt) {
   Restricted out;
   if (dt.dimension() < 3) return out;
   for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) c->info() = CellInfo{};
@@ -260,6 +258,31 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
   }
   canonical_order(out);
   return out;
+}
+
+Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
+  std::vector<std::pair<P3, int>> input;
+  input.reserve(s.points.size());
+  for (std::size_t i = 0; i < s.points.size(); ++i) input.emplace_back(s.points[i], static_cast<int>(i));
+  DT3 dt(input.begin(), input.end());
+  return restrict_triangulation(s, plc, dt);
+}
+
+Restricted restrict_delaunay(const PlcState& s, const PLC3& plc, PointsDelaunay&& built) {
+  if (built.number_of_vertices() != s.points.size())
+    throw InternalError("restrict_delaunay: the triangulation given is not of the PLC's points");
+  struct Vertex {  // the point and its index; Vertex_base_with_info's constructor takes the point alone
+    DT3::Vertex operator()(const PointsDelaunay::Vertex& v) const { return DT3::Vertex(v.point()); }
+    void operator()(const PointsDelaunay::Vertex& from, DT3::Vertex& to) const { to.info() = from.info(); }
+  };
+  struct Cell {  // no data: restrict_triangulation sets every cell's info
+    DT3::Cell operator()(const PointsDelaunay::Cell&) const { return DT3::Cell(); }
+    void operator()(const PointsDelaunay::Cell&, DT3::Cell&) const {}
+  };
+  DT3 dt;
+  dt.set_infinite_vertex(dt.tds().copy_tds(built.tds(), built.infinite_vertex(), Vertex(), Cell()));
+  built.clear();  // its memory goes before the restriction's
+  return restrict_triangulation(s, plc, dt);
 }
 
 }  // namespace nonobtuse::gabriel3d

@@ -26,7 +26,8 @@ struct ControlVolumes3D {
 // The exact sign of every dual area A_e. sign(A_e) = sign(sum over T of ((C_f1 - M) x (C_T - M) +
 // (C_T - M) x (C_f2 - M)) . (j - i)), the circumcenters taken as exact rational functions of the coordinates as
 // stored: evaluated in interval arithmetic and, when the interval contains 0, exactly (multiprecision floating
-// point, no division: the pieces are put over one positive common denominator).
+// point, no division: the circumcenters of the tets around e, chained across their shared faces, which gives the
+// same sum, put over one positive common denominator).
 // The magnitudes are floating point: each tet's piece of A_e from the circumcenters in doubles, summed over the
 // tets around e in tet order; a vertex's volume is the sum over its tets (in order) of the pyramids piece * |e| / 6
 // over the pieces of its edges. The circumcenter of a tet that is flat in doubles (denominator 0, counted in

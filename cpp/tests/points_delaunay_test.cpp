@@ -1,0 +1,65 @@
+// The Delaunay tetrahedralization built once (points_delaunay) and restricted to the PLC's regions from the copy.
+#include "points_delaunay.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gabriel3d_plc.h"
+
+namespace nonobtuse {
+namespace {
+
+// A closed surface of one-triangle facets: the convex hull of points near a sphere (every hull face is a Delaunay
+// face), read off the Delaunay tetrahedralization's infinite cells, with a region seed at the centre.
+PLC3 hull_of_points_near_a_sphere(int n) {
+  PLC3 plc;
+  for (int i = 0; i < n; ++i) {  // a Fibonacci sphere, the radius varied a little
+    const double z = 1 - (2 * i + 1.0) / n, r = std::sqrt(1 - z * z), phi = 2.399963229728653 * i;
+    const double scale = 1 + 0.01 * std::sin(7.0 * i);
+    plc.points.push_back({scale * r * std::cos(phi), scale * r * std::sin(phi), scale * z});
+  }
+  const PointsDelaunay dt = points_delaunay(plc.points);
+  for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
+    if (!dt.is_infinite(c)) continue;
+    const int i = c->index(dt.infinite_vertex());
+    plc.triangles.push_back({c->vertex((i + 1) % 4)->info(), c->vertex((i + 2) % 4)->info(),
+                             c->vertex((i + 3) % 4)->info()});
+    plc.facet_ids.push_back(static_cast<int>(plc.facet_ids.size()));
+  }
+  plc.regions = {{0, 0, 0, 5.0}};
+  return plc;
+}
+
+TEST(PointsDelaunay, RestrictingTheTriangulationBuiltOnceGivesWhatARebuildGives) {
+  const PLC3 plc = hull_of_points_near_a_sphere(200);
+  const gabriel3d::PlcState s = gabriel3d::build_plc_state(plc);
+  gabriel3d::Restricted rebuilt = gabriel3d::restrict_delaunay(s, plc);
+  PointsDelaunay dt = points_delaunay(plc.points);
+  const DelaunayFaces faces = faces_and_cells(dt, plc.points.size(), plc.triangles);
+  EXPECT_EQ(std::count(faces.is_face.begin(), faces.is_face.end(), 1), static_cast<long>(plc.triangles.size()));
+  gabriel3d::Restricted copied = gabriel3d::restrict_delaunay(s, plc, std::move(dt));
+  EXPECT_EQ(dt.number_of_vertices(), 0u);  // cleared after the copy
+  ASSERT_FALSE(rebuilt.tets.empty());
+  EXPECT_EQ(copied.tets, rebuilt.tets);
+  EXPECT_EQ(copied.tet_regions, rebuilt.tet_regions);
+  EXPECT_EQ(copied.boundary_faces, rebuilt.boundary_faces);
+  EXPECT_EQ(copied.face_markers, rebuilt.face_markers);
+  EXPECT_EQ(copied.face_facets, rebuilt.face_facets);
+  EXPECT_EQ(rebuilt.boundary_faces.size(), plc.triangles.size());
+  for (double r : rebuilt.tet_regions) EXPECT_EQ(r, 5.0);
+}
+
+TEST(PointsDelaunay, ATriangulationOfOtherPointsIsRefused) {
+  const PLC3 plc = hull_of_points_near_a_sphere(20);
+  const gabriel3d::PlcState s = gabriel3d::build_plc_state(plc);
+  std::vector<PlcPoint> fewer(plc.points.begin(), plc.points.end() - 1);
+  EXPECT_THROW(gabriel3d::restrict_delaunay(s, plc, points_delaunay(fewer)), InternalError);
+}
+
+TEST(PointsDelaunay, CoincidentPointsAreRefused) {
+  EXPECT_THROW(points_delaunay({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 0}}), InvalidInput);
+}
+
+}  // namespace
+}  // namespace nonobtuse
