@@ -94,10 +94,11 @@ Refine3DOptions protected_limits(const Refine3DOptions& given, Refine3DOptions r
 // The fast first pass with the requested rule; where it does not converge, the protected strategy from the input
 // (with its own limits, protected_limits, and the time left), and where that does not converge either, the mirrored
 // strategy (protected plus mirrored facet meshes along small-dihedral segments, gabriel3d_mirror.h) from the input
-// with the same limits. The first converged result is returned; else the first pass's, which costs no more points
-// than before the fallbacks existed. Inputs the first pass or the protected rerun converge on never reach the
-// mirrored pass, so their results do not change; it costs work only where both failed. split == Protected or
-// Mirrored runs only that strategy.
+// with the same limits, unless fallback_own_limits is false (callers that repair many times, the 3D quality pass's
+// rounds: a third pass on each failing repair would spend its work budget again). The first converged result is
+// returned; else the first pass's, which costs no more points than before the fallbacks existed. Inputs the first
+// pass or the protected rerun converge on never reach the mirrored pass, so their results do not change; it costs
+// work only where both failed. split == Protected or Mirrored runs only that strategy.
 Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& given) {
   const Refine3DOptions options = with_defaults(plc, given);
   const bool alone = options.split == SplitRule::Protected || options.split == SplitRule::Mirrored;
@@ -115,7 +116,7 @@ Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& given) {
   long work = first.work;
   std::string others;
   for (bool mirror : {false, true}) {
-    if (seconds >= options.time_limit) break;
+    if (seconds >= options.time_limit || (mirror && !given.fallback_own_limits)) break;
     Refine3DOptions rest = protected_limits(given, options);
     rest.split = SplitRule::Shells;
     rest.time_limit = std::max(0.0, options.time_limit - seconds);

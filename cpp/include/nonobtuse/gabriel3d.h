@@ -91,8 +91,9 @@ struct Refine3DOptions {
   // not converge either.
   bool protected_fallback = true;
   // The fallbacks' limits of their own (4 times the Steiner budget, 1/1000 of min_length where those are left to the
-  // defaults; protected_limits in gabriel3d_strategy.cpp); false: the shared defaults, for callers that repair
-  // many times (the 3D quality pass) and would otherwise spend up to the work budget on each repair.
+  // defaults; protected_limits in gabriel3d_strategy.cpp); false: the shared defaults and no mirrored pass, for
+  // callers that repair many times (the 3D quality pass) and would otherwise spend up to the work budget on each
+  // repair.
   bool fallback_own_limits = true;
   long progress_every = 1000;  // insertions between progress calls; one more after each exact check of the mesh
   std::function<void(const Refine3DProgress&)> progress;
@@ -167,8 +168,9 @@ struct Refine3DResult {
 // protected_fallback is set), the protected strategy (SplitRule::Protected) runs from the input with its own
 // max_steiner and min_length (4 times and 1/1000 of the defaults where those are left to them: protected_limits in
 // gabriel3d_strategy.cpp; not for split == Protected alone), its own max_work and the rest of time_limit; its
-// result is returned if it converged; else the mirrored strategy (SplitRule::Mirrored) runs from the input with the
-// same limits and its result is returned if it converged; else the first pass's
+// result is returned if it converged; else (when fallback_own_limits is set) the mirrored strategy
+// (SplitRule::Mirrored) runs from the input with the same limits and its result is returned if it converged; else
+// the first pass's
 // (strategy and other_attempt say which). Protecting balls keep the split points of a
 // segment and a facet meeting at a small angle off the apex, which ends the cascade there (the termination argument
 // and what it does not cover are at arc_split_point in gabriel3d_protect.cpp).

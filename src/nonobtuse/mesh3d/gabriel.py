@@ -263,7 +263,8 @@ def refine_gabriel(
     plus mirrored facet meshes (a point placed on a facet whose foot lies on a segment where it meets another
     facet below 90 degrees also goes to its image on that facet, verified exactly: gabriel3d_mirror.h); it
     runs from the input, with the protected rerun's limits, when the protected rerun does not converge either
-    (the spike at 80 degrees), and its result is returned if it converged.
+    (the spike at 80 degrees), and its result is returned if it converged (not with
+    fallback_own_limits=False).
     split="protected" or "mirrored" runs only that strategy; protected_fallback=False returns the first pass
     as it ended. stats["strategy"] names the strategy of the returned mesh ("shells", ..., or
     "shells+protected" / "shells+mirrored" after a fallback), stats["other_attempt"] the status and stop
