@@ -112,6 +112,11 @@ class Refiner {
   // and their images do not come back). Images that are existing points, within min_length of one, or strictly
   // inside a protecting ball are not placed.
   void mirror(int m);
+  // With mirrored meshes: the radius of the protecting ball at input vertex v whose sphere holds point m (m within
+  // twice that radius of v, exact; balls are far enough apart that no other ball's sphere point is), else 0.
+  double sphere_of(int v, int m) const;
+  // [e, x_s]: the piece of an input segment inside e's protecting ball (x_s where the segment leaves it).
+  bool protected_piece(const Key& sub) const;
 
   PlcState& s_;
   const Refine3DOptions& o_;
