@@ -37,6 +37,15 @@ def test_mirrored_strategy_converges_on_the_spike_at_80_degrees():
     assert res.stats["steiner_points"] < 1000
 
 
+def test_default_converges_on_the_spike_at_65_degrees_through_the_mirrored_pass():
+    # Shells and the protected rerun stop early here (under a second together); the mirrored pass needs its
+    # two corner rules: images of sphere points are sphere points; a protected piece [e, x_s] is not split.
+    plc = make_plc("spike", 65.0)
+    res = refine_gabriel(plc)
+    assert_certified(res, plc)
+    assert res.stats["strategy"] == "shells+mirrored"
+
+
 @pytest.mark.slow
 def test_default_converges_on_the_spike_at_80_degrees_through_the_mirrored_pass():
     # Shells and the protected rerun end at max_steiner (about 10 s together); the mirrored pass converges.
