@@ -1,8 +1,9 @@
 """Termination map of the 3D Gabriel repair: where does ``refine_gabriel`` stop on small input angles?
 
 For each PLC family of ``experiments.plc_families`` (fan: every k in 3..12), each angle theta and each
-strategy (``STRATEGIES``: the split rules "midpoint" and "shells" alone, the "protected" strategy alone, and
-the "default": shells, then the protected strategy where shells does not converge), one case runs
+strategy (``STRATEGIES``: the split rules "midpoint" and "shells" alone, the "protected" and "mirrored"
+strategies alone, and the "default": shells, then the protected strategy where shells does not converge, then
+the mirrored one where that does not converge either), one case runs
 ``nonobtuse.mesh3d.refine_gabriel`` under its deterministic budgets (the default Steiner budget and the
 default work budget ``max_work``, or ``--max-work``; no wall-clock ``time_limit``, so a case's outcome does
 not depend on the machine's load), and records its status, Steiner points, smallest subsegment, work, time
@@ -37,6 +38,7 @@ STRATEGIES = {
     "midpoint": {"split": "midpoint", "protected_fallback": False},
     "shells": {"split": "shells", "protected_fallback": False},
     "protected": {"split": "protected"},
+    "mirrored": {"split": "mirrored"},
     "default": {"split": "shells"},
 }
 SPLITS = tuple(STRATEGIES)

@@ -122,9 +122,10 @@ def test_termination_map_quick_writes_csv_and_png(tmp_path):
     assert {int(r["max_work"]) for r in rows} == {termination_map.QUICK_MAX_WORK}
     # 2 families x theta 60 x every strategy
     assert sorted((r["family"], r["split"]) for r in rows) == sorted(
-        (f, s) for f in ("wedge", "segments") for s in ("midpoint", "shells", "protected", "default"))
+        (f, s) for f in ("wedge", "segments")
+        for s in ("midpoint", "shells", "protected", "mirrored", "default"))
     frontier = read_csv(tmp_path / "termination_frontier_quick.csv")
-    assert list(frontier[0]) == termination_map.FRONTIER_COLUMNS and len(frontier) == 8
+    assert list(frontier[0]) == termination_map.FRONTIER_COLUMNS and len(frontier) == 10
     assert (tmp_path / "termination_map_quick.png").stat().st_size > 0
 
 

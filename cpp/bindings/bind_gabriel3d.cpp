@@ -85,8 +85,9 @@ void bind_result_classes(py::module_& m) {
       .def_readonly("steiner_on_segments", &Result::steiner_on_segments)
       .def_readonly("greedy_splits", &Result::greedy_splits)
       .def_readonly("strategy", &Result::strategy,
-                    "'shells', 'greedy', 'midpoint', 'protected', 'mirrored', or '<rule>+protected' after the fallback")
-      .def_readonly("other_attempt", &Result::other_attempt, "status and stop reason of the attempt not returned")
+                    "'shells', 'greedy', 'midpoint', 'protected', 'mirrored', or '<rule>+protected' / '<rule>+mirrored' "
+                    "after a fallback")
+      .def_readonly("other_attempt", &Result::other_attempt, "status and stop reason of the attempts not returned")
       .def_readonly("protecting_balls", &Result::protecting_balls, "apex vertices protected")
       .def_readonly("steiner_on_facets", &Result::steiner_on_facets)
       .def_readonly("seconds", &Result::seconds)

@@ -74,6 +74,14 @@ void Refiner::mirror(int m) {
       continue;
     const int id = insert_in_facet(s_, pair.to, image->point, image->lt, image->loc, image->li);
     images_.insert(id);
+    // The image of a point on the sphere of a ball at an end of the mirrored segment is on that sphere (the
+    // reflection fixes the segment's line): the arc rule treats it as a sphere point (the fan subfacets with it are
+    // split on their arcs, arc_split_point). Measured (split="mirrored", fallback limits, spike k=10 on 1..10,
+    // 12..30 by 2, 35..85 by 5): 23 -> 24 of 31 angles converge (85 degrees too), none lost; with the refusal in
+    // split_subfacet, 28 of 31.
+    const InputSegment& seg = s_.segments[pair.segment];
+    const bool on_sphere = segment_sphere_points_.count(m) || arc_points_.count(m);
+    if (on_sphere && (sphere_of(seg.a, m) > 0 || sphere_of(seg.b, m) > 0)) arc_points_.insert(id);
     ++steiner_on_facets;
     inserted(id);
   }
@@ -110,6 +118,22 @@ void Refiner::partner(int m, int a, int b) {
         reached.insert(corner.seg[1 - side]);
         queue.push_back({id, p->u, p->w, corner.seg[1 - side]});
       }
+}
+
+double Refiner::sphere_of(int v, int m) const {
+  for (const auto& ball : protection_->balls())
+    if (ball.apex == v)
+      return CGAL::compare_squared_distance(s_.points[m], s_.points[v], 4.0 * ball.radius * ball.radius) ==
+                     CGAL::SMALLER
+                 ? ball.radius
+                 : 0.0;
+  return 0.0;
+}
+
+bool Refiner::protected_piece(const Key& sub) const {
+  auto [a, b] = sub;
+  return (segment_sphere_points_.count(b) && sphere_of(a, b) > 0) ||
+         (segment_sphere_points_.count(a) && sphere_of(b, a) > 0);
 }
 
 void Refiner::inserted(int m, const std::optional<Key>& split) {
@@ -201,7 +225,18 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
   if (hit.empty() && !inside) {
     // Outside the facet (or on its boundary): split the subsegment the circumcenter lies beyond.
     Q2 g = CGAL::centroid(va->point(), vb->point(), vc->point());
-    if (auto sub = first_crossed_subsegment(facet, g, q)) hit.push_back(*sub);
+    if (auto sub = first_crossed_subsegment(facet, g, q)) {
+      // With mirrored meshes, a protected piece [e, x_s] is not split here: its midpoint, r / 2 from e inside the
+      // ball, lies strictly inside the diametral sphere of every fan subfacet at e within about 60 degrees of the
+      // segment (radius r / (2 cos(phi / 2)) >= r / 2), which breaks (1)-(2) of the arc rule's argument
+      // (arc_split_point) and restarts the fans' refinement (measured on spike 65, 10,110 points). The circumcenter
+      // is refused instead, the subfacet left to the other splits, the stall handling and the budgets; the exact
+      // check of the result decides. Measured with the sphere images above (split="mirrored", fallback limits, the
+      // spike's 31 angles): 24 -> 28 of 31 converge (3, 6, 55, 60, 65, 75 gained; 24 lost). The protected strategy
+      // keeps the split (the same refusal there moved its cascade to the base edges, experiments/README.md).
+      if (!mirror_pairs_.empty() && protected_piece(*sub)) return std::nullopt;
+      hit.push_back(*sub);
+    }
   }
   if (!hit.empty()) {
     std::sort(hit.begin(), hit.end());
@@ -236,7 +271,19 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
 }
 
 // Splits every input segment through a protected apex where it leaves the apex's ball
-// (split_segments_on_spheres), as subsegment splits counted on segments.
+// (split_segments_on_spheres), as subsegment splits counted on segments; with mirrored meshes, then mirrors those
+// points. Not before: an image of a sphere point x_s of facet G, across a mirrored segment sigma of G and F through
+// the same apex e, lies on e's sphere too (the reflection fixes e), and is refused while sigma is still one input
+// segment (its diametral ball holds the image); once every ball has its points, sigma's piece at e is [e, x_sigma]
+// and the image goes in. So F's fan at e holds the images of its neighbours' fan points: F's fan subfacet
+// (e, x_sigma, y) and G's (e, x_sigma, x_s) are mirror images, and the mirror argument (mirrored_point,
+// gabriel3d_mirror.cpp) keeps each out of the other's diametral sphere for any dihedral angle. What it does not
+// cover: F's images from a third facet (at a spike corner the base gets the generator's point from both side
+// facets, 0.6 degrees apart on the sphere at 80 degrees; they miss the side fans' spheres there, checked by the exact
+// test, not by the argument) and the points later rules put in the ball. Measured (split="mirrored", spike k=10 at
+// 80 degrees): mirrored as they were placed, the images of the generators' sphere points were all refused and the
+// run ended at max_steiner (10,110, of which 9,915 on the base corners' spheres); mirrored afterwards, it converges
+// with 157 points.
 std::optional<Stop> Refiner::place_protecting_points() {
   std::optional<Stop> stop;
   auto place = [&](int from, int to, double t) {
@@ -253,10 +300,11 @@ std::optional<Stop> Refiner::place_protecting_points() {
     segment_sphere_points_.insert(id);
     ++steiner_on_segments;
     inserted(id, key(from, to));
-    mirror(id);
     return id;
   };
   split_segments_on_spheres(s_, protection_->balls(), place, [&] { return !stop; });
+  if (!stop)
+    for (int id : segment_sphere_points_) mirror(id);
   return stop;
 }
 

@@ -132,6 +132,11 @@ class Refiner {
   // segments of the needle corners its segment belongs to, and theirs on the corners beyond (breadth first, one
   // point per segment reached). Refused partners are skipped.
   void partner(int m, int a, int b);
+  // With mirrored meshes: the radius of the protecting ball at input vertex v whose sphere holds point m (m within
+  // twice that radius of v, exact; balls are far enough apart that no other ball's sphere point is), else 0.
+  double sphere_of(int v, int m) const;
+  // [e, x_s]: the piece of an input segment inside e's protecting ball (x_s where the segment leaves it).
+  bool protected_piece(const Key& sub) const;
 
   PlcState& s_;
   const Refine3DOptions& o_;

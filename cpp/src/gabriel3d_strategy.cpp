@@ -93,11 +93,13 @@ Refine3DOptions protected_limits(const Refine3DOptions& given, Refine3DOptions r
 }  // namespace
 
 // The fast first pass with the requested rule; where it does not converge, the protected strategy from the input
-// (with its own limits, protected_limits, and the time left), whose result is returned if it
-// converged; else the first pass's, which costs no more points than before the fallback existed. split == Protected
-// or Mirrored runs only that strategy. The mirrored strategy (protected plus mirrored facet meshes along
-// small-dihedral segments, gabriel3d_mirror.h) is not a default fallback: measured as a third pass it converged on
-// none of the inputs the protected rerun fails on (spike 80, u.off, step.off, mc_torus.off) and only spent work.
+// (with its own limits, protected_limits, and the time left), and where that does not converge either, the mirrored
+// strategy (protected plus mirrored facet meshes along small-dihedral segments, gabriel3d_mirror.h) from the input
+// with the same limits, unless fallback_own_limits is false (callers that repair many times, the 3D quality pass's
+// rounds: a third pass on each failing repair would spend its work budget again). The first converged result is
+// returned; else the first pass's, which costs no more points than before the fallbacks existed. Inputs the first
+// pass or the protected rerun converge on never reach the mirrored pass, so their results do not change; it costs
+// work only where both failed. split == Protected or Mirrored runs only that strategy.
 Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& given) {
   const Refine3DOptions options = with_defaults(plc, given);
   const bool alone = options.split == SplitRule::Protected || options.split == SplitRule::Mirrored;
@@ -111,19 +113,31 @@ Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& given) {
   auto summary = [](const Refine3DResult& r) {
     return r.strategy + ": " + to_string(r.status) + " (" + r.diagnosis.stop_reason + ")";
   };
-  Refine3DOptions rest = protected_limits(given, options);
-  rest.split = SplitRule::Shells;
-  rest.time_limit = std::max(0.0, options.time_limit - first.seconds);
-  Refine3DResult second = refine_with(plc, rest, true, false, true);
-  const double seconds = first.seconds + second.seconds;
-  const long work = first.work + second.work;
-  second.strategy = "protected";
-  Refine3DResult& returned = second.status == RefineStatus::Converged ? second : first;
-  returned.other_attempt = summary(&returned == &second ? first : second);
-  if (&returned == &second) second.strategy = std::string(rule_name(options.split)) + "+protected";
-  returned.seconds = seconds;
-  returned.work = work;
-  return std::move(returned);
+  double seconds = first.seconds;
+  long work = first.work;
+  std::string others;
+  for (bool mirror : {false, true}) {
+    if (seconds >= options.time_limit || (mirror && !given.fallback_own_limits)) break;
+    Refine3DOptions rest = protected_limits(given, options);
+    rest.split = SplitRule::Shells;
+    rest.time_limit = std::max(0.0, options.time_limit - seconds);
+    Refine3DResult next = refine_with(plc, rest, true, mirror, true);
+    seconds += next.seconds;
+    work += next.work;
+    next.strategy = mirror ? "mirrored" : "protected";
+    if (next.status == RefineStatus::Converged) {
+      next.strategy = std::string(rule_name(options.split)) + (mirror ? "+mirrored" : "+protected");
+      next.other_attempt = summary(first) + others;
+      next.seconds = seconds;
+      next.work = work;
+      return next;
+    }
+    others += "; " + summary(next);
+  }
+  first.other_attempt = others.substr(std::min<std::size_t>(2, others.size()));
+  first.seconds = seconds;
+  first.work = work;
+  return first;
 }
 
 }  // namespace nonobtuse

@@ -508,7 +508,7 @@ class Refine3DResult:
     @property
     def other_attempt(self) -> str:
         """
-        status and stop reason of the attempt not returned
+        status and stop reason of the attempts not returned
         """
     @property
     def points(self) -> numpy.typing.NDArray[numpy.float64]:
@@ -545,7 +545,7 @@ class Refine3DResult:
     @property
     def strategy(self) -> str:
         """
-        'shells', 'greedy', 'midpoint', 'protected', 'mirrored', or '<rule>+protected' after the fallback
+        'shells', 'greedy', 'midpoint', 'protected', 'mirrored', or '<rule>+protected' / '<rule>+mirrored' after a fallback
         """
     @property
     def tet_regions(self) -> numpy.typing.NDArray[numpy.float64]:

@@ -80,17 +80,20 @@ struct Refine3DOptions {
   // Wall-clock seconds for everything (both strategies and the exact checks); infinity (the default) sets none, so
   // that the outcome does not depend on the machine's speed or load. An explicit limit is reported as such.
   double time_limit = std::numeric_limits<double>::infinity();
-  // The deterministic work budget of each strategy pass (the first pass and the protected rerun get one each, so the
-  // rerun never inherits what the first pass spent): one unit per exact encroachment query of a subsegment or a
+  // The deterministic work budget of each strategy pass (the first pass and each rerun get one each, so a rerun
+  // never inherits what an earlier pass spent): one unit per exact encroachment query of a subsegment or a
   // subfacet in the repair's scans and splits, per row of each exact check of the Delaunay mesh and per point of
   // each Delaunay rebuild. Work is proportional to time on one machine and the same on every machine. < 0 selects
   // 2000 (n + t + s) + 2 10^7 for n PLC points, t triangles and s segments (see with_defaults).
   long max_work = -1;
   SplitRule split = SplitRule::Shells;
-  bool protected_fallback = true;  // run the protected strategy when the split rule's pass does not converge
-  // The fallback's limits of its own (4 times the Steiner budget, 1/1000 of min_length where those are left to the
-  // defaults; protected_limits in gabriel3d_strategy.cpp); false: the shared defaults, for callers that repair
-  // many times (the 3D quality pass) and would otherwise spend up to the work budget on each repair.
+  // Run the protected strategy when the split rule's pass does not converge, and the mirrored one when that does
+  // not converge either.
+  bool protected_fallback = true;
+  // The fallbacks' limits of their own (4 times the Steiner budget, 1/1000 of min_length where those are left to the
+  // defaults; protected_limits in gabriel3d_strategy.cpp); false: the shared defaults and no mirrored pass, for
+  // callers that repair many times (the 3D quality pass) and would otherwise spend up to the work budget on each
+  // repair.
   bool fallback_own_limits = true;
   long progress_every = 1000;  // insertions between progress calls; one more after each exact check of the mesh
   std::function<void(const Refine3DProgress&)> progress;
@@ -134,7 +137,8 @@ struct Refine3DResult {
   long work = 0;  // the work units spent, by every attempt together (see Refine3DOptions::max_work)
   // The strategy that produced this result: the split rule's name ("shells", "greedy", "midpoint", "protected"),
   // or "<rule>+protected" when the rule's pass did not converge and the protected strategy, run from the input,
-  // did. other_attempt: "" when one strategy ran, else the status and stop reason of the attempt not returned.
+  // did, "<rule>+mirrored" when only the mirrored one did. other_attempt: "" when one strategy ran, else the status
+  // and stop reason of the attempts not returned ("; " between them).
   std::string strategy;
   std::string other_attempt;
   long protecting_balls = 0;  // apex vertices protected (0 unless the protected strategy ran)
@@ -164,7 +168,9 @@ struct Refine3DResult {
 // protected_fallback is set), the protected strategy (SplitRule::Protected) runs from the input with its own
 // max_steiner and min_length (4 times and 1/1000 of the defaults where those are left to them: protected_limits in
 // gabriel3d_strategy.cpp; not for split == Protected alone), its own max_work and the rest of time_limit; its
-// result is returned if it converged, else the first pass's
+// result is returned if it converged; else (when fallback_own_limits is set) the mirrored strategy
+// (SplitRule::Mirrored) runs from the input with the same limits and its result is returned if it converged; else
+// the first pass's
 // (strategy and other_attempt say which). Protecting balls keep the split points of a
 // segment and a facet meeting at a small angle off the apex, which ends the cascade there (the termination argument
 // and what it does not cover are at arc_split_point in gabriel3d_protect.cpp).

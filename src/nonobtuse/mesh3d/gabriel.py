@@ -270,15 +270,17 @@ def refine_gabriel(
     (step.off). split="mirrored" runs the protected strategy
     plus mirrored facet meshes (a point placed on a facet whose foot lies on a segment where it meets another
     facet below 90 degrees also goes to its image on that facet, verified exactly: gabriel3d_mirror.h); it
-    is no default fallback, since it converged on none of the inputs the protected rerun failed on then.
+    runs from the input, with the protected rerun's limits, when the protected rerun does not converge either
+    (the spike at 80 degrees), and its result is returned if it converged (not with
+    fallback_own_limits=False).
     split="protected" or "mirrored" runs only that strategy; protected_fallback=False returns the first pass
     as it ended. stats["strategy"] names the strategy of the returned mesh ("shells", ..., or
-    "shells+protected" after the fallback), stats["other_attempt"] the status and stop reason of the attempt
-    not returned ("" when one ran), stats["protecting_balls"] the
-    apices protected. The facets' boundary edges
-    count as segments. Stops at max_steiner (None: the core's default, ``Refine3DOptions::max_steiner`` in
+    "shells+protected" / "shells+mirrored" after a fallback), stats["other_attempt"] the status and stop
+    reason of the attempts not returned ("" when one ran), stats["protecting_balls"] the apices protected.
+    The facets' boundary edges count as segments. Stops at max_steiner (None: the core's default,
+    ``Refine3DOptions::max_steiner`` in
     ``gabriel3d.h``, linear in the number of input points), max_work (a deterministic work budget of each
-    strategy pass, the first and the protected rerun one each: exact encroachment queries plus rows of the
+    strategy pass, the first and each rerun one each: exact encroachment queries plus rows of the
     exact checks plus points of the Delaunay rebuilds; None: the core's default, linear in the input size),
     time_limit (seconds; None, the default: no wall-clock limit, so the outcome does not depend on the
     machine), min_length (no split may
