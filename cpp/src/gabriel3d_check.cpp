@@ -167,15 +167,6 @@ int PointIndex::build(int begin, int end) {
   return id;
 }
 
-double PointIndex::box_distance2(const Node& node, const std::array<double, 3>& q) const {
-  double s = 0.0;
-  for (int d = 0; d < 3; ++d) {
-    double e = std::max({node.lo[d] - q[d], 0.0, q[d] - node.hi[d]});
-    s += e * e;
-  }
-  return s;
-}
-
 int PointIndex::nearest(const P3& q) const {
   int best = -1;
   double best2 = HUGE_VAL;

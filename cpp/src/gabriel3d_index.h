@@ -3,6 +3,7 @@
 #pragma once
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <optional>
@@ -65,7 +66,15 @@ class PointIndex {
   };
   void rebuild();
   int build(int begin, int end);
-  double box_distance2(const Node& node, const std::array<double, 3>& q) const;
+  // Inline (it was a call through the PLT from every query's traversal: 2% of refine_gabriel on fandisk).
+  static double box_distance2(const Node& node, const std::array<double, 3>& q) {
+    double s = 0.0;
+    for (int d = 0; d < 3; ++d) {
+      double e = std::max({node.lo[d] - q[d], 0.0, q[d] - node.hi[d]});
+      s += e * e;
+    }
+    return s;
+  }
   const std::vector<P3>& points_;
   std::vector<Item> order_;
   std::vector<Node> nodes_;

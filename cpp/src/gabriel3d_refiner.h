@@ -2,6 +2,7 @@
 // (gabriel3d_refine_once.cpp).
 #pragma once
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <set>
 #include <string>
@@ -62,7 +63,9 @@ class Refiner {
   double seconds() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }
-  bool out_of_time() const { return seconds() > o_.time_limit; }
+  // Without a finite time_limit (the default) the clock is not read: asked per subfacet scanned and per row
+  // checked, it was 1.4% of refine_gabriel on part.off (perf).
+  bool out_of_time() const { return std::isfinite(o_.time_limit) && seconds() > o_.time_limit; }
   // Work units (Refine3DOptions::max_work): counted by every exact encroachment query, and by add_work.
   long work() const { return work_; }
   void add_work(std::size_t units) { work_ += static_cast<long>(units); }

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <map>
+#include <limits>
 #include <numeric>
 #include <tuple>
 #include <utility>
@@ -126,14 +126,31 @@ int flat_on_facet(const PlcState& s, const std::vector<bool>& by_centroid, DT3::
   return -1;
 }
 
+// Sorts rows by corners(row), an array of point indices below `points`: a counting sort by the first corner, then
+// each first corner's handful of rows by the rest (one comparison sort of all rows cost three times as much).
+template <class Row, class Corners>
+void sort_by_corners(std::vector<Row>& rows, std::size_t points, const Corners& corners) {
+  std::vector<std::size_t> start(points + 1, 0);
+  for (const Row& row : rows) ++start[corners(row)[0] + 1];
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<Row> sorted(rows.size());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (Row& row : rows) sorted[next[corners(row)[0]]++] = std::move(row);
+  for (std::size_t v = 0; v < points; ++v)
+    std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(start[v]),
+              sorted.begin() + static_cast<std::ptrdiff_t>(start[v + 1]),
+              [&](const Row& x, const Row& y) { return corners(x) < corners(y); });
+  rows = std::move(sorted);
+}
+
 // Sorts tets and boundary faces by their corners: the cell order of a Delaunay tetrahedralization depends on the
 // (randomized) insertion order, and the output and the repair order must not. No two rows are equal (a cell's
 // corners in its order, a face's), so any sort gives this order; rows with their attributes are sorted in place
 // (sorting indices and gathering was a sixth of this function's own time on fandisk).
-void canonical_order(Restricted& out) {
+void canonical_order(Restricted& out, std::size_t points) {
   std::vector<std::pair<Tetrahedron, double>> tets(out.tets.size());
   for (std::size_t i = 0; i < tets.size(); ++i) tets[i] = {out.tets[i], out.tet_regions[i]};
-  std::sort(tets.begin(), tets.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  sort_by_corners(tets, points, [](const auto& row) -> const Tetrahedron& { return row.first; });
   for (std::size_t i = 0; i < tets.size(); ++i) std::tie(out.tets[i], out.tet_regions[i]) = tets[i];
   struct Face {
     Triangle corners;
@@ -142,7 +159,7 @@ void canonical_order(Restricted& out) {
   std::vector<Face> faces(out.boundary_faces.size());
   for (std::size_t i = 0; i < faces.size(); ++i)
     faces[i] = {out.boundary_faces[i], out.face_markers[i], out.face_facets[i]};
-  std::sort(faces.begin(), faces.end(), [](const Face& x, const Face& y) { return x.corners < y.corners; });
+  sort_by_corners(faces, points, [](const Face& row) -> const Triangle& { return row.corners; });
   for (std::size_t i = 0; i < faces.size(); ++i) {
     out.boundary_faces[i] = faces[i].corners;
     out.face_markers[i] = faces[i].marker;
@@ -155,15 +172,18 @@ void canonical_order(Restricted& out) {
 template <class Inside>
 void number_regions(const DT3& dt, const Inside& inside, std::vector<double>& attribute) {
   std::vector<std::pair<std::array<int, 4>, int>> smallest;  // (smallest cell, component)
-  std::map<int, std::array<int, 4>> first;
+  // Per component (numbered 0 .. attribute.size() - 1): its smallest inside cell so far; unset: none.
+  constexpr int kUnset = std::numeric_limits<int>::max();
+  std::vector<std::array<int, 4>> first(attribute.size(), {kUnset, kUnset, kUnset, kUnset});
   for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
     if (!inside(c)) continue;
     std::array<int, 4> k{c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()};
     std::sort(k.begin(), k.end());
-    auto [it, fresh] = first.emplace(c->info().component, k);
-    if (!fresh) it->second = std::min(it->second, k);
+    std::array<int, 4>& best = first[c->info().component];
+    best = std::min(best, k);
   }
-  for (const auto& [component, k] : first) smallest.emplace_back(k, component);
+  for (std::size_t component = 0; component < first.size(); ++component)
+    if (first[component][0] != kUnset) smallest.emplace_back(first[component], static_cast<int>(component));
   std::sort(smallest.begin(), smallest.end());
   for (std::size_t rank = 0; rank < smallest.size(); ++rank) attribute[smallest[rank].second] = rank + 1.0;
 }
@@ -176,8 +196,7 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
   for (std::size_t i = 0; i < s.points.size(); ++i) input.emplace_back(s.points[i], static_cast<int>(i));
   DT3 dt(input.begin(), input.end());
   Restricted out;
-  if (dt.dimension() < 3) return out;
-  for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) c->info() = CellInfo{};
+  if (dt.dimension() < 3) return out;  // (every cell was constructed with CellInfo{})
   const std::vector<bool> by_centroid = mark_subfacets(s, dt);
   // Cells with all four corners on one facet covered by centroid are flat up to the rounding of Steiner points
   // (or non-planar input): they belong to the facet, not to the volume. Their component is -2 - facet; they are
@@ -191,10 +210,12 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
   // Components of cells connected across faces that lie on no facet. Outside: the component of the infinite
   // cells and those of hole seeds; every other component is inside (TetGen's convention for enclosed regions).
   // A face's facet is found once (marked subfacet, else by centroid) and recorded on both of its cells.
+  // A face's recorded facet comes first: a face next to a flat cell has none (the flat cell's faces carry no
+  // subfacet, and the faces of flat cells are never recorded).
   auto facet_of = [&](DT3::Cell_handle c, int i) {
+    if (int f = c->info().facet[i]; f != kUnknown) return f;
     if (flat(c->neighbor(i))) return -2 - c->neighbor(i)->info().component;
     if (dt.is_infinite(c, i)) return -1;
-    if (int f = c->info().facet[i]; f != kUnknown) return f;
     int f = -1;
     if (any_by_centroid) {
       int v[3];
@@ -258,7 +279,7 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
       out.face_facets.push_back(f);
     }
   }
-  canonical_order(out);
+  canonical_order(out, s.points.size());
   return out;
 }
 
