@@ -90,12 +90,18 @@ class Refiner {
   // authoritative either way; repair() fixes what it finds. memo: the face's last scan (gabriel3d_scan_memo.h).
   bool subfacet_encroached(int f, int a, int b, int c, ScanMemo* memo = nullptr) const {
     ++work_;
-    const Facet& facet = *s_.facets[f];
-    auto artifact = [&](int t) {
-      auto it = facet.vertex.find(t);
-      return ignore_frame_artifacts_ && it != facet.vertex.end() &&
-             CGAL::side_of_bounded_circle(facet.vertex.at(a)->point(), facet.vertex.at(b)->point(),
-                                          facet.vertex.at(c)->point(), it->second->point()) != CGAL::ON_BOUNDED_SIDE;
+    // The test captures two pointers, so that its std::function stays in place: capturing the five variables by
+    // reference put every subfacet scan's std::function on the heap (an allocation per subfacet per scan).
+    struct Subfacet {
+      const Facet& facet;
+      int a, b, c;
+    } sub{*s_.facets[f], a, b, c};
+    auto artifact = [this, &sub](int t) {
+      const auto& vertex = sub.facet.vertex;
+      auto it = vertex.find(t);
+      return ignore_frame_artifacts_ && it != vertex.end() &&
+             CGAL::side_of_bounded_circle(vertex.at(sub.a)->point(), vertex.at(sub.b)->point(),
+                                          vertex.at(sub.c)->point(), it->second->point()) != CGAL::ON_BOUNDED_SIDE;
     };
     return memo ? encroached_since_memo(s_.points, index_, a, b, c, *memo, artifact)
                 : deepest_encroacher(s_.points, index_, a, b, c, nullptr, artifact).vertex >= 0;
