@@ -108,10 +108,21 @@ int facet_by_centroid(const PlcState& s, const std::vector<bool>& by_centroid, c
   return -1;
 }
 
+// Per point: does it lie on a facet covered by centroid? A face or cell with a corner that does not lies on no such
+// facet, which the flags tell without the facet lookups (on part.off, most of the faces the flood fill crosses).
+std::vector<char> on_by_centroid_facet(const PlcState& s, const std::vector<bool>& by_centroid) {
+  std::vector<char> on(s.points.size(), 0);
+  for (std::size_t p = 0; p < s.points.size(); ++p)
+    for (int f : s.point_facets[p]) on[p] = on[p] || by_centroid[f];
+  return on;
+}
+
 // The facet covered by centroid all four corners of a finite cell lie on, if none of its faces is a subfacet; else -1.
-int flat_on_facet(const PlcState& s, const std::vector<bool>& by_centroid, DT3::Cell_handle c) {
+int flat_on_facet(const PlcState& s, const std::vector<bool>& by_centroid, const std::vector<char>& on,
+                  DT3::Cell_handle c) {
   int v[4];
   for (int i = 0; i < 4; ++i) v[i] = c->vertex(i)->info();
+  if (!on[v[0]] || !on[v[1]] || !on[v[2]] || !on[v[3]]) return -1;
   for (int f : s.point_facets[v[0]]) {
     bool all = by_centroid[f];
     for (int i = 1; i < 4 && all; ++i) {
@@ -203,9 +214,10 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
   // never entered nor output, and their faces towards ordinary cells cover the facet. Exception: a cell with a
   // subfacet as a face is ordinary, so that the certified subfacets seal the facet from that side.
   const bool any_by_centroid = std::find(by_centroid.begin(), by_centroid.end(), true) != by_centroid.end();
+  const std::vector<char> on = any_by_centroid ? on_by_centroid_facet(s, by_centroid) : std::vector<char>{};
   if (any_by_centroid)
     for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-      if (int f = flat_on_facet(s, by_centroid, c); f >= 0) c->info().component = -2 - f;
+      if (int f = flat_on_facet(s, by_centroid, on, c); f >= 0) c->info().component = -2 - f;
   auto flat = [](DT3::Cell_handle c) { return c->info().component <= -2; };
   // Components of cells connected across faces that lie on no facet. Outside: the component of the infinite
   // cells and those of hole seeds; every other component is inside (TetGen's convention for enclosed regions).
@@ -221,7 +233,7 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
       int v[3];
       for (int j = 0, m = 0; j < 4; ++j)
         if (j != i) v[m++] = c->vertex(j)->info();
-      f = facet_by_centroid(s, by_centroid, corners(v[0], v[1], v[2]));
+      if (on[v[0]] && on[v[1]] && on[v[2]]) f = facet_by_centroid(s, by_centroid, corners(v[0], v[1], v[2]));
     }
     set_face_facet(c, i, f);
     return f;
