@@ -179,18 +179,18 @@ void canonical_order(Restricted& out, std::size_t points) {
 }
 
 // Without region seeds every inside component is a region of its own: attribute 1, 2, ... in the order of the
-// components' smallest cells (sorted corners), so that the numbers do not depend on the cell order.
-template <class Inside>
-void number_regions(const DT3& dt, const Inside& inside, std::vector<double>& attribute) {
+// components' smallest cells (sorted corners), so that the numbers do not depend on the cell order. From the
+// inside cells as output (tets[i] of component[i]): a pass over those rows, not over the triangulation's cells.
+void number_regions(const std::vector<Tetrahedron>& tets, const std::vector<int>& component,
+                    std::vector<double>& attribute) {
   std::vector<std::pair<std::array<int, 4>, int>> smallest;  // (smallest cell, component)
   // Per component (numbered 0 .. attribute.size() - 1): its smallest inside cell so far; unset: none.
   constexpr int kUnset = std::numeric_limits<int>::max();
   std::vector<std::array<int, 4>> first(attribute.size(), {kUnset, kUnset, kUnset, kUnset});
-  for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
-    if (!inside(c)) continue;
-    std::array<int, 4> k{c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()};
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    std::array<int, 4> k = tets[t];
     std::sort(k.begin(), k.end());
-    std::array<int, 4>& best = first[c->info().component];
+    std::array<int, 4>& best = first[component[t]];
     best = std::min(best, k);
   }
   for (std::size_t component = 0; component < first.size(); ++component)
@@ -270,11 +270,11 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
   std::vector<double> attribute(components, 0.0);
   for (const auto& r : plc.regions)
     if (auto c = dt.locate(P3(r[0], r[1], r[2])); !flat(c)) attribute[c->info().component] = r[3];
-  if (plc.regions.empty()) number_regions(dt, inside, attribute);
+  std::vector<int> tet_component;  // per output tet; its attribute once every component is numbered
   for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
     if (!inside(c)) continue;
     out.tets.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
-    out.tet_regions.push_back(attribute[c->info().component]);
+    tet_component.push_back(c->info().component);
     // Boundary faces, each once: seen from the inside cell (or the first of two inside cells), oriented outward.
     for (int i = 0; i < 4; ++i) {
       auto n = c->neighbor(i);
@@ -291,6 +291,9 @@ Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
       out.face_facets.push_back(f);
     }
   }
+  if (plc.regions.empty()) number_regions(out.tets, tet_component, attribute);
+  out.tet_regions.reserve(out.tets.size());
+  for (int component : tet_component) out.tet_regions.push_back(attribute[component]);
   canonical_order(out, s.points.size());
   return out;
 }
