@@ -46,7 +46,11 @@ void SubsegmentBalls::add(const Key& sub) {
     everywhere_.insert(sub);
     return;
   }
-  for (const Cell& cell : *cells) cells_[cell].push_back(sub);
+  for (const Cell& cell : *cells) {
+    std::vector<Key>& filed = cells_[cell];
+    if (filed.empty()) filed.reserve(4);  // a cell holds a handful: one allocation, not one per doubling
+    filed.push_back(sub);
+  }
   ++levels_[cells->cell[0].level];
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "gabriel3d_index.h"
+#include "gabriel3d_scan_memo.h"
 
 namespace nonobtuse::gabriel3d {
 namespace {
@@ -167,15 +168,6 @@ int PointIndex::build(int begin, int end) {
   return id;
 }
 
-double PointIndex::box_distance2(const Node& node, const std::array<double, 3>& q) const {
-  double s = 0.0;
-  for (int d = 0; d < 3; ++d) {
-    double e = std::max({node.lo[d] - q[d], 0.0, q[d] - node.hi[d]});
-    s += e * e;
-  }
-  return s;
-}
-
 int PointIndex::nearest(const P3& q) const {
   int best = -1;
   double best2 = HUGE_VAL;
@@ -203,34 +195,85 @@ int PointIndex::nearest(const P3& q) const {
   return best;
 }
 
+namespace {
+
+// The deepest confirmed encroacher of segment ab (c == -1) or triangle abc among the candidates offered: the
+// smallest (-depth, index) among those the exact predicate confirms and `ignore` lets through, as a sort by that
+// key would find first. A candidate is tested only when its key beats the best so far: no sort, and ignore() (a
+// facet's 2D test) only for points strictly inside the sphere. The answer does not depend on the offering order.
+class Deepest {
+ public:
+  Deepest(const std::vector<P3>& points, int a, int b, int c)
+      : points_(points), a_(a), b_(b), c_(c),
+        ball_(c < 0 ? search_ball(points[a], points[b]) : search_ball(points[a], points[b], points[c])),
+        center_(ball_.center[0], ball_.center[1], ball_.center[2]) {
+    const P3 &pa = points[a], &pb = points[b];
+    if (ball_.everything) center_ = c < 0 ? CGAL::midpoint(pa, pb) : CGAL::centroid(pa, pb, points[c]);
+    radius_ = std::sqrt(CGAL::to_double(CGAL::squared_distance(center_, pa)));
+  }
+  const SearchBall& ball() const { return ball_; }
+  // Offers point t (not a corner).
+  void offer(int t, const std::function<bool(int)>& ignore) {
+    const double depth = 1.0 - std::sqrt(CGAL::to_double(CGAL::squared_distance(center_, points_[t]))) / radius_;
+    const std::pair<double, int> key{-depth, t};
+    if (best_.second >= 0 && !(key < best_)) return;
+    const P3 &pa = points_[a_], &pb = points_[b_], &pt = points_[t];
+    bool inside = c_ < 0 ? CGAL::side_of_bounded_sphere(pa, pb, pt) == CGAL::ON_BOUNDED_SIDE
+                         : CGAL::side_of_bounded_sphere(pa, pb, points_[c_], pt) == CGAL::ON_BOUNDED_SIDE;
+    if (inside && !(ignore && ignore(t))) best_ = key;
+  }
+  Encroachment result() const {
+    if (best_.second < 0) return {};
+    return {-1, best_.second, -best_.first};
+  }
+
+ private:
+  const std::vector<P3>& points_;
+  int a_, b_, c_;
+  SearchBall ball_;
+  P3 center_;
+  double radius_ = 0.0;
+  std::pair<double, int> best_{HUGE_VAL, -1};
+};
+
+// deepest_encroacher's answer for a simplex no point of index below `from` encroaches: the points from there on,
+// through PointIndex::for_each_in's floating-point filter (which misses no point strictly inside).
+Encroachment deepest_since(const std::vector<P3>& points, int a, int b, int c, int from, std::size_t* candidates) {
+  Deepest deepest(points, a, b, c);
+  const SearchBall& ball = deepest.ball();
+  const double r2 = ball.radius * ball.radius * (1.0 + 1e-12);
+  for (int t = from; t < static_cast<int>(points.size()); ++t) {
+    if (t == a || t == b || t == c) continue;
+    const P3& p = points[t];
+    const double dx = p.x() - ball.center[0], dy = p.y() - ball.center[1], dz = p.z() - ball.center[2];
+    if (!ball.everything && dx * dx + dy * dy + dz * dz > r2) continue;
+    if (candidates) ++*candidates;
+    deepest.offer(t, {});
+  }
+  return deepest.result();
+}
+
+}  // namespace
+
 Encroachment deepest_encroacher(const std::vector<P3>& points, const PointIndex& index, int a, int b, int c,
                                 std::size_t* candidates, const std::function<bool(int)>& ignore) {
-  const P3 &pa = points[a], &pb = points[b];
-  SearchBall ball = c < 0 ? search_ball(pa, pb) : search_ball(pa, pb, points[c]);
-  P3 center(ball.center[0], ball.center[1], ball.center[2]);
-  if (ball.everything) center = c < 0 ? CGAL::midpoint(pa, pb) : CGAL::centroid(pa, pb, points[c]);
-  double radius = std::sqrt(CGAL::to_double(CGAL::squared_distance(center, pa)));
-  // The deepest confirmed candidate: the smallest (-depth, index) among those the exact predicate confirms and
-  // `ignore` lets through, as a sort by that key would find first. A candidate is tested only when its key beats
-  // the best so far: no sort, and ignore() (a facet's 2D test) only for points strictly inside the sphere.
-  std::pair<double, int> best{HUGE_VAL, -1};
-  index.for_each_in(ball, [&](int t) {
+  Deepest deepest(points, a, b, c);
+  index.for_each_in(deepest.ball(), [&](int t) {
     if (t == a || t == b || t == c) return;
     if (candidates) ++*candidates;
-    const double depth = 1.0 - std::sqrt(CGAL::to_double(CGAL::squared_distance(center, points[t]))) / radius;
-    const std::pair<double, int> key{-depth, t};
-    if (best.second >= 0 && !(key < best)) return;
-    const P3& pt = points[t];
-    bool inside = c < 0 ? CGAL::side_of_bounded_sphere(pa, pb, pt) == CGAL::ON_BOUNDED_SIDE
-                        : CGAL::side_of_bounded_sphere(pa, pb, points[c], pt) == CGAL::ON_BOUNDED_SIDE;
-    if (inside && !(ignore && ignore(t))) best = key;
+    deepest.offer(t, ignore);
   });
-  if (best.second < 0) return {};
-  return {-1, best.second, -best.first};
+  return deepest.result();
+}
+
+std::size_t CheckMemo::Hash::operator()(const std::array<int, 3>& k) const {
+  return (static_cast<std::size_t>(k[0]) * 1000003u ^ static_cast<std::size_t>(k[1])) * 1000003u ^
+         static_cast<std::size_t>(k[2] + 1);
 }
 
 GabrielReport check_gabriel_until(const std::vector<P3>& pts, const std::vector<Triangle>& faces,
-                                  const std::vector<Segment>& segments, const std::function<bool()>& out_of_time) {
+                                  const std::vector<Segment>& segments, const std::function<bool()>& out_of_time,
+                                  CheckMemo* memo) {
   auto check_index = [&](int v, const char* what, std::size_t row) {
     if (v < 0 || static_cast<std::size_t>(v) >= pts.size())
       throw InvalidInput(std::string(what) + " " + std::to_string(row) + " refers to point " + std::to_string(v) +
@@ -250,13 +293,29 @@ GabrielReport check_gabriel_until(const std::vector<P3>& pts, const std::vector<
   }
   PointIndex index(pts);
   GabrielReport report;
+  const int n = static_cast<int>(pts.size());
+  // With a memo: a simplex found clean against the points it knew is tested against the points added since only
+  // (when they are at most kMemoReach), the same answer; the memo then records what this check found clean.
+  auto deepest = [&](int a, int b, int c) {
+    if (!memo) return deepest_encroacher(pts, index, a, b, c, &report.candidates);
+    std::array<int, 3> k{a, b, c};
+    if (c < 0) k = {std::min(a, b), std::max(a, b), -1};
+    else std::sort(k.begin(), k.end());
+    auto it = memo->clean_below.find(k);
+    const bool known = it != memo->clean_below.end() && n - it->second <= kMemoReach;
+    Encroachment e = known ? deepest_since(pts, a, b, c, it->second, &report.candidates)
+                           : deepest_encroacher(pts, index, a, b, c, &report.candidates);
+    if (e.vertex < 0) memo->clean_below[k] = n;
+    else if (it != memo->clean_below.end()) memo->clean_below.erase(it);
+    return e;
+  };
   for (std::size_t f = 0; f < faces.size(); ++f) {
     if (out_of_time()) {
       report.unchecked_faces = faces.size() - f;
       report.unchecked_segments = segments.size();
       return report;
     }
-    Encroachment e = deepest_encroacher(pts, index, faces[f][0], faces[f][1], faces[f][2], &report.candidates);
+    Encroachment e = deepest(faces[f][0], faces[f][1], faces[f][2]);
     if (e.vertex >= 0) report.faces.push_back({static_cast<int>(f), e.vertex, e.depth});
   }
   for (std::size_t s = 0; s < segments.size(); ++s) {
@@ -264,7 +323,7 @@ GabrielReport check_gabriel_until(const std::vector<P3>& pts, const std::vector<
       report.unchecked_segments = segments.size() - s;
       return report;
     }
-    Encroachment e = deepest_encroacher(pts, index, segments[s][0], segments[s][1], -1, &report.candidates);
+    Encroachment e = deepest(segments[s][0], segments[s][1], -1);
     if (e.vertex >= 0) report.segments.push_back({static_cast<int>(s), e.vertex, e.depth});
   }
   return report;

@@ -59,15 +59,27 @@ std::vector<InputAngle> segment_segment(const PlcState& s, const std::vector<std
   return out;
 }
 
+// CGAL::to_double(p.x()) (k == 0) or of p.y(): the steps of Lazy_exact_nt's To_double on the point's
+// approximation, which is the coordinate's, without constructing the coordinate's lazy number (an allocation and
+// a release each: most of points_into's time); where that interval is too wide, through the coordinate as before.
+double to_double(const Q2& p, int k) {
+  const CGAL::Interval_nt<false>& i = k == 0 ? CGAL::approx(p).x() : CGAL::approx(p).y();
+  double r;
+  if (CGAL::fit_in_double(i, r)) return r;
+  if (CGAL::has_smaller_relative_precision(i, EK::FT::get_relative_precision_of_to_double()))
+    return CGAL::to_double(i);
+  return CGAL::to_double(k == 0 ? p.x() : p.y());
+}
+
 // Does the direction d from facet vertex v, projected onto the facet's plane, point into the facet (into one of
 // its domain triangles at v)? Floating point: a diagnosis.
 bool points_into(const Facet& f, int v, const Vec& d) {
   auto vh = f.vertex.at(v);
   const Q2& o = vh->point();
-  double ox = CGAL::to_double(o.x()), oy = CGAL::to_double(o.y());
+  double ox = to_double(o, 0), oy = to_double(o, 1);
   double dx = dot(d, f.u), dy = dot(d, f.v);
   auto turn = [&](const Q2& p) {  // cross(p - o, d): positive when d is counter-clockwise from p - o
-    return (CGAL::to_double(p.x()) - ox) * dy - (CGAL::to_double(p.y()) - oy) * dx;
+    return (to_double(p, 0) - ox) * dy - (to_double(p, 1) - oy) * dx;
   };
   auto fc = f.cdt.incident_faces(vh), done = fc;
   do {
@@ -76,7 +88,7 @@ bool points_into(const Facet& f, int v, const Vec& d) {
     const Q2 &p = fc->vertex(FacetCDT::ccw(i))->point(), &q = fc->vertex(FacetCDT::cw(i))->point();
     // d inside the angle from p - o (included) to q - o (excluded), ccw: a direction along an edge between two
     // domain triangles counts once (a cone's generator over a regular polygon's fan diagonal does).
-    const bool along_p = turn(p) == 0 && (CGAL::to_double(p.x()) - ox) * dx + (CGAL::to_double(p.y()) - oy) * dy > 0;
+    const bool along_p = turn(p) == 0 && (to_double(p, 0) - ox) * dx + (to_double(p, 1) - oy) * dy > 0;
     if ((turn(p) > 0 || along_p) && turn(q) < 0) return true;
   } while (++fc != done);
   return false;

@@ -38,6 +38,7 @@ Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool
   Restricted mesh;
   std::vector<Key> segments;
   bool clean = false;
+  CheckMemo check_memo;  // what the exact checks of the rounds found clean
   for (;;) {
     if (!stop) stop = refiner.run();
     mesh = restrict_delaunay(s, plc);
@@ -67,7 +68,7 @@ Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool
     }
     // The check stops at time_limit too: a certificate with unchecked rows is never clean.
     out.certificate = check_gabriel_until(s.points, mesh.boundary_faces, out.segments,
-                                          [&] { return refiner.out_of_time(); });
+                                          [&] { return refiner.out_of_time(); }, &check_memo);
     refiner.add_work(mesh.boundary_faces.size() + out.segments.size());
     if (options.progress)  // each round rebuilds the Delaunay mesh and checks it: seconds on big inputs
       options.progress({refiner.steiner_on_segments + refiner.steiner_on_facets,

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <map>
+#include <limits>
 #include <numeric>
 #include <tuple>
 #include <utility>
@@ -109,10 +109,21 @@ int facet_by_centroid(const PlcState& s, const std::vector<bool>& by_centroid, c
   return -1;
 }
 
+// Per point: does it lie on a facet covered by centroid? A face or cell with a corner that does not lies on no such
+// facet, which the flags tell without the facet lookups (on part.off, most of the faces the flood fill crosses).
+std::vector<char> on_by_centroid_facet(const PlcState& s, const std::vector<bool>& by_centroid) {
+  std::vector<char> on(s.points.size(), 0);
+  for (std::size_t p = 0; p < s.points.size(); ++p)
+    for (int f : s.point_facets[p]) on[p] = on[p] || by_centroid[f];
+  return on;
+}
+
 // The facet covered by centroid all four corners of a finite cell lie on, if none of its faces is a subfacet; else -1.
-int flat_on_facet(const PlcState& s, const std::vector<bool>& by_centroid, DT3::Cell_handle c) {
+int flat_on_facet(const PlcState& s, const std::vector<bool>& by_centroid, const std::vector<char>& on,
+                  DT3::Cell_handle c) {
   int v[4];
   for (int i = 0; i < 4; ++i) v[i] = c->vertex(i)->info();
+  if (!on[v[0]] || !on[v[1]] || !on[v[2]] || !on[v[3]]) return -1;
   for (int f : s.point_facets[v[0]]) {
     bool all = by_centroid[f];
     for (int i = 1; i < 4 && all; ++i) {
@@ -127,14 +138,31 @@ int flat_on_facet(const PlcState& s, const std::vector<bool>& by_centroid, DT3::
   return -1;
 }
 
+// Sorts rows by corners(row), an array of point indices below `points`: a counting sort by the first corner, then
+// each first corner's handful of rows by the rest (one comparison sort of all rows cost three times as much).
+template <class Row, class Corners>
+void sort_by_corners(std::vector<Row>& rows, std::size_t points, const Corners& corners) {
+  std::vector<std::size_t> start(points + 1, 0);
+  for (const Row& row : rows) ++start[corners(row)[0] + 1];
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<Row> sorted(rows.size());
+  std::vector<std::size_t> next(start.begin(), start.end() - 1);
+  for (Row& row : rows) sorted[next[corners(row)[0]]++] = std::move(row);
+  for (std::size_t v = 0; v < points; ++v)
+    std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(start[v]),
+              sorted.begin() + static_cast<std::ptrdiff_t>(start[v + 1]),
+              [&](const Row& x, const Row& y) { return corners(x) < corners(y); });
+  rows = std::move(sorted);
+}
+
 // Sorts tets and boundary faces by their corners: the cell order of a Delaunay tetrahedralization depends on the
 // (randomized) insertion order, and the output and the repair order must not. No two rows are equal (a cell's
 // corners in its order, a face's), so any sort gives this order; rows with their attributes are sorted in place
 // (sorting indices and gathering was a sixth of this function's own time on fandisk).
-void canonical_order(Restricted& out) {
+void canonical_order(Restricted& out, std::size_t points) {
   std::vector<std::pair<Tetrahedron, double>> tets(out.tets.size());
   for (std::size_t i = 0; i < tets.size(); ++i) tets[i] = {out.tets[i], out.tet_regions[i]};
-  std::sort(tets.begin(), tets.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  sort_by_corners(tets, points, [](const auto& row) -> const Tetrahedron& { return row.first; });
   for (std::size_t i = 0; i < tets.size(); ++i) std::tie(out.tets[i], out.tet_regions[i]) = tets[i];
   struct Face {
     Triangle corners;
@@ -143,7 +171,7 @@ void canonical_order(Restricted& out) {
   std::vector<Face> faces(out.boundary_faces.size());
   for (std::size_t i = 0; i < faces.size(); ++i)
     faces[i] = {out.boundary_faces[i], out.face_markers[i], out.face_facets[i]};
-  std::sort(faces.begin(), faces.end(), [](const Face& x, const Face& y) { return x.corners < y.corners; });
+  sort_by_corners(faces, points, [](const Face& row) -> const Triangle& { return row.corners; });
   for (std::size_t i = 0; i < faces.size(); ++i) {
     out.boundary_faces[i] = faces[i].corners;
     out.face_markers[i] = faces[i].marker;
@@ -152,19 +180,22 @@ void canonical_order(Restricted& out) {
 }
 
 // Without region seeds every inside component is a region of its own: attribute 1, 2, ... in the order of the
-// components' smallest cells (sorted corners), so that the numbers do not depend on the cell order.
-template <class Inside>
-void number_regions(const DT3& dt, const Inside& inside, std::vector<double>& attribute) {
+// components' smallest cells (sorted corners), so that the numbers do not depend on the cell order. From the
+// inside cells as output (tets[i] of component[i]): a pass over those rows, not over the triangulation's cells.
+void number_regions(const std::vector<Tetrahedron>& tets, const std::vector<int>& component,
+                    std::vector<double>& attribute) {
   std::vector<std::pair<std::array<int, 4>, int>> smallest;  // (smallest cell, component)
-  std::map<int, std::array<int, 4>> first;
-  for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
-    if (!inside(c)) continue;
-    std::array<int, 4> k{c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()};
+  // Per component (numbered 0 .. attribute.size() - 1): its smallest inside cell so far; unset: none.
+  constexpr int kUnset = std::numeric_limits<int>::max();
+  std::vector<std::array<int, 4>> first(attribute.size(), {kUnset, kUnset, kUnset, kUnset});
+  for (std::size_t t = 0; t < tets.size(); ++t) {
+    std::array<int, 4> k = tets[t];
     std::sort(k.begin(), k.end());
-    auto [it, fresh] = first.emplace(c->info().component, k);
-    if (!fresh) it->second = std::min(it->second, k);
+    std::array<int, 4>& best = first[component[t]];
+    best = std::min(best, k);
   }
-  for (const auto& [component, k] : first) smallest.emplace_back(k, component);
+  for (std::size_t component = 0; component < first.size(); ++component)
+    if (first[component][0] != kUnset) smallest.emplace_back(first[component], static_cast<int>(component));
   std::sort(smallest.begin(), smallest.end());
   for (std::size_t rank = 0; rank < smallest.size(); ++rank) attribute[smallest[rank].second] = rank + 1.0;
 }
@@ -174,31 +205,33 @@ void number_regions(const DT3& dt, const Inside& inside, std::vector<double>& at
 // restrict_delaunay on the Delaunay tetrahedralization dt of s.points.
 Restricted restrict_triangulation(const PlcState& s, const PLC3& plc, DT3& dt) {
   Restricted out;
-  if (dt.dimension() < 3) return out;
-  for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) c->info() = CellInfo{};
+  if (dt.dimension() < 3) return out;  // (every cell was constructed with CellInfo{})
   const std::vector<bool> by_centroid = mark_subfacets(s, dt);
   // Cells with all four corners on one facet covered by centroid are flat up to the rounding of Steiner points
   // (or non-planar input): they belong to the facet, not to the volume. Their component is -2 - facet; they are
   // never entered nor output, and their faces towards ordinary cells cover the facet. Exception: a cell with a
   // subfacet as a face is ordinary, so that the certified subfacets seal the facet from that side.
   const bool any_by_centroid = std::find(by_centroid.begin(), by_centroid.end(), true) != by_centroid.end();
+  const std::vector<char> on = any_by_centroid ? on_by_centroid_facet(s, by_centroid) : std::vector<char>{};
   if (any_by_centroid)
     for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c)
-      if (int f = flat_on_facet(s, by_centroid, c); f >= 0) c->info().component = -2 - f;
+      if (int f = flat_on_facet(s, by_centroid, on, c); f >= 0) c->info().component = -2 - f;
   auto flat = [](DT3::Cell_handle c) { return c->info().component <= -2; };
   // Components of cells connected across faces that lie on no facet. Outside: the component of the infinite
   // cells and those of hole seeds; every other component is inside (TetGen's convention for enclosed regions).
   // A face's facet is found once (marked subfacet, else by centroid) and recorded on both of its cells.
+  // A face's recorded facet comes first: a face next to a flat cell has none (the flat cell's faces carry no
+  // subfacet, and the faces of flat cells are never recorded).
   auto facet_of = [&](DT3::Cell_handle c, int i) {
+    if (int f = c->info().facet[i]; f != kUnknown) return f;
     if (flat(c->neighbor(i))) return -2 - c->neighbor(i)->info().component;
     if (dt.is_infinite(c, i)) return -1;
-    if (int f = c->info().facet[i]; f != kUnknown) return f;
     int f = -1;
     if (any_by_centroid) {
       int v[3];
       for (int j = 0, m = 0; j < 4; ++j)
         if (j != i) v[m++] = c->vertex(j)->info();
-      f = facet_by_centroid(s, by_centroid, corners(v[0], v[1], v[2]));
+      if (on[v[0]] && on[v[1]] && on[v[2]]) f = facet_by_centroid(s, by_centroid, corners(v[0], v[1], v[2]));
     }
     set_face_facet(c, i, f);
     return f;
@@ -235,11 +268,11 @@ Restricted restrict_triangulation(const PlcState& s, const PLC3& plc, DT3& dt) {
   std::vector<double> attribute(components, 0.0);
   for (const auto& r : plc.regions)
     if (auto c = dt.locate(P3(r[0], r[1], r[2])); !flat(c)) attribute[c->info().component] = r[3];
-  if (plc.regions.empty()) number_regions(dt, inside, attribute);
+  std::vector<int> tet_component;  // per output tet; its attribute once every component is numbered
   for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
     if (!inside(c)) continue;
     out.tets.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
-    out.tet_regions.push_back(attribute[c->info().component]);
+    tet_component.push_back(c->info().component);
     // Boundary faces, each once: seen from the inside cell (or the first of two inside cells), oriented outward.
     for (int i = 0; i < 4; ++i) {
       auto n = c->neighbor(i);
@@ -256,7 +289,10 @@ Restricted restrict_triangulation(const PlcState& s, const PLC3& plc, DT3& dt) {
       out.face_facets.push_back(f);
     }
   }
-  canonical_order(out);
+  if (plc.regions.empty()) number_regions(out.tets, tet_component, attribute);
+  out.tet_regions.reserve(out.tets.size());
+  for (int component : tet_component) out.tet_regions.push_back(attribute[component]);
+  canonical_order(out, s.points.size());
   return out;
 }
 
