@@ -18,7 +18,8 @@ Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool
     std::vector<ProtectingBall> balls = protecting_balls(s, plc);
     if (groups)  // the stations take over at the ends of grouped segments (a ball's sphere points there cannot be
                  // matched in doubles: experiments/README.md, step.off)
-      balls.erase(std::remove_if(balls.begin(), balls.end(), [&](const ProtectingBall& b) { return groups->at_end(b.apex); }),
+      balls.erase(std::remove_if(balls.begin(), balls.end(),
+                                 [&](const ProtectingBall& b) { return groups->at_end(b.apex); }),
                   balls.end());
     protection.emplace(s, std::move(balls));
   }

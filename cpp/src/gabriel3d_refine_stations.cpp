@@ -99,7 +99,8 @@ std::optional<Stop> Refiner::place_foot(int f, int p, int base, int along) {
   const K::Vector_3 t = s_.points[s_.segments[along].b] - s_.points[s_.segments[along].a];
   const double tt = CGAL::to_double(t * t);
   double v[3] = {a.x() - b.x(), a.y() - b.y(), a.z() - b.z()};
-  const double vt = (v[0] * CGAL::to_double(t.x()) + v[1] * CGAL::to_double(t.y()) + v[2] * CGAL::to_double(t.z())) / tt;
+  const double vt =
+      (v[0] * CGAL::to_double(t.x()) + v[1] * CGAL::to_double(t.y()) + v[2] * CGAL::to_double(t.z())) / tt;
   v[0] -= vt * CGAL::to_double(t.x()), v[1] -= vt * CGAL::to_double(t.y()), v[2] -= vt * CGAL::to_double(t.z());
   const double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
   for (int d = 0; d < 3; ++d) v[d] = (v[d] - vn * n[d]) * (1.0 + 1.0 / 64);
