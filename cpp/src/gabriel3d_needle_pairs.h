@@ -19,6 +19,7 @@ struct NeedleCorner {
   int apex = 0, facet = 0;
   int seg[2] = {0, 0}, end[2] = {0, 0};
   double c = 1.0;
+  std::vector<int> around;  // the input segments at the apex (of any facet) that are sides of no needle corner
 };
 
 // The facet corners below kPairDegrees (two segments of a facet consecutive around their common vertex), and per
@@ -41,7 +42,9 @@ struct PartnerSplit {
 
 // The partner split of x, or nullopt (refused) when the partner would fall outside the other segment, onto an
 // existing vertex, or when no rounding near it passes the exact checks: the partner strictly outside the diametral
-// spheres of (xa, x) and (x, xb), and x strictly outside those of (u, partner) and (partner, w).
+// spheres of (xa, x) and (x, xb), and x strictly outside those of (u, partner) and (partner, w). Also refused when
+// not needed (x and (u, w) do not encroach each other), and when the partner and the points of a segment in
+// corner.around encroach each other's subsegments (exact).
 std::optional<PartnerSplit> partner_split(const PlcState& s, const NeedleCorner& corner, int side, int x, int xa,
                                           int xb);
 
