@@ -119,7 +119,8 @@ std::optional<MirrorImage> mirrored_point(const PlcState& s, const MirrorPair& m
   for (; step < 8 && (in_subfacet_sphere(y) || in_ball(equality_balls, y)); ++step)
     y = plus(y, scaled(m.lift, std::ldexp(size, step - 52)));
   if (step == 8 || in_ball(to_subsegments, y)) return std::nullopt;
-  MirrorImage out{y};
+  MirrorImage out;
+  out.point = y;
   out.loc = to.cdt.locate(to.project(y), out.lt, out.li);
   if (!strictly_in_domain(to.cdt, out.lt, out.loc, out.li)) return std::nullopt;
   return out;

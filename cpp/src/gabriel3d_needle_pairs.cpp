@@ -19,8 +19,6 @@ namespace {
 // min_length; at 3 degrees all of them converge.
 constexpr double kPairDegrees = 3.0;
 
-double distance(const P3& p, const P3& q) { return std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q))); }
-
 // The angle at v between v -> a and v -> b, in radians (atan2 of |cross| and dot: accurate near 0).
 double corner_angle(const P3& v, const P3& a, const P3& b) {
   const K::Vector_3 p = a - v, q = b - v;

@@ -9,6 +9,7 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <optional>
@@ -55,6 +56,9 @@ struct InputSegment {
 
 using Key = std::pair<int, int>;  // (min, max) point indices
 inline Key key(int a, int b) { return a < b ? Key{a, b} : Key{b, a}; }
+
+// The distance between p and q in doubles (rounded: for sizes and search bounds, never for a geometric decision).
+inline double distance(const P3& p, const P3& q) { return std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q))); }
 
 struct PlcState {
   int n_input = 0;

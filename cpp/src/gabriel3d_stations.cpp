@@ -16,8 +16,6 @@ namespace {
 constexpr double kNearEnds = 1e-5;
 constexpr double kApexDegrees = 1.0;
 
-double distance(const P3& p, const P3& q) { return std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q))); }
-
 int find(std::vector<int>& parent, int i) {
   while (parent[i] != i) i = parent[i] = parent[parent[i]];
   return i;
