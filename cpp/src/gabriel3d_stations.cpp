@@ -161,7 +161,11 @@ std::optional<P3> station_rounding(const P3& ideal, const P3* apex, double radiu
       p[v] += j * ulp(c[v]);
       const double miss = radius - distance_to_apex(p);
       const double sign = (c[fine] - e[fine]) >= 0 ? 1.0 : -1.0;
-      const long k0 = std::lround(sign * miss / step[fine]);
+      // The fine coordinate's steps to the sphere: none where it does not move the radius (step 0), and no
+      // candidate where the sphere is out of reach (a NaN, an infinity or beyond 2^20 steps: lround would overflow).
+      const double steps = step[fine] > 0.0 ? sign * miss / step[fine] : 0.0;
+      if (!(std::abs(steps) <= 1048576.0)) continue;
+      const long k0 = std::lround(steps);
       for (long k = k0 - 1; k <= k0 + 1; ++k) {
         std::array<double, 3> q = p;
         q[fine] += static_cast<double>(k) * ulp(c[fine]);
