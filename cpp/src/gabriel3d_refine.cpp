@@ -206,16 +206,11 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
     ball = nullptr;
   }
   // A circumcenter that encroaches a subsegment of this facet is not inserted: the subsegments are split instead.
-  std::vector<Key> hit;
-  for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e) {
-    if (!facet.cdt.is_constrained(*e)) continue;
-    int u = e->first->vertex(FacetCDT::cw(e->second))->info(), w = e->first->vertex(FacetCDT::ccw(e->second))->info();
-    if (CGAL::side_of_bounded_sphere(s_.points[u], s_.points[w], center) == CGAL::ON_BOUNDED_SIDE)
-      hit.push_back(key(u, w));
-  }
+  std::vector<Key> hit = facet_subsegments_holding(r.facet, center);
   // The protected strategy's collar rule (gabriel3d_collar.cpp): onto the one hit subsegment's collar circle.
+  const auto held = [&](const P3& y) { return !facet_subsegments_holding(r.facet, y).empty(); };
   if (protection_ && hit.size() == 1)
-    if (auto y = facet_collar_point(s_, collared_, facet, hit[0], center); y && !protection_->strictly_containing(*y))
+    if (auto y = facet_collar_point(s_, collared_, hit[0], center, held); y && !protection_->strictly_containing(*y))
       center = *y, hit.clear(), ball = nullptr;
   Q2 q = facet.project(center);
   FacetCDT::Locate_type lt;
@@ -239,7 +234,6 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
     }
   }
   if (!hit.empty()) {
-    std::sort(hit.begin(), hit.end());
     for (const Key& sub : hit)
       if (auto stop = split(sub, true, inserted_point, &center)) return stop;
     return std::nullopt;
@@ -268,6 +262,17 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
   inserted(id);
   mirror(id);
   return std::nullopt;
+}
+
+std::vector<Key> Refiner::facet_subsegments_holding(int f, const P3& p) const {
+  std::vector<Key> out = encroached_subsegments_.holding(p);
+  out.erase(std::remove_if(out.begin(), out.end(),
+                           [&](const Key& sub) {
+                             const std::vector<int>& on = s_.segments[s_.subsegments.at(sub)].facets;
+                             return std::find(on.begin(), on.end(), f) == on.end();
+                           }),
+            out.end());
+  return out;
 }
 
 // Splits every input segment through a protected apex where it leaves the apex's ball
