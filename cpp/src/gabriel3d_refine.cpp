@@ -102,7 +102,14 @@ void Refiner::partner(int m, int a, int b) {
         const Placed x = queue[i];
         if (corner.seg[side] != x.segment || reached.count(corner.seg[1 - side]) || budget_left()) continue;
         work_ += 4;  // the partner's exact sphere checks
-        const std::optional<PartnerSplit> p = partner_split(s_, corner, side, x.point, x.a, x.b);
+        // The walk of point location from the apex crossed every piece of the other segment on the way (a quarter
+        // of u.off's run, exact collinearity tests): it starts at an end of a piece whose sphere holds the point.
+        const auto nearby = [&](const P3& y) {
+          for (const Key& sub : encroached_subsegments_.holding(y))
+            if (s_.subsegments.at(sub) == corner.seg[1 - side]) return sub.first;
+          return -1;
+        };
+        const std::optional<PartnerSplit> p = partner_split(s_, corner, side, x.point, x.a, x.b, nearby);
         // The rungs to the points of this chain are about r theta long, under min_length near the corner by
         // design; every other point, and both new subsegments, must respect it.
         if (!p || too_short(s_.points[p->u], p->point) || too_short(p->point, s_.points[p->w])) continue;
