@@ -35,8 +35,8 @@ namespace nonobtuse::gabriel3d {
 // the exact test decides by noise. Measured on spike 80 (split="protected"): 166 of the 186 subsegment splits that
 // split_subfacet makes are such Thales subfacets, all vertices and the encroacher within 1e-15 r of the sphere, whose
 // circumcenter is the midpoint (refused above, so sigma is split); experiments/README.md has the variants tried.
-std::optional<P3> collar_split_point(const P3& p, const P3& q, const P3& c, const std::vector<Key>& chain,
-                                     const std::vector<P3>& points) {
+std::optional<P3> collar_split_point(const P3& p, const P3& q, const P3& c,
+                                     const std::function<bool(const P3&)>& held) {
   const P3 m = CGAL::midpoint(p, q);
   const K::Vector_3 d = c - m;
   const double length = std::sqrt(CGAL::to_double(d.squared_length()));
@@ -45,10 +45,7 @@ std::optional<P3> collar_split_point(const P3& p, const P3& q, const P3& c, cons
   // the facet's plane (measured with mirrored meshes: Thales subfacets whose circumcenter is m, moved 0.1 off it).
   if (!(length > std::ldexp(radius, -26))) return std::nullopt;
   auto outside = [&](const P3& y) {
-    if (CGAL::side_of_bounded_sphere(p, q, y) == CGAL::ON_BOUNDED_SIDE) return false;
-    for (const auto& [a, b] : chain)
-      if (CGAL::side_of_bounded_sphere(points[a], points[b], y) == CGAL::ON_BOUNDED_SIDE) return false;
-    return true;
+    return CGAL::side_of_bounded_sphere(p, q, y) != CGAL::ON_BOUNDED_SIDE && !held(y);
   };
   double scale = radius / length;
   for (int step = 0; step < 8; ++step) {
@@ -70,15 +67,10 @@ std::vector<bool> collared_segments(const PlcState& s) {
   return out;
 }
 
-std::optional<P3> facet_collar_point(const PlcState& s, const std::vector<bool>& collared, const Facet& facet,
-                                     const Key& sub, const P3& c) {
+std::optional<P3> facet_collar_point(const PlcState& s, const std::vector<bool>& collared, const Key& sub, const P3& c,
+                                     const std::function<bool(const P3&)>& held) {
   if (!collared[s.subsegments.at(sub)]) return std::nullopt;
-  std::vector<Key> chain;
-  for (auto e = facet.cdt.finite_edges_begin(); e != facet.cdt.finite_edges_end(); ++e)
-    if (facet.cdt.is_constrained(*e))
-      chain.push_back(key(e->first->vertex(FacetCDT::cw(e->second))->info(),
-                          e->first->vertex(FacetCDT::ccw(e->second))->info()));
-  return collar_split_point(s.points[sub.first], s.points[sub.second], c, chain, s.points);
+  return collar_split_point(s.points[sub.first], s.points[sub.second], c, held);
 }
 
 }  // namespace nonobtuse::gabriel3d

@@ -3,6 +3,7 @@
 // points of the facet near the segment go on these circles instead of splitting the segment (the termination
 // argument is at collar_split_point's definition).
 #pragma once
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -12,13 +13,14 @@ namespace nonobtuse::gabriel3d {
 
 // The collar point for a split point c strictly inside the diametral ball of subsegment [p, q], c in a plane through
 // p and q: the point of the circle with diameter pq in that plane on the ray from the midpoint through c, rounded to
-// doubles and then verified with exact predicates: it is not strictly inside the diametral ball of [p, q] nor of
-// any subsegment in `chain` (the other subsegments of the facet that c's circle may touch, e.g. the neighbours of
-// [p, q] on its segment, whose balls are tangent to [p, q]'s at the shared end). A rounded point that fails is moved
-// outward along the ray by relative steps of 2^-52, 2^-51, ... (at most 8 steps). nullopt when c is the midpoint,
-// when the steps do not get it out, or when the point is p or q. Cost: O(|chain|).
-std::optional<P3> collar_split_point(const P3& p, const P3& q, const P3& c, const std::vector<Key>& chain,
-                                     const std::vector<P3>& points);
+// doubles and then verified with exact predicates: it is not strictly inside the diametral ball of [p, q], and
+// `held` (an exact test: the point strictly inside the diametral ball of another subsegment of the facet, e.g. a
+// neighbour of [p, q] on its segment, whose ball is tangent to [p, q]'s at the shared end) is false for it. A
+// rounded point that fails is moved outward along the ray by relative steps of 2^-52, 2^-51, ... (at most 8 steps).
+// nullopt when c is the midpoint, when the steps do not get it out, or when the point is p or q. Cost: at most 8
+// calls of held.
+std::optional<P3> collar_split_point(const P3& p, const P3& q, const P3& c,
+                                     const std::function<bool(const P3&)>& held);
 
 // Every dihedral angle between two facets through an input segment (kind "dihedral", vertices {a, b}, facets: the
 // two facet ids), in degrees, floating point; read before refinement (unsplit segments). Cost: O(s f^2) for s
@@ -30,10 +32,9 @@ std::vector<InputAngle> dihedral_angles(const PlcState& s);
 // rule, which measured fewer points there). Cost: that of dihedral_angles.
 std::vector<bool> collared_segments(const PlcState& s);
 
-// collar_split_point for subsegment `sub` of `facet` and a split point c of the facet, with every subsegment of the
-// facet as the chain, when sub's input segment is collared (collared_segments); else nullopt. Cost: O(e) for the
-// facet's e constrained edges.
-std::optional<P3> facet_collar_point(const PlcState& s, const std::vector<bool>& collared, const Facet& facet,
-                                     const Key& sub, const P3& c);
+// collar_split_point for subsegment `sub` and a split point c of a facet through it, when sub's input segment is
+// collared (collared_segments); else nullopt. `held`: as for collar_split_point, over every subsegment of the facet.
+std::optional<P3> facet_collar_point(const PlcState& s, const std::vector<bool>& collared, const Key& sub, const P3& c,
+                                     const std::function<bool(const P3&)>& held);
 
 }  // namespace nonobtuse::gabriel3d

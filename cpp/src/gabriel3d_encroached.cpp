@@ -1,6 +1,7 @@
 // The encroached subsegments, kept up to date as points are added (gabriel3d_encroached.h).
 #include "gabriel3d_encroached.h"
 
+#include <algorithm>
 #include <string>
 
 namespace nonobtuse::gabriel3d {
@@ -37,6 +38,16 @@ void EncroachedSubsegments::added(int m, const std::optional<Key>& split) {
       encroached_.insert(sub);
   };
   balls_.for_each_near(p, test);
+}
+
+std::vector<Key> EncroachedSubsegments::holding(const P3& p) const {
+  std::vector<Key> out;
+  balls_.for_each_near(p, [&](const Key& sub) {
+    if (CGAL::side_of_bounded_sphere(s_.points[sub.first], s_.points[sub.second], p) == CGAL::ON_BOUNDED_SIDE)
+      out.push_back(sub);
+  });
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 void EncroachedSubsegments::check_against_full_scan() const {

@@ -24,6 +24,9 @@ class EncroachedSubsegments {
   bool contains(const Key& sub) const { return encroached_.count(sub) > 0; }
   // In the order of PlcState::subsegments (Key order), as a scan of that map would list them.
   std::vector<Key> sorted() const { return {encroached_.begin(), encroached_.end()}; }
+  // The subsegments whose diametral spheres hold p strictly inside (exact), in Key order. Cost: the candidates of
+  // one grid query (gabriel3d_ball_grid.h), not every subsegment.
+  std::vector<Key> holding(const P3& p) const;
   // Throws InternalError unless the set is what a full scan finds (debug builds' invariant check).
   void check_against_full_scan() const;
 

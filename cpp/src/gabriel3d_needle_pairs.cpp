@@ -138,7 +138,7 @@ NeedleCorners needle_corners(const PlcState& s) {
 // spheres below, moved along its subsegment by relative steps of 2^-52, 2^-51, ... (at most 20 each way) until it
 // passes, and refused otherwise (the refinement then goes on without it).
 std::optional<PartnerSplit> partner_split(const PlcState& s, const NeedleCorner& corner, int side, int x, int xa,
-                                          int xb) {
+                                          int xb, const std::function<int(const P3&)>& near) {
   const int other = 1 - side;
   const P3& v = s.points[corner.apex];
   const double r = distance(v, s.points[x]);
@@ -150,7 +150,9 @@ std::optional<PartnerSplit> partner_split(const PlcState& s, const NeedleCorner&
   const Q2 qa = apex->point(), qb = facet.vertex.at(corner.end[other])->point();
   FacetCDT::Locate_type lt;
   int li = 0;
-  const auto loc = facet.cdt.locate(qa + (qb - qa) * EK::FT(t), lt, li, apex->face());
+  const int start = near(interpolate(v, s.points[corner.end[other]], t));
+  const auto loc = facet.cdt.locate(qa + (qb - qa) * EK::FT(t), lt, li,
+                                    (start < 0 ? apex : facet.vertex.at(start))->face());
   if (lt != FacetCDT::EDGE) return std::nullopt;  // on an existing vertex
   int u = loc->vertex(FacetCDT::cw(li))->info(), w = loc->vertex(FacetCDT::ccw(li))->info();
   const auto sub = s.subsegments.find(key(u, w));

@@ -5,6 +5,7 @@
 // argument is at partner_split's definition). Sizes are floating point; every decision about a partner is an exact
 // predicate on its rounded coordinates.
 #pragma once
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -44,8 +45,10 @@ struct PartnerSplit {
 // existing vertex, or when no rounding near it passes the exact checks: the partner strictly outside the diametral
 // spheres of (xa, x) and (x, xb), and x strictly outside those of (u, partner) and (partner, w). Also refused when
 // not needed (x and (u, w) do not encroach each other), and when the partner and the points of a segment in
-// corner.around encroach each other's subsegments (exact).
+// corner.around encroach each other's subsegments (exact). `near`: for a point on the other segment, a point of
+// the facet near it where the point location in the facet's triangulation starts, or -1 (the apex); the result
+// does not depend on it, only the length of the walk.
 std::optional<PartnerSplit> partner_split(const PlcState& s, const NeedleCorner& corner, int side, int x, int xa,
-                                          int xb);
+                                          int xb, const std::function<int(const P3&)>& near);
 
 }  // namespace nonobtuse::gabriel3d

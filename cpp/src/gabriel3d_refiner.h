@@ -120,6 +120,9 @@ class Refiner {
   std::optional<Stop> split(const Key& sub, bool always, bool* inserted, const P3* pending = nullptr);
   // Splits subfacet f (a face of facet f.facet's triangulation, or only a triangle on it when !require_face).
   std::optional<Stop> split_subfacet(const SubfacetRef& f, bool require_face, bool* inserted);
+  // The subsegments of facet f (of input segments that are constraints of its triangulation) whose diametral spheres
+  // hold p strictly inside (exact), in Key order.
+  std::vector<Key> facet_subsegments_holding(int f, const P3& p) const;
   std::optional<Stop> too_short(const P3& p, const P3& q) const;
   // A stop when p is closer than min_length to a point; *near (when given) is set to that point.
   std::optional<Stop> too_close(const P3& p, int* near = nullptr) const;

@@ -3,7 +3,9 @@
 // ball (exact predicates on the rounded points).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -14,14 +16,24 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// The `held` test of collar_split_point over the diametral balls of the subsegments in chain.
+std::function<bool(const P3&)> held_by(const std::vector<Key>& chain, const std::vector<P3>& points) {
+  return [&chain, &points](const P3& y) {
+    return std::any_of(chain.begin(), chain.end(), [&](const Key& sub) {
+      return CGAL::side_of_bounded_sphere(points[sub.first], points[sub.second], y) == CGAL::ON_BOUNDED_SIDE;
+    });
+  };
+}
+
 TEST(Gabriel3DCollar, MovesAPointOnTheRayFromTheMidpointOntoTheCircle) {
   const std::vector<P3> points{{0, 0, 0}, {1, 0, 0}};
   // m = (0.5, 0, 0), radius 0.5: (0.5, 0.25, 0) goes to (0.5, 0.5, 0); the ray through (0.75, 0, 0) ends at q.
-  const auto y = collar_split_point(points[0], points[1], P3(0.5, 0.25, 0), {{0, 1}}, points);
+  const std::vector<Key> chain{{0, 1}};
+  const auto y = collar_split_point(points[0], points[1], P3(0.5, 0.25, 0), held_by(chain, points));
   ASSERT_TRUE(y);
   EXPECT_EQ(*y, P3(0.5, 0.5, 0));
-  EXPECT_FALSE(collar_split_point(points[0], points[1], P3(0.75, 0, 0), {{0, 1}}, points));  // that is q itself
-  EXPECT_FALSE(collar_split_point(points[0], points[1], P3(0.5, 0, 0), {{0, 1}}, points));   // the midpoint
+  EXPECT_FALSE(collar_split_point(points[0], points[1], P3(0.75, 0, 0), held_by(chain, points)));  // q itself
+  EXPECT_FALSE(collar_split_point(points[0], points[1], P3(0.5, 0, 0), held_by(chain, points)));   // the midpoint
 }
 
 TEST(Gabriel3DCollar, PointsOfTwoFacetsAtTenDegreesStayOutOfEveryPieceBall) {
@@ -43,7 +55,7 @@ TEST(Gabriel3DCollar, PointsOfTwoFacetsAtTenDegreesStayOutOfEveryPieceBall) {
     const K::Vector_3 side = trial % 2 ? in_g : in_f;
     const P3 c = CGAL::midpoint(p, q) + K::Vector_3(rho * std::cos(angle), 0, 0) + side * (rho * std::sin(angle));
     if (CGAL::side_of_bounded_sphere(p, q, c) != CGAL::ON_BOUNDED_SIDE) continue;
-    const auto y = collar_split_point(p, q, c, chain, points);
+    const auto y = collar_split_point(p, q, c, held_by(chain, points));
     if (!y) continue;
     ++placed;
     for (const auto& [a, b] : chain)
