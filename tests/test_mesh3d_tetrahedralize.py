@@ -95,3 +95,13 @@ def test_tet_faces_once_are_outward():
     normals = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
     centroid = CUBE_POINTS[[0, 1, 2, 4]].mean(axis=0)
     assert ((normals * (p[:, 0] - centroid)).sum(axis=1) > 0).all()
+
+
+def test_input_points_first_refuses_equal_inputs():
+    inputs = np.array([[0.0, 0, 0], [1, 0, 0], [-0.0, 0, 0]])  # rows 0 and 2 equal (-0.0 == 0.0)
+    points = np.array([[1.0, 0, 0], [0, 0, 0], [0, 1, 0], [0, 0, 1]])
+    with pytest.raises(InvalidInputError, match="two equal points"):
+        input_points_first(inputs, points, np.array([[0, 1, 2, 3]]))
+    merged, tets = input_points_first(inputs[:2], points, np.array([[0, 1, 2, 3]]))
+    assert merged.tolist() == [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    assert tets.tolist() == [[1, 0, 2, 3]]

@@ -95,6 +95,7 @@ def region_attributes(tet_regions: np.ndarray, plc: PLC, conforming: bool) -> np
     the mesh does not conform to the facets (`conforming` False: its components, numbered when there are no
     seeds, are then pieces cut by the leaks, not the PLC's regions)."""
     tet_regions = np.asarray(tet_regions, dtype=np.float64)
-    if not len(plc.regions) and (not conforming or len(np.unique(tet_regions)) <= 1):
+    one_value = not len(tet_regions) or tet_regions.min() == tet_regions.max()  # O(t), no sort
+    if not len(plc.regions) and (not conforming or one_value):
         return None
     return tet_regions

@@ -190,7 +190,7 @@ class InteriorRefiner:
         # pass runs again from `mesh` with them (going on from that try's state instead left slit-2.smesh's
         # cascade in place: no convergence in 280 s). Inputs that converge without them (layered_box.poly,
         # icosphere_jitter.off) keep every tet within the bounds; the others pay a second pass. Deterministic.
-        boundary = len(np.unique(np.asarray(mesh.boundary_faces, dtype=np.int64)))
+        boundary = int(np.count_nonzero(np.bincount(np.asarray(mesh.boundary_faces, dtype=np.int64).ravel())))
         rule, self.lazy_tried = self.lazy_tried, True
         first = self._refine_interior(mesh, budget, insert, limits, rule,
                                       max_steiner if rule else min(max_steiner, boundary, 2000))

@@ -241,9 +241,11 @@ def input_points_first(inputs: np.ndarray, points: np.ndarray,
     equal to an input point takes its index, the other output points follow in their order."""
     merged, inv = merge_equal_points(np.concatenate([inputs, points]))
     n = len(inputs)
-    if len(np.unique(inv[:n])) != n:
+    # merge_equal_points numbers by first occurrence: the first n rows hold max + 1 distinct points, so the
+    # inputs are distinct iff that is n (O(n), where counting the distinct numbers sorted them); then they are
+    # 0..n-1 and the new points n.. in order
+    if n and int(inv[:n].max()) + 1 != n:
         raise InvalidInputError("the input has two equal points")
-    # merge_equal_points numbers by first occurrence, so the inputs are 0..n-1 and new points n.. in order
     return merged, inv[n:][tets]
 
 
