@@ -17,7 +17,7 @@ from nonobtuse.cli import main
 from nonobtuse.demo import cross_section
 from nonobtuse.errors import InvalidInputError
 from nonobtuse.io import write_mesh
-from nonobtuse.io.cv_grid import DEFAULT_BOUNDARY_MARKER, grid_from_mesh
+from nonobtuse.io.cv_grid import DEFAULT_BOUNDARY_MARKER, distinct_indices, grid_from_mesh
 from nonobtuse.io.export import export_mesh, is_export_path
 from nonobtuse.io.fehm import fehm_paths
 from nonobtuse.io.pflotran import boundary_path
@@ -461,3 +461,12 @@ def test_fv_maximum_principle_quick(tmp_path):
     assert int(ours["negative_coefficients"]) == 0 and int(ours["cells_outside"]) == 0
     assert int(ours["negative_responses"]) == 0 and int(ours["sources"]) > 0
     assert (tmp_path / "fv_maximum_principle_quick.png").stat().st_size > 0
+
+
+@given(st.lists(st.integers(-(2**62), 2**62), max_size=60), st.sampled_from([np.int64, np.int32]))
+def test_distinct_indices_is_np_unique(values, dtype):
+    a = np.array([v % 2**31 - 2**30 for v in values] if dtype is np.int32 else values, dtype=dtype)
+    for shape in [(len(a),), (len(a) // 2, 2)]:
+        b = a[: shape[0] * (shape[1] if len(shape) > 1 else 1)].reshape(shape)
+        got, want = distinct_indices(b), np.unique(b)
+        assert got.dtype == want.dtype and got.tolist() == want.tolist()

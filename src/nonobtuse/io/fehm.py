@@ -29,7 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from nonobtuse.io._files import atomic_text
-from nonobtuse.io.cv_grid import ControlVolumeGrid
+from nonobtuse.io.cv_grid import ControlVolumeGrid, distinct_indices
 
 
 def _columns(values: np.ndarray, fmt: str, per_line: int = 5) -> str:
@@ -115,8 +115,9 @@ def write_fehm(grid: ControlVolumeGrid, path: str | Path) -> list[Path]:
     write_stor(grid, paths["stor"])
     write_fehmn(grid, paths["fehmn"])
     write_zones([(f"region_{r:g}", c) for r, c in sorted(grid.region_cells.items())], paths["material"])
-    markers = np.unique(grid.boundary_markers).tolist()
-    boundary = [(f"marker_{m}", np.unique(grid.boundary_cells[grid.boundary_markers == m])) for m in markers]
+    markers = distinct_indices(grid.boundary_markers).tolist()
+    cells, of = grid.boundary_cells, grid.boundary_markers
+    boundary = [(f"marker_{m}", distinct_indices(cells[of == m])) for m in markers]
     write_zones(boundary, paths["boundary"])
     return list(paths.values())
 
