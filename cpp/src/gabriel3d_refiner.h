@@ -38,6 +38,13 @@ inline SubfacetRef canonical(SubfacetRef r) {
   return {r.facet, v[0], v[1], v[2]};
 }
 
+// The order in which repair() splits encroached faces: a permutation of `faces` (rows of point indices) that
+// depends on the set of faces alone, neither on the rows' order nor on the order of the corners within a row
+// (both follow the cell order of the Delaunay tetrahedralization): ascending by a 64-bit mix of the sorted corners,
+// ties by the corners. Scattered over the mesh rather than sorted by a corner, which kept neighbouring faces
+// together (experiments/README.md, "repair order").
+std::vector<std::size_t> scattered_order(const std::vector<Triangle>& faces);
+
 class Refiner {
  public:
   Refiner(PlcState& s, const Refine3DOptions& o, bool ignore_frame_artifacts, const Protection* protection,

@@ -1,9 +1,12 @@
-// Internals of the 3D Gabriel refinement: rounded_circumcenter (subfacet split points, needles too) and PointIndex.
+// Internals of the 3D Gabriel refinement: rounded_circumcenter (subfacet split points, needles too), PointIndex and
+// the repair order.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "gabriel3d_index.h"
+#include "gabriel3d_refiner.h"
 
 namespace nonobtuse::gabriel3d {
 namespace {
@@ -65,6 +68,49 @@ TEST(Gabriel3DPointIndex, GrowingIndexFindsWhatBruteForceFinds) {
     for (std::size_t t = 0; t < points.size(); ++t)
       if (CGAL::compare_squared_distance(points[t], c, 0.04) == CGAL::SMALLER) EXPECT_TRUE(seen[t]) << t;
   }
+}
+
+}  // namespace
+}  // namespace nonobtuse::gabriel3d
+
+namespace nonobtuse::gabriel3d {
+namespace {
+
+// The faces of scattered_order's result as sorted corner triples, in its order.
+std::vector<Triangle> in_scattered_order(const std::vector<Triangle>& faces) {
+  std::vector<Triangle> out;
+  for (std::size_t i : scattered_order(faces)) {
+    Triangle t = faces[i];
+    std::sort(t.begin(), t.end());
+    out.push_back(t);
+  }
+  return out;
+}
+
+TEST(Gabriel3DRepairOrder, DependsOnTheSetOfFacesAlone) {
+  // The two triangles of every square of a 12 x 12 grid of points (index 13 i + j).
+  std::vector<Triangle> faces;
+  for (int i = 0; i < 12; ++i)
+    for (int j = 0; j < 12; ++j) {
+      const int p = 13 * i + j;
+      faces.push_back({p, p + 1, p + 14});
+      faces.push_back({p, p + 14, p + 13});
+    }
+  const std::vector<std::size_t> order = scattered_order(faces);
+  std::vector<std::size_t> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  for (std::size_t i = 0; i < sorted.size(); ++i) ASSERT_EQ(sorted[i], i);  // a permutation
+  // The same faces in reverse row order, each row rotated (as another cell order would give them) or reversed.
+  std::vector<Triangle> other(faces.rbegin(), faces.rend());
+  for (std::size_t i = 0; i < other.size(); ++i) {
+    Triangle& t = other[i];
+    if (i % 3 == 1) t = {t[1], t[2], t[0]};
+    if (i % 3 == 2) t = {t[2], t[1], t[0]};
+  }
+  EXPECT_EQ(in_scattered_order(other), in_scattered_order(faces));
+  // Scattered: not the order of the smallest corner, which keeps the faces around a point together.
+  const std::vector<Triangle> result = in_scattered_order(faces);
+  EXPECT_FALSE(std::is_sorted(result.begin(), result.end()));
 }
 
 }  // namespace
