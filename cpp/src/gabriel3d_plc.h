@@ -106,7 +106,22 @@ struct Restricted {
   std::vector<double> tet_regions;
 };
 // Components of cells connected across faces on no facet; the unbounded one and those of hole seeds are outside.
+// Rows are canonical (a tet's least even permutation, a face from its smallest corner) and sorted.
 Restricted restrict_delaunay(const PlcState& s, const PLC3& plc);
+// The Delaunay tetrahedralization of a PLC state's points kept across the rounds of a refinement pass: restrict()
+// inserts the points added since its last call and restricts it, with the result of restrict_delaunay on the same
+// points (CGAL's symbolic perturbation makes the tetrahedralization of cospherical points independent of the
+// insertion order, and the rows are canonical). The state's points may only grow.
+class DelaunayRounds {
+ public:
+  DelaunayRounds();
+  ~DelaunayRounds();
+  Restricted restrict(const PlcState& s, const PLC3& plc);
+
+ private:
+  struct Kept;
+  std::unique_ptr<Kept> kept_;
+};
 // The subfacets (the facets' triangulations) as boundary faces, oriented like the input triangles of their facet;
 // no tets. Subfacets whose corners became collinear through the rounding of Steiner points (no diametral sphere)
 // are left out and counted in *collinear.

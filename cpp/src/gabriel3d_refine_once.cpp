@@ -40,9 +40,10 @@ Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool
   std::vector<Key> segments;
   bool clean = false;
   CheckMemo check_memo;  // what the exact checks of the rounds found clean
+  DelaunayRounds delaunay;  // each round inserts the new points only
   for (;;) {
     if (!stop) stop = refiner.run();
-    mesh = restrict_delaunay(s, plc);
+    mesh = delaunay.restrict(s, plc);
     refiner.add_work(s.points.size());
     out.points.clear();
     for (const auto& p : s.points) out.points.push_back(from_cgal(p));

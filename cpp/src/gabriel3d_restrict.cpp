@@ -7,12 +7,14 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <tuple>
 #include <utility>
 
 #include "gabriel3d_plc.h"
 #include "points_delaunay.h"
+#include "quality3d_rows.h"
 
 namespace nonobtuse::gabriel3d {
 namespace {
@@ -156,9 +158,10 @@ void sort_by_corners(std::vector<Row>& rows, std::size_t points, const Corners& 
 }
 
 // Sorts tets and boundary faces by their corners: the cell order of a Delaunay tetrahedralization depends on the
-// (randomized) insertion order, and the output and the repair order must not. No two rows are equal (a cell's
-// corners in its order, a face's), so any sort gives this order; rows with their attributes are sorted in place
-// (sorting indices and gathering was a sixth of this function's own time on fandisk).
+// insertion history, and the output must not. The rows are canonical (a tet's least even permutation, a face from
+// its smallest corner: the corner order within a cell depends on the history too) and no two are equal, so any sort
+// gives this order; rows with their attributes are sorted in place (sorting indices and gathering was a sixth of
+// this function's own time on fandisk).
 void canonical_order(Restricted& out, std::size_t points) {
   std::vector<std::pair<Tetrahedron, double>> tets(out.tets.size());
   for (std::size_t i = 0; i < tets.size(); ++i) tets[i] = {out.tets[i], out.tet_regions[i]};
@@ -202,7 +205,7 @@ void number_regions(const std::vector<Tetrahedron>& tets, const std::vector<int>
 
 }  // namespace
 
-// restrict_delaunay on the Delaunay tetrahedralization dt of s.points.
+// restrict_delaunay on the Delaunay tetrahedralization dt of s.points, whose cells carry CellInfo{}.
 Restricted restrict_triangulation(const PlcState& s, const PLC3& plc, DT3& dt) {
   Restricted out;
   if (dt.dimension() < 3) return out;  // (every cell was constructed with CellInfo{})
@@ -271,7 +274,8 @@ Restricted restrict_triangulation(const PlcState& s, const PLC3& plc, DT3& dt) {
   std::vector<int> tet_component;  // per output tet; its attribute once every component is numbered
   for (auto c = dt.finite_cells_begin(); c != dt.finite_cells_end(); ++c) {
     if (!inside(c)) continue;
-    out.tets.push_back({c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()});
+    out.tets.push_back(quality3d::canonical_tet(
+        {c->vertex(0)->info(), c->vertex(1)->info(), c->vertex(2)->info(), c->vertex(3)->info()}));
     tet_component.push_back(c->info().component);
     // Boundary faces, each once: seen from the inside cell (or the first of two inside cells), oriented outward.
     for (int i = 0; i < 4; ++i) {
@@ -284,6 +288,8 @@ Restricted restrict_triangulation(const PlcState& s, const PLC3& plc, DT3& dt) {
       int d = c->vertex(DT3::vertex_triple_index(i, 2))->info();
       if (CGAL::orientation(s.points[a], s.points[b], s.points[d], c->vertex(i)->point()) == CGAL::POSITIVE)
         std::swap(b, d);
+      if (b < a && b < d) std::tie(a, b, d) = std::make_tuple(b, d, a);  // from the smallest corner (rotated)
+      else if (d < a && d < b) std::tie(a, b, d) = std::make_tuple(d, a, b);
       out.boundary_faces.push_back({a, b, d});
       out.face_markers.push_back(s.facets[f]->id);
       out.face_facets.push_back(f);
@@ -296,11 +302,25 @@ Restricted restrict_triangulation(const PlcState& s, const PLC3& plc, DT3& dt) {
   return out;
 }
 
-Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) {
-  std::vector<std::pair<P3, int>> input;
-  input.reserve(s.points.size());
-  for (std::size_t i = 0; i < s.points.size(); ++i) input.emplace_back(s.points[i], static_cast<int>(i));
-  DT3 dt(input.begin(), input.end());
+Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) { return DelaunayRounds().restrict(s, plc); }
+
+struct DelaunayRounds::Kept {
+  DT3 dt;
+};
+
+DelaunayRounds::DelaunayRounds() : kept_(std::make_unique<Kept>()) {}
+DelaunayRounds::~DelaunayRounds() = default;
+
+Restricted DelaunayRounds::restrict(const PlcState& s, const PLC3& plc) {
+  DT3& dt = kept_->dt;
+  if (s.points.size() < dt.number_of_vertices())
+    throw InternalError("DelaunayRounds: the PLC state has fewer points than the kept triangulation");
+  std::vector<std::pair<P3, int>> added;
+  added.reserve(s.points.size() - dt.number_of_vertices());
+  for (std::size_t i = dt.number_of_vertices(); i < s.points.size(); ++i)
+    added.emplace_back(s.points[i], static_cast<int>(i));
+  dt.insert(added.begin(), added.end());  // (spatially sorted by CGAL)
+  for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) c->info() = CellInfo{};
   return restrict_triangulation(s, plc, dt);
 }
 

@@ -1,9 +1,12 @@
-// The Delaunay tetrahedralization built once (points_delaunay) and restricted to the PLC's regions from the copy.
+// The Delaunay tetrahedralization built once (points_delaunay) and restricted to the PLC's regions from the copy;
+// kept across refinement rounds (DelaunayRounds).
 #include "points_delaunay.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "gabriel3d_plc.h"
 
@@ -59,6 +62,50 @@ TEST(PointsDelaunay, ATriangulationOfOtherPointsIsRefused) {
 
 TEST(PointsDelaunay, CoincidentPointsAreRefused) {
   EXPECT_THROW(points_delaunay({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 0}}), InvalidInput);
+}
+
+// The unit cube with one facet per square (two triangles each): its eight corners are cospherical, and so are the
+// cube with its edges' midpoints, the cases where two builds can choose different tetrahedralizations.
+PLC3 cube_of_square_facets() {
+  PLC3 plc;
+  for (int i = 0; i < 8; ++i) plc.points.push_back({double(i & 1), double(i >> 1 & 1), double(i >> 2 & 1)});
+  const int squares[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  for (int f = 0; f < 6; ++f) {
+    const int* q = squares[f];
+    plc.triangles.push_back({q[0], q[1], q[2]});
+    plc.triangles.push_back({q[0], q[2], q[3]});
+    plc.facet_ids.push_back(f);
+    plc.facet_ids.push_back(f);
+  }
+  return plc;
+}
+
+void expect_same(const gabriel3d::Restricted& kept, const gabriel3d::Restricted& rebuilt) {
+  ASSERT_FALSE(rebuilt.tets.empty());
+  EXPECT_EQ(kept.tets, rebuilt.tets);
+  EXPECT_EQ(kept.tet_regions, rebuilt.tet_regions);
+  EXPECT_EQ(kept.boundary_faces, rebuilt.boundary_faces);
+  EXPECT_EQ(kept.face_markers, rebuilt.face_markers);
+  EXPECT_EQ(kept.face_facets, rebuilt.face_facets);
+}
+
+TEST(DelaunayRounds, TheKeptTriangulationGivesWhatARebuildGivesRoundAfterRound) {
+  const PLC3 plc = cube_of_square_facets();
+  gabriel3d::PlcState s = gabriel3d::build_plc_state(plc);
+  gabriel3d::DelaunayRounds rounds;
+  expect_same(rounds.restrict(s, plc), gabriel3d::restrict_delaunay(s, plc));
+  // Three rounds: every subsegment split at its midpoint (the cube's edges, then their halves, then quarters).
+  for (int round = 0; round < 3; ++round) {
+    std::vector<gabriel3d::Key> pieces;
+    for (const auto& [piece, parent] : s.subsegments) pieces.push_back(piece);
+    for (const auto& [a, b] : pieces)
+      gabriel3d::split_subsegment(s, a, b, 0.5, CGAL::midpoint(s.points[a], s.points[b]));
+    const gabriel3d::Restricted kept = rounds.restrict(s, plc);
+    expect_same(kept, gabriel3d::restrict_delaunay(s, plc));
+    for (const Tetrahedron& t : kept.tets) EXPECT_EQ(t[0], *std::min_element(t.begin(), t.end()));
+    for (const Triangle& f : kept.boundary_faces) EXPECT_EQ(f[0], *std::min_element(f.begin(), f.end()));
+  }
+  EXPECT_EQ(s.points.size(), 8u + 12u * 7u);
 }
 
 }  // namespace
