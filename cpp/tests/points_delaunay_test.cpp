@@ -34,6 +34,16 @@ PLC3 hull_of_points_near_a_sphere(int n) {
   return plc;
 }
 
+// Every output array of a restriction equal to that of restrict_delaunay (`rebuilt`).
+void expect_same(const gabriel3d::Restricted& other, const gabriel3d::Restricted& rebuilt) {
+  ASSERT_FALSE(rebuilt.tets.empty());
+  EXPECT_EQ(other.tets, rebuilt.tets);
+  EXPECT_EQ(other.tet_regions, rebuilt.tet_regions);
+  EXPECT_EQ(other.boundary_faces, rebuilt.boundary_faces);
+  EXPECT_EQ(other.face_markers, rebuilt.face_markers);
+  EXPECT_EQ(other.face_facets, rebuilt.face_facets);
+}
+
 TEST(PointsDelaunay, RestrictingTheTriangulationBuiltOnceGivesWhatARebuildGives) {
   const PLC3 plc = hull_of_points_near_a_sphere(200);
   const gabriel3d::PlcState s = gabriel3d::build_plc_state(plc);
@@ -43,12 +53,7 @@ TEST(PointsDelaunay, RestrictingTheTriangulationBuiltOnceGivesWhatARebuildGives)
   EXPECT_EQ(std::count(faces.is_face.begin(), faces.is_face.end(), 1), static_cast<long>(plc.triangles.size()));
   gabriel3d::Restricted copied = gabriel3d::restrict_delaunay(s, plc, std::move(dt));
   EXPECT_EQ(dt.number_of_vertices(), 0u);  // cleared after the copy
-  ASSERT_FALSE(rebuilt.tets.empty());
-  EXPECT_EQ(copied.tets, rebuilt.tets);
-  EXPECT_EQ(copied.tet_regions, rebuilt.tet_regions);
-  EXPECT_EQ(copied.boundary_faces, rebuilt.boundary_faces);
-  EXPECT_EQ(copied.face_markers, rebuilt.face_markers);
-  EXPECT_EQ(copied.face_facets, rebuilt.face_facets);
+  expect_same(copied, rebuilt);
   EXPECT_EQ(rebuilt.boundary_faces.size(), plc.triangles.size());
   for (double r : rebuilt.tet_regions) EXPECT_EQ(r, 5.0);
 }
@@ -78,15 +83,6 @@ PLC3 cube_of_square_facets() {
     plc.facet_ids.push_back(f);
   }
   return plc;
-}
-
-void expect_same(const gabriel3d::Restricted& kept, const gabriel3d::Restricted& rebuilt) {
-  ASSERT_FALSE(rebuilt.tets.empty());
-  EXPECT_EQ(kept.tets, rebuilt.tets);
-  EXPECT_EQ(kept.tet_regions, rebuilt.tet_regions);
-  EXPECT_EQ(kept.boundary_faces, rebuilt.boundary_faces);
-  EXPECT_EQ(kept.face_markers, rebuilt.face_markers);
-  EXPECT_EQ(kept.face_facets, rebuilt.face_facets);
 }
 
 TEST(DelaunayRounds, TheKeptTriangulationGivesWhatARebuildGivesRoundAfterRound) {
