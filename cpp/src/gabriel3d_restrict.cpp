@@ -288,9 +288,9 @@ Restricted restrict_triangulation(const PlcState& s, const PLC3& plc, DT3& dt) {
       int d = c->vertex(DT3::vertex_triple_index(i, 2))->info();
       if (CGAL::orientation(s.points[a], s.points[b], s.points[d], c->vertex(i)->point()) == CGAL::POSITIVE)
         std::swap(b, d);
-      if (b < a && b < d) std::tie(a, b, d) = std::make_tuple(b, d, a);  // from the smallest corner (rotated)
-      else if (d < a && d < b) std::tie(a, b, d) = std::make_tuple(d, a, b);
-      out.boundary_faces.push_back({a, b, d});
+      Triangle row{a, b, d};
+      std::rotate(row.begin(), std::min_element(row.begin(), row.end()), row.end());  // one row, whatever the history
+      out.boundary_faces.push_back(row);
       out.face_markers.push_back(s.facets[f]->id);
       out.face_facets.push_back(f);
     }
