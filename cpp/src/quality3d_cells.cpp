@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <map>
-#include <set>
 
 #include "quality3d_rows.h"
 
@@ -14,11 +13,13 @@ std::array<int, 4> corners(Cell c) {
 }
 
 void flood_labels(DT& dt, const std::vector<Triangle>& faces, std::vector<Cell> stack) {
-  std::set<std::array<int, 3>> subfacet;
+  std::vector<std::array<int, 3>> subfacet;  // each with its corners sorted; sorted, for binary searches
+  subfacet.reserve(faces.size());
   for (std::array<int, 3> k : faces) {
     std::sort(k.begin(), k.end());
-    subfacet.insert(k);
+    subfacet.push_back(k);
   }
+  std::sort(subfacet.begin(), subfacet.end());
   while (!stack.empty()) {
     Cell c = stack.back();
     stack.pop_back();
@@ -29,7 +30,7 @@ void flood_labels(DT& dt, const std::vector<Triangle>& faces, std::vector<Cell> 
       for (int j = 0, m = 0; j < 4; ++j)
         if (j != i) k[m++] = c->vertex(j)->info();
       std::sort(k.begin(), k.end());
-      if (subfacet.count(k)) continue;
+      if (std::binary_search(subfacet.begin(), subfacet.end(), k)) continue;
       n->info() = c->info();
       stack.push_back(n);
     }

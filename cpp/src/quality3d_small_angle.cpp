@@ -39,9 +39,9 @@ void SharpFeatures::mark_sharp_apexes(const gabriel3d::PlcState& s, double small
 void SharpFeatures::protect(const gabriel3d::PlcState& s) {
   auto guard = [&](const gabriel3d::SearchBall& ball, std::array<int, 3> element, double radius2) {
     if (ball.everything || !std::isfinite(ball.radius)) return;  // beyond the double range: no guard
+    balls_.add(ball, static_cast<int>(guards_.size()));
     guards_.push_back({element, radius2});
     centers_.emplace_back(ball.center[0], ball.center[1], ball.center[2]);
-    largest_ = std::max(largest_, ball.radius);
   };
   std::vector<double> shortest(s.points.size(), std::numeric_limits<double>::infinity());  // squared, per point
   for (const auto& [k, parent] : s.subsegments) {
@@ -65,24 +65,20 @@ void SharpFeatures::protect(const gabriel3d::PlcState& s) {
           !CGAL::collinear(s.points[a], s.points[b], s.points[c]))
         guard(gabriel3d::search_ball(s.points[a], s.points[b], s.points[c]), {a, b, c}, 0);
     }
-  index_ = std::make_unique<gabriel3d::PointIndex>(centers_);
+  balls_.build();
 }
 
 bool SharpFeatures::protects(const gabriel3d::PlcState& s, const P3& p) const {
-  bool inside = false;
-  index_->for_each_in({{p.x(), p.y(), p.z()}, largest_, false}, [&](int i) {
-    if (inside) return;
-    const auto& [e, radius2] = guards_[i];
-    if (e[1] < 0)  // a ball around a sharp subsegment's midpoint (e[0] == -1) or an apex (-1 - the apex)
-      inside = CGAL::compare_squared_distance(p, e[0] == -1 ? centers_[i] : s.points[-1 - e[0]], radius2) !=
-               CGAL::LARGER;
-    else if (e[2] < 0)
-      inside = CGAL::side_of_bounded_sphere(s.points[e[0]], s.points[e[1]], p) != CGAL::ON_UNBOUNDED_SIDE;
-    else
-      inside = CGAL::side_of_bounded_sphere(s.points[e[0]], s.points[e[1]], s.points[e[2]], p) !=
-               CGAL::ON_UNBOUNDED_SIDE;
-  });
-  return inside;
+  return balls_.first(p, [&](int i) { return guarded(s, i, p); }) != BallClasses::kNone;
+}
+
+bool SharpFeatures::guarded(const gabriel3d::PlcState& s, int i, const P3& p) const {
+  const auto& [e, radius2] = guards_[i];
+  if (e[1] < 0)  // a ball around a sharp subsegment's midpoint (e[0] == -1) or an apex (-1 - the apex)
+    return CGAL::compare_squared_distance(p, e[0] == -1 ? centers_[i] : s.points[-1 - e[0]], radius2) !=
+           CGAL::LARGER;
+  if (e[2] < 0) return CGAL::side_of_bounded_sphere(s.points[e[0]], s.points[e[1]], p) != CGAL::ON_UNBOUNDED_SIDE;
+  return CGAL::side_of_bounded_sphere(s.points[e[0]], s.points[e[1]], s.points[e[2]], p) != CGAL::ON_UNBOUNDED_SIDE;
 }
 
 bool SharpFeatures::sharp_subsegment(const gabriel3d::PlcState& s, int a, int b) const {

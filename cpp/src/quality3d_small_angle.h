@@ -3,10 +3,10 @@
 // in quality3d_interior.cpp).
 #pragma once
 #include <array>
-#include <memory>
 #include <vector>
 
 #include "gabriel3d_plc.h"
+#include "quality3d_spheres.h"
 
 namespace nonobtuse::quality3d {
 
@@ -45,6 +45,7 @@ class SharpFeatures {
   static constexpr char kOnSharpSegment = 1, kNearApex = 2;
   void mark_sharp_apexes(const gabriel3d::PlcState& s, double small_apex);
   void protect(const gabriel3d::PlcState& s);
+  bool guarded(const gabriel3d::PlcState& s, int i, const P3& p) const;  // is p in guard i's ball or sphere?
   std::vector<char> sharp_segment_;  // per segment of s (the parents of subsegments): at a small dihedral angle
   std::vector<char> mark_;           // per point: 0, kOnSharpSegment or kNearApex
   struct Guard {
@@ -54,8 +55,7 @@ class SharpFeatures {
   };
   std::vector<Guard> guards_;
   std::vector<P3> centers_;  // their search balls' centers (gabriel3d::search_ball)
-  double largest_ = 0;       // and the largest radius
-  std::unique_ptr<gabriel3d::PointIndex> index_;
+  BallClasses balls_;        // their search balls, by guard index
 };
 
 }  // namespace nonobtuse::quality3d

@@ -3,11 +3,13 @@
 #include "nonobtuse/gabriel3d.h"
 #include "quality3d_shape.h"
 #include "quality3d_small_angle.h"
+#include "quality3d_spheres.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 namespace nonobtuse {
 namespace {
@@ -65,6 +67,41 @@ InteriorMesh cube_mesh() {
   m.faces = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
              {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 3, 7}, {1, 7, 5}};
   return m;
+}
+
+// Balls of radii spread over nine orders of magnitude (a few large ones among many small, as the small-angle
+// guards of u.off): for points at and around the balls, BallClasses offers a ball that holds the point whenever
+// one does (exact distances decide), class by class.
+TEST(BallClasses, OffersEveryBallHoldingThePointAcrossRadii) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), exponent(-6.0, 3.0);
+  std::vector<gabriel3d::P3> centers;
+  std::vector<double> radii;
+  quality3d::BallClasses balls;
+  for (int i = 0; i < 400; ++i) {
+    centers.emplace_back(10 * unit(rng), 10 * unit(rng), 10 * unit(rng));
+    radii.push_back(std::pow(10.0, exponent(rng)));
+    balls.add({{centers[i].x(), centers[i].y(), centers[i].z()}, radii[i], false}, i);
+  }
+  balls.build();
+  auto holds = [&](int i, const gabriel3d::P3& q) {
+    return CGAL::compare_squared_distance(q, centers[i], radii[i] * radii[i]) != CGAL::LARGER;
+  };
+  int held = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const int b = i % 400;  // about a ball: inside, near its sphere or outside, in a random direction
+    const double d = radii[b] * (i % 3 == 0 ? 0.5 : i % 3 == 1 ? 0.999 : 1.2);
+    gabriel3d::P3 q(unit(rng), unit(rng), unit(rng));
+    const double n = std::sqrt(q.x() * q.x() + q.y() * q.y() + q.z() * q.z());
+    q = gabriel3d::P3(centers[b].x() + d * q.x() / n, centers[b].y() + d * q.y() / n, centers[b].z() + d * q.z() / n);
+    bool any = false;
+    for (int j = 0; j < 400; ++j) any = any || holds(j, q);
+    const int found = balls.first(q, [&](int j) { return holds(j, q); });
+    held += any;
+    ASSERT_EQ(found != quality3d::BallClasses::kNone, any) << "query " << i;
+    if (any) EXPECT_TRUE(holds(found, q));
+  }
+  EXPECT_GT(held, 2000);  // the queries inside and near the spheres are held (the small balls lie far apart)
 }
 
 TEST(RefineInterior, CospherialCubeIsNotConformingAndChangesNothing) {
