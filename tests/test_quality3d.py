@@ -144,6 +144,21 @@ def test_boundary_start_needs_no_tetgen_and_splits_the_boundary_for_the_volume()
     assert r.stats["boundary_points"] > 8
 
 
+def test_boundary_start_keeps_the_volume_where_a_subsegment_has_points_on_its_sphere():
+    # window_box_fin: round 1 splits the edge between the top facet and its coplanar window so that a point
+    # of each facet lies on the diametral sphere of a window edge piece, across it; the Delaunay edge between
+    # them crossed the piece, and the next repair's restricted mesh leaked: no tets, an empty boundary
+    # certified, the run "quality_blocked" with an empty mesh. Such a subsegment is now split (refine_once).
+    plc = load_plc(DATA3D / "window_box_fin.poly")
+    r = refine_quality3d(plc, max_volume=0.004, radius_edge=2.0, start="boundary")
+    assert r.status == "converged" and r.report.ok
+    ratios, volumes = radius_edge_and_volume(r.mesh)
+    assert ratios.max() <= 2.0 and volumes.max() <= 0.004 and volumes.sum() == pytest.approx(4.0)
+    tets = np.sort(np.asarray(r.mesh.tets), axis=1)
+    tet_edges = {(int(t[i]), int(t[j])) for t in tets for i in range(4) for j in range(i + 1, 4)}
+    assert {(int(a), int(b)) for a, b in np.sort(np.asarray(r.mesh.segments), axis=1)} <= tet_edges
+
+
 @needs_tetgen
 def test_region_volumes_hold_per_region():
     plc = load_plc(DATA3D / "two_cubes_face.poly")
