@@ -7,7 +7,8 @@ input's bounding box:
 - tetgen: TetGen ``-pq R -a V`` (splits the boundary as it likes; its mesh is not Gabriel-checked by TetGen);
 - ours:   refine_quality3d (TetGen's facet splits, the Gabriel repair, interior points outside every closed
           diametral sphere, circumcenter rounds; time_limit --time-limit, or none with --deterministic:
-          the work budgets alone, so the outcome does not depend on the machine's load).
+          the work budgets alone, so the outcome does not depend on the machine's load); with
+          --start boundary its boundary start instead (rows "ours-boundary").
 
 Columns: input, method, status, points, boundary_points (vertices of boundary faces and segments),
 interior_points, tets, worst_radius_edge, max_volume (largest tet volume; both floating point, over every
@@ -16,7 +17,8 @@ returned), small_angle_tets and worst_radius_edge_outside / max_volume_outside (
 small-angle rule left over a bound, and the quality of the others), seconds, cpu_seconds (of the child).
 Each method runs in a child process killed after 2 time_limit + 60 s, or --timeout with --deterministic
 (status "timeout": TetGen has no time limit). CSV to DIR/bench_quality3d.csv (``--quick``:
-bench_quality3d_quick.csv) and a Markdown table on stdout.
+bench_quality3d_quick.csv; ``--start boundary``: bench_quality3d_boundary[_quick].csv) and a Markdown table on
+stdout.
 
 Run: ``PYTHONPATH=src .venv/bin/python -m experiments.bench_quality3d [--quick] [--out DIR] [files...]``
 (--quick: inputs up to 500 triangles, 20 s each for ours; --deterministic [--timeout S]: no time limit).
@@ -72,8 +74,8 @@ def _round(x: float | None) -> float | None:
 
 
 def run_case(case: dict[str, Any]) -> dict[str, Any]:
-    """One row (the sweep task, run in a child process): case has path, name, method ("tetgen" or "ours"),
-    radius_edge, volume_fraction, time_limit."""
+    """One row (the sweep task, run in a child process): case has path, name, method ("tetgen", "ours" or
+    "ours-boundary": refine_quality3d's start="boundary"), radius_edge, volume_fraction, time_limit."""
     plc = load_plc(case["path"])
     extent = plc.points.max(axis=0) - plc.points.min(axis=0)
     bound = case["volume_fraction"] * float(np.prod(extent))
@@ -89,8 +91,10 @@ def run_case(case: dict[str, Any]) -> dict[str, Any]:
         except InvalidInputError as e:
             return {"input": name, "method": "tetgen", "status": f"failed: {str(e)[-60:]}"}
         return measure(name, "tetgen", tm, "ok", bound, spent())
-    result = refine_quality3d(plc, max_volume=bound, radius_edge=r, time_limit=case["time_limit"])
-    return measure(name, "ours", result.mesh, result.status, bound, spent(), result.stats)
+    start = "boundary" if case["method"] == "ours-boundary" else "tetgen"
+    result = refine_quality3d(plc, max_volume=bound, radius_edge=r, time_limit=case["time_limit"],
+                              start=start)
+    return measure(name, case["method"], result.mesh, result.status, bound, spent(), result.stats)
 
 
 def bench_one(name: str, path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
@@ -98,7 +102,7 @@ def bench_one(name: str, path: Path, args: argparse.Namespace) -> list[dict[str,
     or args.timeout without a time limit (TetGen has no time limit of its own: -pq ran for minutes on
     mc_torus.off)."""
     rows = []
-    for method in ("tetgen", "ours"):
+    for method in ("tetgen", "ours" if args.start == "tetgen" else "ours-boundary"):
         case = {"path": str(path), "name": name, "method": method, "radius_edge": args.radius_edge,
                 "volume_fraction": args.volume_fraction, "time_limit": args.time_limit}
         kill = args.timeout if args.time_limit is None else 2 * args.time_limit + 60
@@ -130,6 +134,8 @@ def main(argv: list[str] | None = None) -> int:
                     help="no time limit for ours: its work budgets alone (outcomes independent of the load)")
     ap.add_argument("--timeout", type=float, default=600.0,
                     help="with --deterministic: seconds after which a child is killed (default 600)")
+    ap.add_argument("--start", choices=("tetgen", "boundary"), default="tetgen",
+                    help="refine_quality3d's start (default: its default, tetgen)")
     args = ap.parse_args(argv)
     args.max_triangles = 500 if args.quick else 10**9
     args.time_limit = None if args.deterministic else args.time_limit or (20.0 if args.quick else 120.0)
@@ -140,7 +146,8 @@ def main(argv: list[str] | None = None) -> int:
         print("no inputs", file=sys.stderr)
         return 2
     rows: list[dict[str, Any]] = []
-    out = args.out / f"{output_stem('bench_quality3d', args.quick)}.csv"
+    stem = "bench_quality3d" if args.start == "tetgen" else "bench_quality3d_boundary"
+    out = args.out / f"{output_stem(stem, args.quick)}.csv"
     for path in inputs:
         print(f"bench_quality3d: {path.name}", file=sys.stderr)
         name = f"{path.resolve().parents[2].name}/{path.name}"  # shared/... or tests/...: the corpus

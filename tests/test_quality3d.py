@@ -144,6 +144,21 @@ def test_boundary_start_needs_no_tetgen_and_splits_the_boundary_for_the_volume()
     assert r.stats["boundary_points"] > 8
 
 
+def test_boundary_start_keeps_the_volume_where_a_subsegment_has_points_on_its_sphere():
+    # window_box_fin: round 1 splits the edge between the top facet and its coplanar window so that a point
+    # of each facet lies on the diametral sphere of a window edge piece, across it; the Delaunay edge between
+    # them crossed the piece, and the next repair's restricted mesh leaked: no tets, an empty boundary
+    # certified, the run "quality_blocked" with an empty mesh. Such a subsegment is now split (refine_once).
+    plc = load_plc(DATA3D / "window_box_fin.poly")
+    r = refine_quality3d(plc, max_volume=0.004, radius_edge=2.0, start="boundary")
+    assert r.status == "converged" and r.report.ok
+    ratios, volumes = radius_edge_and_volume(r.mesh)
+    assert ratios.max() <= 2.0 and volumes.max() <= 0.004 and volumes.sum() == pytest.approx(4.0)
+    tets = np.sort(np.asarray(r.mesh.tets), axis=1)
+    tet_edges = {(int(t[i]), int(t[j])) for t in tets for i in range(4) for j in range(i + 1, 4)}
+    assert {(int(a), int(b)) for a, b in np.sort(np.asarray(r.mesh.segments), axis=1)} <= tet_edges
+
+
 @needs_tetgen
 def test_region_volumes_hold_per_region():
     plc = load_plc(DATA3D / "two_cubes_face.poly")
@@ -252,6 +267,13 @@ def test_bench_quality3d_writes_both_rows(tmp_path):
     ours = rows[1]
     assert ours["status"] == "converged" and ours["encroached_facets"] == ours["encroached_segments"] == "0"
     assert float(ours["worst_radius_edge"]) <= 2.0 and float(ours["max_volume"]) <= 0.05
+    # the boundary start: its own CSV and row name, the start refine_quality3d reports for it
+    assert bench([str(cube), "--out", str(tmp_path), "--volume-fraction", "0.05", "--start", "boundary"]) == 0
+    lines = (tmp_path / "bench_quality3d_boundary.csv").read_text().splitlines()
+    rows = [dict(zip(COLUMNS, line.split(","))) for line in lines[1:]]
+    assert [r["method"] for r in rows] == ["tetgen", "ours-boundary"] and rows[1]["status"] == "converged"
+    direct = refine_quality3d(cube_plc(), max_volume=0.05, radius_edge=2.0, start="boundary")
+    assert int(rows[1]["points"]) == len(direct.mesh.points) != int(ours["points"])
 
 
 def test_interior_pass_inserts_circumcenters_outside_closed_spheres():

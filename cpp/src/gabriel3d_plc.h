@@ -117,6 +117,9 @@ class DelaunayRounds {
   DelaunayRounds();
   ~DelaunayRounds();
   Restricted restrict(const PlcState& s, const PLC3& plc);
+  // The edges (point index pairs, of points restrict() has inserted) that are no edges of the tetrahedralization,
+  // in the given order.
+  std::vector<Key> missing_edges(const std::vector<Key>& edges) const;
 
  private:
   struct Kept;

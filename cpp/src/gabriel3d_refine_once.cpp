@@ -81,6 +81,21 @@ Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool
     if (!complete && !stop)
       stop = Stop{RefineStatus::BudgetExhausted, "time_limit (" + std::to_string(options.time_limit) +
                                                       " s) reached during the exact check of the result"};
+    if (clean && !stop) {
+      // Points on a subsegment's diametral sphere and none inside pass the check, but the tetrahedralization of
+      // cospherical points is CGAL's symbolic perturbation's choice, which can cross the subsegment: on
+      // window_box_fin.poly's boundary split by the quality pass (start="boundary"), the edge between the top
+      // facet and its coplanar window had one point of each facet on its sphere, the Delaunay edge between those
+      // two crossed it, the flood fill leaked through, and the mesh came out with no tets, its (empty) boundary
+      // certified. Such subsegments are split; the rounds go on.
+      if (const std::vector<Key> missing = delaunay.missing_edges(segments); !missing.empty()) {
+        bool progress = false;
+        stop = refiner.split_missing(missing, &progress);
+        if (!stop && !progress)
+          stop = Stop{RefineStatus::Stalled, "subsegments the Delaunay tetrahedralization lacks could not be split"};
+        continue;
+      }
+    }
     if (stop || clean) break;
     bool progress = false;
     stop = refiner.repair(mesh, segments, out.certificate, &progress);

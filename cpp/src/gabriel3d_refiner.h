@@ -76,6 +76,14 @@ class Refiner {
   // subfacets where points are cospherical). Sets *progress when a point was inserted.
   std::optional<Stop> repair(const Restricted& mesh, const std::vector<Key>& segments, const GabrielReport& report,
                              bool* progress);
+  // Splits subsegments (at their split rule's point) whatever their diametral spheres hold: those the Delaunay
+  // tetrahedralization lacks although no point lies strictly inside their spheres (refine_once). Sets *progress
+  // when a point was inserted.
+  std::optional<Stop> split_missing(const std::vector<Key>& subsegments, bool* progress) {
+    for (const Key& sub : subsegments)
+      if (auto stop = split(sub, true, progress)) return stop;
+    return std::nullopt;
+  }
   double seconds() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   }

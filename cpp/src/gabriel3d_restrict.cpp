@@ -324,6 +324,18 @@ Restricted DelaunayRounds::restrict(const PlcState& s, const PLC3& plc) {
   return restrict_triangulation(s, plc, dt);
 }
 
+std::vector<Key> DelaunayRounds::missing_edges(const std::vector<Key>& edges) const {
+  const DT3& dt = kept_->dt;
+  std::vector<DT3::Vertex_handle> at(dt.number_of_vertices());
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) at[v->info()] = v;
+  std::vector<Key> out;
+  DT3::Cell_handle c;
+  int i = 0, j = 0;
+  for (const Key& e : edges)
+    if (!dt.is_edge(at[e.first], at[e.second], c, i, j)) out.push_back(e);
+  return out;
+}
+
 Restricted restrict_delaunay(const PlcState& s, const PLC3& plc, PointsDelaunay&& built) {
   if (built.number_of_vertices() != s.points.size())
     throw InternalError("restrict_delaunay: the triangulation given is not of the PLC's points");

@@ -1,5 +1,5 @@
-// Internals of the 3D Gabriel refinement: rounded_circumcenter (subfacet split points, needles too), PointIndex and
-// the repair order.
+// Internals of the 3D Gabriel refinement: rounded_circumcenter (subfacet split points, needles too), the edges the
+// kept tetrahedralization lacks, PointIndex and the repair order.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -38,6 +38,23 @@ TEST(Gabriel3DCircumcenter, OrdinaryTriangleUsesTheFloatingPointCenter) {
   auto center = rounded_circumcenter(P3(0, 0, 0), P3(1, 0, 0), P3(0, 1, 0));
   ASSERT_TRUE(center.has_value());
   EXPECT_EQ(*center, P3(0.5, 0.5, 0));
+}
+
+TEST(Gabriel3DDelaunayRounds, MissingEdgesAreTheDiagonalTheCosphericalChoiceLeftOut) {
+  // A square pyramid: the base's four corners are cocircular, so the tetrahedralization has one of its two
+  // diagonals (CGAL's symbolic perturbation chooses); the base's sides and the pyramid's edges are all edges.
+  PLC3 plc;
+  plc.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 1}};
+  plc.triangles = {{0, 2, 1}, {0, 3, 2}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+  plc.facet_ids = {0, 0, 1, 2, 3, 4};
+  const PlcState s = build_plc_state(plc);
+  DelaunayRounds delaunay;
+  delaunay.restrict(s, plc);
+  const std::vector<Key> diagonals{key(0, 2), key(1, 3)};
+  const std::vector<Key> missing = delaunay.missing_edges(diagonals);
+  ASSERT_EQ(missing.size(), 1u);
+  EXPECT_TRUE(missing[0] == diagonals[0] || missing[0] == diagonals[1]);
+  EXPECT_TRUE(delaunay.missing_edges({key(0, 1), key(1, 2), key(2, 3), key(0, 3), key(0, 4), key(2, 4)}).empty());
 }
 
 }  // namespace
