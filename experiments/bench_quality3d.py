@@ -75,7 +75,7 @@ def _round(x: float | None) -> float | None:
 
 def run_case(case: dict[str, Any]) -> dict[str, Any]:
     """One row (the sweep task, run in a child process): case has path, name, method ("tetgen", "ours" or
-    "ours-boundary": refine_quality3d's start="boundary"), radius_edge, volume_fraction, time_limit."""
+    "ours-boundary"), start (refine_quality3d's), radius_edge, volume_fraction, time_limit."""
     plc = load_plc(case["path"])
     extent = plc.points.max(axis=0) - plc.points.min(axis=0)
     bound = case["volume_fraction"] * float(np.prod(extent))
@@ -91,9 +91,8 @@ def run_case(case: dict[str, Any]) -> dict[str, Any]:
         except InvalidInputError as e:
             return {"input": name, "method": "tetgen", "status": f"failed: {str(e)[-60:]}"}
         return measure(name, "tetgen", tm, "ok", bound, spent())
-    start = "boundary" if case["method"] == "ours-boundary" else "tetgen"
     result = refine_quality3d(plc, max_volume=bound, radius_edge=r, time_limit=case["time_limit"],
-                              start=start)
+                              start=case["start"])
     return measure(name, case["method"], result.mesh, result.status, bound, spent(), result.stats)
 
 
@@ -103,8 +102,9 @@ def bench_one(name: str, path: Path, args: argparse.Namespace) -> list[dict[str,
     mc_torus.off)."""
     rows = []
     for method in ("tetgen", "ours" if args.start == "tetgen" else "ours-boundary"):
-        case = {"path": str(path), "name": name, "method": method, "radius_edge": args.radius_edge,
-                "volume_fraction": args.volume_fraction, "time_limit": args.time_limit}
+        case = {"path": str(path), "name": name, "method": method, "start": args.start,
+                "radius_edge": args.radius_edge, "volume_fraction": args.volume_fraction,
+                "time_limit": args.time_limit}
         kill = args.timeout if args.time_limit is None else 2 * args.time_limit + 60
         record = run_case_limited("experiments.bench_quality3d:run_case", case, kill)
         if record["status"] == "ok":

@@ -267,7 +267,7 @@ def test_bench_quality3d_writes_both_rows(tmp_path):
     ours = rows[1]
     assert ours["status"] == "converged" and ours["encroached_facets"] == ours["encroached_segments"] == "0"
     assert float(ours["worst_radius_edge"]) <= 2.0 and float(ours["max_volume"]) <= 0.05
-    # the boundary start: its own CSV and row name, the start refine_quality3d reports for it
+    # the boundary start: its own CSV and row name, and the mesh refine_quality3d gives from the boundary
     assert bench([str(cube), "--out", str(tmp_path), "--volume-fraction", "0.05", "--start", "boundary"]) == 0
     lines = (tmp_path / "bench_quality3d_boundary.csv").read_text().splitlines()
     rows = [dict(zip(COLUMNS, line.split(","))) for line in lines[1:]]
