@@ -5,10 +5,11 @@ radius-edge R (default 2.0) and maximum volume V = --volume-fraction (default 1e
 input's bounding box:
 
 - tetgen: TetGen ``-pq R -a V`` (splits the boundary as it likes; its mesh is not Gabriel-checked by TetGen);
-- ours:   refine_quality3d (TetGen's facet splits, the Gabriel repair, interior points outside every closed
+- ours:   refine_quality3d (the Gabriel repair of the input boundary, interior points outside every closed
           diametral sphere, circumcenter rounds; time_limit --time-limit, or none with --deterministic:
           the work budgets alone, so the outcome does not depend on the machine's load); with
-          --start boundary its boundary start instead (rows "ours-boundary").
+          --start tetgen its TetGen start instead (TetGen's facet splits and -Y points first; rows
+          "ours-tetgen").
 
 Columns: input, method, status, points, boundary_points (vertices of boundary faces and segments),
 interior_points, tets, worst_radius_edge, max_volume (largest tet volume; both floating point, over every
@@ -17,7 +18,7 @@ returned), small_angle_tets and worst_radius_edge_outside / max_volume_outside (
 small-angle rule left over a bound, and the quality of the others), seconds, cpu_seconds (of the child).
 Each method runs in a child process killed after 2 time_limit + 60 s, or --timeout with --deterministic
 (status "timeout": TetGen has no time limit). CSV to DIR/bench_quality3d.csv (``--quick``:
-bench_quality3d_quick.csv; ``--start boundary``: bench_quality3d_boundary[_quick].csv) and a Markdown table on
+bench_quality3d_quick.csv; ``--start tetgen``: bench_quality3d_tetgen[_quick].csv) and a Markdown table on
 stdout.
 
 Run: ``PYTHONPATH=src .venv/bin/python -m experiments.bench_quality3d [--quick] [--out DIR] [files...]``
@@ -75,7 +76,7 @@ def _round(x: float | None) -> float | None:
 
 def run_case(case: dict[str, Any]) -> dict[str, Any]:
     """One row (the sweep task, run in a child process): case has path, name, method ("tetgen", "ours" or
-    "ours-boundary"), start (refine_quality3d's), radius_edge, volume_fraction, time_limit."""
+    "ours-tetgen"), start (refine_quality3d's), radius_edge, volume_fraction, time_limit."""
     plc = load_plc(case["path"])
     extent = plc.points.max(axis=0) - plc.points.min(axis=0)
     bound = case["volume_fraction"] * float(np.prod(extent))
@@ -101,7 +102,7 @@ def bench_one(name: str, path: Path, args: argparse.Namespace) -> list[dict[str,
     or args.timeout without a time limit (TetGen has no time limit of its own: -pq ran for minutes on
     mc_torus.off)."""
     rows = []
-    for method in ("tetgen", "ours" if args.start == "tetgen" else "ours-boundary"):
+    for method in ("tetgen", "ours" if args.start == "boundary" else "ours-tetgen"):
         case = {"path": str(path), "name": name, "method": method, "start": args.start,
                 "radius_edge": args.radius_edge, "volume_fraction": args.volume_fraction,
                 "time_limit": args.time_limit}
@@ -134,8 +135,8 @@ def main(argv: list[str] | None = None) -> int:
                     help="no time limit for ours: its work budgets alone (outcomes independent of the load)")
     ap.add_argument("--timeout", type=float, default=600.0,
                     help="with --deterministic: seconds after which a child is killed (default 600)")
-    ap.add_argument("--start", choices=("tetgen", "boundary"), default="tetgen",
-                    help="refine_quality3d's start (default: its default, tetgen)")
+    ap.add_argument("--start", choices=("boundary", "tetgen"), default="boundary",
+                    help="refine_quality3d's start (default: its default, boundary)")
     args = ap.parse_args(argv)
     args.max_triangles = 500 if args.quick else 10**9
     args.time_limit = None if args.deterministic else args.time_limit or (20.0 if args.quick else 120.0)
@@ -146,7 +147,7 @@ def main(argv: list[str] | None = None) -> int:
         print("no inputs", file=sys.stderr)
         return 2
     rows: list[dict[str, Any]] = []
-    stem = "bench_quality3d" if args.start == "tetgen" else "bench_quality3d_boundary"
+    stem = "bench_quality3d" if args.start == "boundary" else "bench_quality3d_tetgen"
     out = args.out / f"{output_stem(stem, args.quick)}.csv"
     for path in inputs:
         print(f"bench_quality3d: {path.name}", file=sys.stderr)

@@ -52,13 +52,14 @@ class FreshPoints {
 BoundarySplitter::BoundarySplitter(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
                                    const std::vector<int>& face_facets, const std::vector<Segment>& segments,
                                    double min_length, long long max_points, double sharp_dihedral,
-                                   double small_apex)
+                                   double small_apex, double volume_sharp)
     : s_(gabriel3d::build_plc_state(surface_plc(points, faces, face_facets, segments))),
       index_(s_.points),
       balls_(s_.points),
       min_length_(min_length),
       max_points_(max_points),
-      features_(s_, sharp_dihedral, small_apex) {
+      features_(s_, sharp_dihedral, small_apex),
+      volume_features_(s_, std::min(sharp_dihedral, volume_sharp), std::min(small_apex, volume_sharp)) {
   for (const auto& [k, parent] : s_.subsegments) balls_.add(k);
   subs_from_ = faces_from_ = s_.points.size();
 }
@@ -70,6 +71,7 @@ void BoundarySplitter::add_interior_point(const P3& p) {
   s_.at.emplace(std::array<double, 3>{p.x(), p.y(), p.z()}, i);
   index_.add(i);
   features_.added(i, 0);
+  volume_features_.added(i, 0);
 }
 
 int BoundarySplitter::common_facet(int a, int b, int c) const {
@@ -130,21 +132,23 @@ bool BoundarySplitter::may_add(const P3& p) {
   return ok;
 }
 
-void BoundarySplitter::added_point(int i, char sharp) {
+void BoundarySplitter::added_point(int i, char sharp, char volume_sharp) {
   index_.add(i);
   features_.added(i, sharp);
+  volume_features_.added(i, volume_sharp);
   hits_.clear();  // a split changes the subsegments
   ++added;
 }
 
-bool BoundarySplitter::near_small_angle(int f, int a, int b, int c, double shortest) const {
+bool BoundarySplitter::near_small_angle(int f, int a, int b, int c, double shortest, bool over_volume) const {
+  const SharpFeatures& features = over_volume ? volume_features_ : features_;
   const double limit = shortest * shortest;
   auto short_halves = [&](int u, int w) {  // |uw| / 2 < shortest
     return CGAL::compare_squared_distance(s_.points[u], s_.points[w], 4 * limit) == CGAL::SMALLER;
   };
   auto sharp_split = [&](int u, int w) {  // the subsegment is sharp and its midpoint protected
-    return features_.sharp_subsegment(s_, u, w) &&
-           features_.protects(s_, midpoint(s_.points[std::min(u, w)], s_.points[std::max(u, w)]));
+    return features.sharp_subsegment(s_, u, w) &&
+           features.protects(s_, midpoint(s_.points[std::min(u, w)], s_.points[std::max(u, w)]));
   };
   if (f < 0) return sharp_split(a, b) || short_halves(a, b);
   int corner[3] = {a, b, c};  // sorted, as split_subfacet rounds the circumcenter
@@ -157,29 +161,29 @@ bool BoundarySplitter::near_small_angle(int f, int a, int b, int c, double short
     return std::any_of(hit.begin(), hit.end(), [&](const Key& k) {
       return sharp_split(k.first, k.second) || short_halves(k.first, k.second);
     });
-  return ((features_.sharp_point(a) || features_.sharp_point(b) || features_.sharp_point(c)) &&
-          features_.protects(s_, *center)) ||
+  return ((features.sharp_point(a) || features.sharp_point(b) || features.sharp_point(c)) &&
+          features.protects(s_, *center)) ||
          CGAL::compare_squared_distance(*center, s_.points[a], limit) == CGAL::SMALLER;
 }
 
 bool BoundarySplitter::leaves_alone(int row, const std::vector<Triangle>& faces, const std::vector<Segment>& segments,
-                                    double shortest) const {
-  if (row < 0) return near_small_angle(-1, segments[-1 - row][0], segments[-1 - row][1], -1, shortest);
+                                    double shortest, bool over_volume) const {
+  if (row < 0) return near_small_angle(-1, segments[-1 - row][0], segments[-1 - row][1], -1, shortest, over_volume);
   const auto [a, b, c] = faces[row];
   const int f = common_facet(a, b, c);
-  return f >= 0 && near_small_angle(f, a, b, c, shortest);
+  return f >= 0 && near_small_angle(f, a, b, c, shortest, over_volume);
 }
 
 bool BoundarySplitter::split_subsegment(int a, int b) {
   if (a > b) std::swap(a, b);  // the rounded midpoint does not depend on the order
   const P3 m = midpoint(s_.points[a], s_.points[b]);
   if (!may_add(m)) return false;
-  const char sharp = features_.midpoint_mark(s_, a, b);
+  const char sharp = features_.midpoint_mark(s_, a, b), volume_sharp = volume_features_.midpoint_mark(s_, a, b);
   const int i = gabriel3d::split_subsegment(s_, a, b, 0.5, m);
   balls_.remove(gabriel3d::key(a, b));
   balls_.add(gabriel3d::key(a, i));
   balls_.add(gabriel3d::key(i, b));
-  added_point(i, sharp);
+  added_point(i, sharp, volume_sharp);
   return true;
 }
 
@@ -225,7 +229,7 @@ bool BoundarySplitter::split_subfacet(int f, int a, int b, int c) {
     return false;
   }
   if (!may_add(*center)) return false;
-  added_point(gabriel3d::insert_in_facet(s_, f, *center, lt, loc, li), 0);
+  added_point(gabriel3d::insert_in_facet(s_, f, *center, lt, loc, li), 0, 0);
   return true;
 }
 

@@ -21,10 +21,11 @@ class BoundarySplitter {
   // points: every point of the mesh (boundary and interior, in the caller's order); faces with the input facet id of
   // each (face_facets), segments: the subfacets and subsegments. min_length: no split point closer than this to a
   // point (0: none); max_points: boundary points to add at most; sharp_dihedral, small_apex: the small-angle rule's
-  // angles in degrees (near_small_angle; 0: none). Throws InvalidInput as build_plc_state does.
+  // angles in degrees, at most volume_sharp for a tet over the volume bound (near_small_angle; 0: none). Throws
+  // InvalidInput as build_plc_state does.
   BoundarySplitter(const std::vector<Point3>& points, const std::vector<Triangle>& faces,
                    const std::vector<int>& face_facets, const std::vector<Segment>& segments, double min_length,
-                   long long max_points, double sharp_dihedral, double small_apex);
+                   long long max_points, double sharp_dihedral, double small_apex, double volume_sharp);
 
   const std::vector<P3>& points() const { return s_.points; }
   // Appends an interior point (on no facet), so that indices stay the caller's.
@@ -52,10 +53,11 @@ class BoundarySplitter {
   // (SharpFeatures); or (ii) shorter than `shortest`: halves of a subsegment shorter than it, or a subfacet
   // circumcenter closer than it to the corners (Shewchuk's terminator: the split would make a feature smaller than
   // the tet it is made for)? Lengths compared exactly against the double `shortest`.
-  bool near_small_angle(int f, int a, int b, int c, double shortest) const;
+  // over_volume: for a tet over the volume bound, whose sharp features are those below volume_sharp degrees.
+  bool near_small_angle(int f, int a, int b, int c, double shortest, bool over_volume) const;
   // The rule for a point in the closed diametral sphere at `row` of faces (a subfacet; -1 - row: of segments).
   bool leaves_alone(int row, const std::vector<Triangle>& faces, const std::vector<Segment>& segments,
-                    double shortest) const;
+                    double shortest, bool over_volume) const;
 
   // The split for a point in the closed diametral sphere of subsegment ab: its midpoint. False when refused.
   bool split_subsegment(int a, int b);
@@ -76,7 +78,7 @@ class BoundarySplitter {
 
  private:
   bool may_add(const P3& p);
-  void added_point(int i, char sharp);
+  void added_point(int i, char sharp, char volume_sharp);
   // The constrained edges of facet f whose diametral spheres hold z strictly inside, sorted: the subsegments
   // balls_ proposes for z whose input segment lies on f, decided exactly (a scan of f's edges took 22% of
   // anchor.off's time). Remembered per facet and point until the next split (the rule asks for the same subfacet's
@@ -97,6 +99,7 @@ class BoundarySplitter {
   double min_length_;
   long long max_points_;
   SharpFeatures features_;
+  SharpFeatures volume_features_;  // below volume_sharp degrees, for tets over the volume bound
 };
 
 }  // namespace nonobtuse::quality3d

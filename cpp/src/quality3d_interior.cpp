@@ -54,7 +54,8 @@ class InteriorRefiner {
     if (!mesh.face_facets.empty())
       splitter_ = std::make_unique<BoundarySplitter>(mesh.points, mesh.faces, mesh.face_facets, mesh.segments,
                                                      bounds.min_length, bounds.max_boundary_points,
-                                                     bounds.sharp_dihedral_degrees, bounds.small_apex_degrees);
+                                                     bounds.sharp_dihedral_degrees, bounds.small_apex_degrees,
+                                                     bounds.volume_sharp_degrees);
     spheres_ = std::make_unique<SphereIndex>(pts_, faces_, segments_);
   }
 
@@ -168,7 +169,8 @@ class InteriorRefiner {
   bool flat_on_facet(Cell c) const { return splitter_ && splitter_->on_one_facet(corners(c)); }
   bool left_alone(const TetQuality& q, int row) const {
     return splitter_ && std::isfinite(q.ratio) && row != SphereIndex::kNone &&
-           splitter_->leaves_alone(row, faces_, segments_, q.over_volume ? 0.0 : q.shortest);  // 0: none shorter
+           splitter_->leaves_alone(row, faces_, segments_, q.over_volume ? 0.0 : q.shortest,  // 0: none shorter
+                                   q.over_volume);
   }
 
   void push_if_bad(Cell c) {
@@ -256,10 +258,14 @@ class InteriorRefiner {
   // encroaches nothing at a feature and lies at least about rho from it, where the facets meeting at the angle theta
   // are at least about rho sin theta apart: that distance bounds the split's insertion radius from below as the
   // local feature size does above, so the chains of splits made for tets stay above min(rho sin theta, lfs) / 2 and
-  // finitely many points fit; a tet over the volume bound V makes splits of radius >= (3V / 4 pi)^(1/3) / 2. What
-  // stays unbounded are the cascades restore_gabriel runs between features at small angles that such a split
-  // reaches; they stop at min_length and max_boundary_points (refused, counted, the step handed back), and
-  // time_limit bounds every step. The tets left alone are counted (small_angle_rows), as Triangle's terminator and
+  // finitely many points fit; a tet over the volume bound V makes splits of radius >= (3V / 4 pi)^(1/3) / 2 (its
+  // circumcenter lies in the closed diametral sphere, of radius s, of what is split, whose corners are vertices
+  // outside its empty circumsphere, so its circumradius r <= 2 s). So for such a tet only the features where the
+  // cascade its split starts need not end count as sharp: below 60 degrees, dihedral or apex (volume_sharp_degrees;
+  // from the boundary as input, the volume bound is met at the 63-degree dihedrals of example.poly). What stays
+  // unbounded are the cascades restore_gabriel runs between features at small angles that such a split reaches; they
+  // stop at min_length and max_boundary_points (refused, counted, the step handed back), and time_limit bounds every
+  // step. The tets left alone are counted (small_angle_rows), as Triangle's terminator and
   // TetGen's -q leave them.
   // `blocked`: the cells over a bound whose circumcenters lie in a closed diametral sphere and are not left alone
   // (collect finds them).

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 namespace nonobtuse {
@@ -218,11 +219,53 @@ TEST(RefineInterior, SameOutputOnEveryCallInOneProcess) {
   }
 }
 
+InteriorMesh wedge_tet_boundary() {
+  // A wedge: edge 0-1 of length 2 on the x axis, edge 2-3 of length 0.2 across it. Circumcenter (0, 0.005, 0),
+  // circumradius 1.0000, radius-edge ratio 5.0; the center lies in the diametral sphere of edge 0-1 (the origin,
+  // radius 1), where faces 0-1-2 and 0-1-3 meet at 11.4 degrees. Every face's diametral sphere is empty (the
+  // boundary is Gabriel: for face 0-1-2, point 3 is 1.0001 from its center, radius 1.00001).
+  InteriorMesh m;
+  m.points = {{-1, 0, 0}, {1, 0, 0}, {0, 1, -0.1}, {0, 1, 0.1}};
+  m.tets = {{0, 1, 2, 3}};
+  m.tet_labels = {0};
+  m.faces = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  m.face_facets = {0, 1, 2, 3};
+  m.segments = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  return m;
+}
+
 TEST(RefineInterior, SmallAngleRuleLeavesTheTetAloneAndCountsIt) {
+  // Over the radius-edge bound alone, its center in the spheres of edge 0-1 and of the faces through it: the split it
+  // asks for is edge 0-1's midpoint, on a sharp segment and in its protecting region. Left alone, counted, nothing
+  // added.
+  InteriorMesh m = wedge_tet_boundary();
+  InteriorBounds bounds;
+  bounds.radius_edge = 2;
+  bounds.volume_bounds = {std::numeric_limits<double>::infinity()};
+  auto r = refine_interior(m, bounds);
+  EXPECT_EQ(r.status, "converged");
+  EXPECT_EQ(r.points.size(), 4u);
+  EXPECT_EQ(r.boundary_points, 0);
+  EXPECT_EQ(r.blocked_rows, std::vector<int>{0});
+  EXPECT_EQ(r.small_angle_rows, std::vector<int>{0});
+  // With the clauses off (the dihedral one below 11.4 degrees) the edge is split, and the two facets at 11.4
+  // degrees encroach each other's pieces until min_length refuses a split: what the rule is for.
+  bounds.sharp_dihedral_degrees = 5;
+  bounds.small_apex_degrees = 0;
+  bounds.min_length = 0.05;
+  auto split = refine_interior(m, bounds);
+  EXPECT_EQ(split.status, "boundary_stopped");
+  EXPECT_GE(split.boundary_points, 1);
+  EXPECT_GE(split.refused_splits, 1);
+  EXPECT_TRUE(split.small_angle_rows.empty());
+}
+
+TEST(RefineInterior, SmallAngleRuleForATetOverTheVolumeBoundTakesOnlyAnglesBelow60) {
   // The regular tet: its facets meet at dihedral angles of acos(1/3) = 70.53 degrees (below the default 85: every
   // edge is sharp) and each edge leans over the facets through its ends at acos(1/sqrt 3) = 54.74 degrees (below
-  // 60: every corner is a sharp apex). Its center (0,0,0) is in every face's diametral sphere, and every split it
-  // could ask for lies at a sharp feature: the tet over the volume bound is left alone, counted, nothing is added.
+  // 60: every corner is a sharp apex). Its center (0,0,0) is in every face's diametral sphere and every split it
+  // asks for lies at a sharp feature and in its protecting region: over the volume bound, it is left alone, counted,
+  // nothing is added.
   InteriorMesh m = regular_tet_boundary();
   InteriorBounds bounds;
   bounds.volume_bounds = {0.5};
@@ -232,15 +275,19 @@ TEST(RefineInterior, SmallAngleRuleLeavesTheTetAloneAndCountsIt) {
   EXPECT_EQ(r.boundary_points, 0);
   EXPECT_EQ(r.blocked_rows, std::vector<int>{0});
   EXPECT_EQ(r.small_angle_rows, std::vector<int>{0});
-  // With the angles below the tet's (70 and 50 degrees) nothing is sharp: the same tet is split for.
-  bounds.sharp_dihedral_degrees = 70;
+  // The apex clause at 50 degrees: the 70.53-degree edges are sharp under the dihedral clause's 85, but for a tet
+  // over the volume bound only angles below volume_sharp_degrees (59.99) count: the tet is split for, every tet
+  // ends within the bound.
   bounds.small_apex_degrees = 50;
   auto split = refine_interior(m, bounds);
   EXPECT_EQ(split.status, "converged");
   EXPECT_GE(split.boundary_points, 6);
   EXPECT_TRUE(split.small_angle_rows.empty());
-  // Only the dihedral clause (apex at 50): still left alone.
-  bounds.sharp_dihedral_degrees = 85;
+  for (const auto& t : split.tets)
+    EXPECT_LE(std::abs(det3(split.points[t[0]], split.points[t[1]], split.points[t[2]], split.points[t[3]])) / 6,
+              0.5);
+  // With volume_sharp_degrees at 85 as well, the dihedral clause leaves it alone again.
+  bounds.volume_sharp_degrees = 85;
   EXPECT_EQ(refine_interior(m, bounds).small_angle_rows, std::vector<int>{0});
 }
 

@@ -57,6 +57,11 @@ struct InteriorBounds {
   // below small_apex_degrees, or one leaning over a facet below it, make their apex sharp (Ruppert's 60, as 2D's).
   double sharp_dihedral_degrees = 85.0;
   double small_apex_degrees = 60.0;
+  // For a tet over the volume bound, both angles are at most this: such a tet's split radius is bounded below by the
+  // bound (refine_interior's split rule), so the rule is only needed where the cascade that split starts need not
+  // end, below Ruppert's 60 degrees for a facet corner or a wedge's cross-section; 0.01 lower for inputs written
+  // with few digits (gc_hourglass_ico.obj's equilateral faces have corners of 59.9988 degrees).
+  double volume_sharp_degrees = 59.99;
 };
 
 // "converged": every tet within the bounds but those left alone near small input angles (small_angle_rows);
@@ -77,8 +82,9 @@ struct InteriorRefinement {
   std::vector<int> blocked_rows;       // rows of tets over a bound whose circumcenters could not be inserted
   // The blocked rows left alone near small input angles (the small-angle rule: a tet whose circumcenter lies in the
   // closed diametral sphere of a subsegment or subfacet whose split would lie at a sharp feature, a segment where
-  // facets meet below 85 degrees or an apex below 60, and in its protecting region, or, over the radius-edge bound
-  // alone, would be shorter than the tet's shortest edge; see quality3d_boundary.h and quality3d_small_angle.h),
+  // facets meet below 85 degrees or an apex below 60, below volume_sharp_degrees both for a tet over the volume
+  // bound, and in its protecting region, or, over the radius-edge bound alone, would be shorter than the tet's
+  // shortest edge; see quality3d_boundary.h and quality3d_small_angle.h),
   // and those with four corners on one facet (flat but for rounding), sorted.
   std::vector<int> small_angle_rows;
   std::vector<Point3> blocked_centers;  // their circumcenters (floating point)

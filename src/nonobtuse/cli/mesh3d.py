@@ -57,9 +57,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "TetGen's -a without a number) hold too; the smallest bound that applies wins")
     p.add_argument("--radius-edge", type=guards.positive, default=None,
                    help="largest circumradius / shortest edge of a tet, > 1 (TetGen's -q, e.g. 2.0)")
-    p.add_argument("--quality-start", choices=("tetgen", "boundary"), default="tetgen",
-                   help="with a bound: let TetGen split the facets and seed interior points first (default), "
-                        "or start from the input boundary alone (TetGen has no time limit; see "
+    p.add_argument("--quality-start", choices=("boundary", "tetgen"), default="boundary",
+                   help="with a bound: start from the input boundary alone (default), or let TetGen split "
+                        "the facets and seed interior points first (TetGen has no time limit; see "
                         "refine_quality3d)")
     p.add_argument("--json", action="store_true", help="print one JSON object instead of text")
     guards.add_timings_option(p)

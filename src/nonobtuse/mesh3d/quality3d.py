@@ -1,14 +1,14 @@
 """Interior quality and size for 3D meshes with a Gabriel boundary: TetGen's ``-q`` (radius-edge ratio) and
 ``-a`` (maximum volume), the boundary certificate kept.
 
-:func:`refine_quality3d` lets TetGen split the facets for the bounds, repairs that boundary
-(:func:`refine_gabriel`: every subfacet and subsegment gets an empty diametral sphere), takes TetGen's
-interior points on it (``-Y``) but those in a closed diametral sphere, then inserts circumcenters of the tets
-over a bound into one Delaunay tetrahedralization kept between insertions (strictly outside every closed
-diametral sphere, exact); a circumcenter in a closed diametral sphere splits that subfacet or subsegment
-instead, in the same tetrahedralization (Ruppert's and Shewchuk's rule), until the boundary is Gabriel
-again; where that tetrahedralization cannot hold the split boundary, the boundary repair takes over for a
-round. The returned mesh is a Delaunay tetrahedralization with the repaired boundary, certified by the
+:func:`refine_quality3d` repairs the input boundary (:func:`refine_gabriel`: every subfacet and subsegment
+gets an empty diametral sphere; or, with start="tetgen", TetGen's facet splits for the bounds, then takes
+TetGen's interior points on it, ``-Y``, but those in a closed diametral sphere), then inserts circumcenters
+of the tets over a bound into one Delaunay tetrahedralization kept between insertions (strictly outside every
+closed diametral sphere, exact); a circumcenter in a closed diametral sphere splits that subfacet or
+subsegment instead, in the same tetrahedralization (Ruppert's and Shewchuk's rule), until the boundary is
+Gabriel again; where that tetrahedralization cannot hold the split boundary, the boundary repair takes over
+for a round. The returned mesh is a Delaunay tetrahedralization with the repaired boundary, certified by the
 exact check.
 """
 
@@ -60,7 +60,8 @@ class Quality3DResult:
             same with the suffix _outside_small_angles (over the tets not left alone), bad_tets (tets over a
             bound at the end), small_angle_tets (those of them the small-angle rule left alone: a tet whose
             circumcenter lies in the closed diametral sphere of a subsegment or subfacet whose split would lie
-            at a sharp feature, a segment where facets meet below 85 degrees or an apex below 60, and in its
+            at a sharp feature, a segment where facets meet below 85 degrees or an apex below 60 (both below
+            59.99 for a tet over the volume bound: its split is bounded below by the bound), and in its
             protecting region, or, over the radius-edge bound alone, be shorter than the tet's shortest edge;
             ``cpp/src/quality3d_boundary.h``, ``cpp/src/quality3d_small_angle.h``; and a tet with its four
             corners on one facet, flat but for rounding),
@@ -95,7 +96,7 @@ def refine_quality3d(
     radius_edge: float | None = None,
     max_points: int | None = None,
     time_limit: float | None = None,
-    start: Start = "tetgen",
+    start: Start = "boundary",
     region_volumes: bool = False,
     progress: Callable[[int, int, int, int, float], None] | bool | None = None,
     started: float | None = None,
@@ -117,12 +118,13 @@ def refine_quality3d(
     (None: 10^6). time_limit: seconds for everything, checked between rounds and passed on to each boundary
     repair; None (the default): no wall-clock limit, so the outcome does not depend on the machine (the
     repairs stop at their deterministic work budget, max_work, and the passes at max_points and the
-    repair's max_steiner). start: "tetgen" lets TetGen (-pq R -a V, the 3d extra) split the facets for the
-    bounds before the Gabriel repair and takes its -Y interior points on the repaired boundary as the first
-    interior points (it falls back to "boundary" when TetGen is missing or fails); "boundary" starts from the
-    input boundary and its repair alone (also taken when the repair of TetGen's surface does not converge
-    within SURFACE_STEINER_PER_POINT Steiner points per surface point + 1,000, or half the time with a
-    time_limit: :func:`_repair_tetgen_surface`).
+    repair's max_steiner). start: "boundary" (the default) starts from the input boundary and its repair
+    alone; "tetgen" lets TetGen (-pq R -a V, the 3d extra) split the facets for the bounds before the Gabriel
+    repair and takes its -Y interior points on the repaired boundary as the first interior points (it falls
+    back to "boundary" when TetGen is missing or fails, or when the repair of TetGen's surface does not
+    converge within SURFACE_STEINER_PER_POINT Steiner points per surface point + 1,000, or half the time with
+    a time_limit: :func:`_repair_tetgen_surface`). On the 3D corpus the boundary start adds about a third
+    fewer points in less than half the time (experiments/README.md).
     progress: True prints a line per round to stderr; a callable gets (round, interior_points, bad_tets,
     blocked_tets, seconds). started: time.perf_counter() at which the caller's work began (time_limit counts
     from it).
