@@ -224,14 +224,18 @@ InteriorMesh wedge_tet_boundary() {
   // circumradius 1.0000, radius-edge ratio 5.0; the center lies in the diametral sphere of edge 0-1 (the origin,
   // radius 1), where faces 0-1-2 and 0-1-3 meet at 11.4 degrees. Every face's diametral sphere is empty (the
   // boundary is Gabriel: for face 0-1-2, point 3 is 1.0001 from its center, radius 1.00001).
-  InteriorMesh m;
+  InteriorMesh m = regular_tet_boundary();  // its faces, facets and segments, with these corners
   m.points = {{-1, 0, 0}, {1, 0, 0}, {0, 1, -0.1}, {0, 1, 0.1}};
-  m.tets = {{0, 1, 2, 3}};
-  m.tet_labels = {0};
-  m.faces = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-  m.face_facets = {0, 1, 2, 3};
-  m.segments = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   return m;
+}
+
+// The single tet of a four-point input left alone by the small-angle rule: counted, nothing added.
+void expect_the_one_tet_left_alone(const InteriorRefinement& r) {
+  EXPECT_EQ(r.status, "converged");
+  EXPECT_EQ(r.points.size(), 4u);
+  EXPECT_EQ(r.boundary_points, 0);
+  EXPECT_EQ(r.blocked_rows, std::vector<int>{0});
+  EXPECT_EQ(r.small_angle_rows, std::vector<int>{0});
 }
 
 TEST(RefineInterior, SmallAngleRuleLeavesTheTetAloneAndCountsIt) {
@@ -242,12 +246,7 @@ TEST(RefineInterior, SmallAngleRuleLeavesTheTetAloneAndCountsIt) {
   InteriorBounds bounds;
   bounds.radius_edge = 2;
   bounds.volume_bounds = {std::numeric_limits<double>::infinity()};
-  auto r = refine_interior(m, bounds);
-  EXPECT_EQ(r.status, "converged");
-  EXPECT_EQ(r.points.size(), 4u);
-  EXPECT_EQ(r.boundary_points, 0);
-  EXPECT_EQ(r.blocked_rows, std::vector<int>{0});
-  EXPECT_EQ(r.small_angle_rows, std::vector<int>{0});
+  expect_the_one_tet_left_alone(refine_interior(m, bounds));
   // With the clauses off (the dihedral one below 11.4 degrees) the edge is split, and the two facets at 11.4
   // degrees encroach each other's pieces until min_length refuses a split: what the rule is for.
   bounds.sharp_dihedral_degrees = 5;
@@ -269,12 +268,7 @@ TEST(RefineInterior, SmallAngleRuleForATetOverTheVolumeBoundTakesOnlyAnglesBelow
   InteriorMesh m = regular_tet_boundary();
   InteriorBounds bounds;
   bounds.volume_bounds = {0.5};
-  auto r = refine_interior(m, bounds);
-  EXPECT_EQ(r.status, "converged");
-  EXPECT_EQ(r.points.size(), 4u);
-  EXPECT_EQ(r.boundary_points, 0);
-  EXPECT_EQ(r.blocked_rows, std::vector<int>{0});
-  EXPECT_EQ(r.small_angle_rows, std::vector<int>{0});
+  expect_the_one_tet_left_alone(refine_interior(m, bounds));
   // The apex clause at 50 degrees: the 70.53-degree edges are sharp under the dihedral clause's 85, but for a tet
   // over the volume bound only angles below volume_sharp_degrees (59.99) count: the tet is split for, every tet
   // ends within the bound.
