@@ -246,6 +246,8 @@ def test_refine3d_cli_without_tetgen_start(tmp_path, capsys):
                  "--quality-start", "boundary"]) == EXIT_OK
     text = capsys.readouterr().out
     assert f"{summary['interior_points']:,} interior" in text and "{'" not in text
+    assert (f"{summary['steiner_points']:,} (the mesh has {summary['boundary_points']:,} boundary and "
+            f"{summary['interior_points']:,} interior points)") in text
     outside = summary["worst_radius_edge_outside_small_angles"]
     assert (f"worst radius-edge       {summary['worst_radius_edge']:.4g} ({outside:.4g} outside small "
             f"angles; bound n/a)") in text
