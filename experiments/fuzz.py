@@ -8,6 +8,9 @@ and every converged output is re-checked here, independently of the C++ certific
   mesh starts with the input points, unchanged.
 - 3D (:func:`check_refine_3d`): no mesh vertex lies strictly inside the diametral sphere of any boundary
   subfacet or subsegment (:func:`gabriel_violations`, integer arithmetic on the stored doubles).
+- 3D quality (:func:`check_quality_3d`, ``refine_quality3d`` with a volume bound and maybe a radius-edge
+  bound, from the input boundary): the same exact re-check, the input points kept, every tet not left alone
+  near small angles within the bounds (numpy), and the tets fill the volume of ``refine_gabriel``'s mesh.
 
 Inputs (:func:`domains`, :func:`plcs`): star-shaped polygons with near-collinear vertices, tiny angles, points
 a relative 1e-3..1e-15 off a segment, interior points, a hole or radial interfaces; stacks of thin layers
@@ -43,6 +46,7 @@ from nonobtuse import Domain, InvalidInputError  # noqa: E402
 from nonobtuse.io.raw3d import Facet, RawInput  # noqa: E402
 from nonobtuse.mesh3d import PLC, refine_gabriel  # noqa: E402
 from nonobtuse.mesh3d.load import build_plc  # noqa: E402
+from nonobtuse.mesh3d.quality3d import refine_quality3d  # noqa: E402
 from nonobtuse.refinement import STRATEGIES  # noqa: E402
 from nonobtuse.validate import validate_domain  # noqa: E402
 from refine_helpers import non_delaunay_edges, obtuse_constraint_sides  # noqa: E402
@@ -51,6 +55,8 @@ STATUSES_2D = ("converged", "budget_exhausted", "stalled")
 STATUSES_3D = ("converged", "budget_exhausted", "min_length_reached", "stalled")
 MAX_STEINER_2D = 3000
 MAX_STEINER_3D, TIME_LIMIT_3D = 3000, 10.0
+QUALITY_STATUSES_3D = ("converged", "quality_blocked", "budget_exhausted", "min_length_reached", "stalled")
+MAX_POINTS_QUALITY_3D = 1000  # interior points: the exact re-check is quadratic in big integers
 # A hang is a failure; one example takes milliseconds (2D) to seconds (3D), on a machine shared with others.
 DEADLINE_MS = 60_000
 
@@ -273,6 +279,55 @@ def check_refine_3d(plc: PLC) -> str:
     return result.status
 
 
+def tet_volumes_and_ratios(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Each tet's volume and circumradius / shortest edge, in floating point (numpy, independently of the
+    module's measures)."""
+    p = points[np.asarray(tets, dtype=np.int64).reshape(-1, 4)]
+    u, v, w = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0], p[:, 3] - p[:, 0]
+    det = np.einsum("ij,ij->i", u, np.cross(v, w))
+    center = (np.einsum("ij,ij->i", u, u)[:, None] * np.cross(v, w) + np.einsum("ij,ij->i", v, v)[:, None]
+              * np.cross(w, u) + np.einsum("ij,ij->i", w, w)[:, None] * np.cross(u, v)) / (2 * det[:, None])
+    edges = [np.linalg.norm(p[:, i] - p[:, j], axis=1) for i in range(4) for j in range(i + 1, 4)]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.abs(det) / 6, np.linalg.norm(center, axis=1) / np.min(edges, axis=0)
+
+
+def check_quality_3d(plc: PLC, volume_fraction: float, radius_edge: float | None) -> str:
+    """refine_quality3d of ``plc`` (the default start, the input boundary) with the volume bound
+    ``volume_fraction`` times its bounding box's volume and ``radius_edge``, with hard limits; returns the
+    status. Raises AssertionError when the run ends otherwise than with a status, or a converged mesh fails
+    the exact re-check, moved an input point, leaves a tet over a bound that the small-angle rule did not
+    leave (1e-9 relative slack for the two measures' roundings), or fills another volume than
+    refine_gabriel's certified mesh of the same input (beyond 1e-9 relative and the roundings of boundary
+    points off their facets)."""
+    bound = volume_fraction * float(np.prod(np.ptp(plc.points, axis=0)))  # > 0: each PLC made has a volume
+    result = refine_quality3d(plc, max_volume=bound, radius_edge=radius_edge,
+                              max_points=MAX_POINTS_QUALITY_3D, time_limit=TIME_LIMIT_3D,
+                              max_steiner=MAX_STEINER_3D)
+    assert result.status in QUALITY_STATUSES_3D, result.status
+    m = result.mesh
+    assert np.array_equal(m.points[: len(plc.points)], plc.points), "the input points moved"
+    if result.status != "converged":
+        return result.status
+    assert gabriel_violations(m.points, m.boundary_faces, m.segments) == 0, "converged, not Gabriel"
+    volumes, ratios = tet_volumes_and_ratios(m.points, m.tets)
+    kept = np.setdiff1d(np.arange(len(volumes)), result.small_angle_rows)
+    assert (volumes[kept] <= bound * (1 + 1e-9)).all(), "converged, a tet over the volume bound"
+    if radius_edge is not None:
+        assert (ratios[kept] <= radius_edge * (1 + 1e-9)).all(), "converged, a tet over the radius-edge bound"
+    repaired = refine_gabriel(plc, max_steiner=MAX_STEINER_3D, time_limit=TIME_LIMIT_3D)
+    if repaired.status == "converged":
+        reference = tet_volumes_and_ratios(repaired.mesh.points, repaired.mesh.tets)[0].sum()
+        # a boundary point rounded to doubles lies up to half a unit in the last place off its facet: the
+        # volumes may differ by the surface's area times that
+        p = plc.points[plc.triangles]
+        area = np.linalg.norm(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), axis=1).sum() / 2
+        slack = 1e-9 * reference + 4 * area * np.spacing(np.abs(plc.points).max())
+        assert abs(volumes.sum() - reference) <= slack, \
+            f"the tets fill another volume: {volumes.sum()!r} against {reference!r} (slack {slack:.3g})"
+    return result.status
+
+
 # ---- runners -----------------------------------------------------------------------------------------------
 
 
@@ -303,6 +358,20 @@ def run_3d(examples: int, seed: int | None = None, outcomes: dict | None = None)
     (prop if seed is None else hypothesis_seed(seed)(prop))()
 
 
+def run_quality_3d(examples: int, seed: int | None = None, outcomes: dict | None = None) -> None:
+    """``examples`` random small PLCs through the 3D quality pass (a volume bound of 1/5..1/50 of the
+    bounding box, with or without R = 2); as :func:`run_2d`."""
+    outcomes = {} if outcomes is None else outcomes
+
+    @_settings(examples, seed)
+    @given(plcs, st.sampled_from((0.2, 0.05, 0.02)), st.sampled_from((None, 2.0)))
+    def prop(plc, volume_fraction, radius_edge):
+        status = check_quality_3d(plc, volume_fraction, radius_edge)
+        outcomes[status] = outcomes.get(status, 0) + 1
+
+    (prop if seed is None else hypothesis_seed(seed)(prop))()
+
+
 def _settings(examples: int, seed: int | None) -> settings:
     return settings(max_examples=examples, deadline=DEADLINE_MS, derandomize=seed is None, database=None,
                     suppress_health_check=[HealthCheck.too_slow, HealthCheck.filter_too_much])
@@ -312,10 +381,11 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--minutes", type=float, default=5.0, help="run time (default 5)")
     parser.add_argument("--seed", type=int, default=0, help="first seed; each round takes the next")
-    parser.add_argument("--dims", default="2,3", help="2, 3 or 2,3 (default)")
+    parser.add_argument("--dims", default="2,3", help="2, 3 (the Gabriel repair), 3q (the 3D quality pass) "
+                        "or a comma-separated list (default 2,3)")
     parser.add_argument("--examples", type=int, default=200, help="examples per round (default 200)")
     args = parser.parse_args(argv)
-    runners = {"2": run_2d, "3": run_3d}
+    runners = {"2": run_2d, "3": run_3d, "3q": run_quality_3d}
     dims = args.dims.split(",")
     end = time.monotonic() + 60 * args.minutes
     failures, seed = 0, args.seed
@@ -328,6 +398,8 @@ def main(argv: list[str] | None = None) -> int:
             except Exception as e:  # a failure: hypothesis printed the shrunk input; keep fuzzing
                 failures += 1
                 print(f"FAILURE {d}D seed {seed}: {type(e).__name__}: {e}", flush=True)
+                for note in getattr(e, "__notes__", []):  # hypothesis's falsifying example
+                    print(note, flush=True)
             print(f"{d}D seed {seed}: outcomes so far {outcomes[d]}", flush=True)
         seed += 1
     print(f"{failures} failure(s) in {seed - args.seed} round(s)")

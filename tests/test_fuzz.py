@@ -5,11 +5,15 @@ The long mode: ``python experiments/fuzz.py --minutes N``."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from experiments import fuzz
 
+from mesh3d_shapes import CUBE_POINTS, CUBE_TRIANGLES
 from nonobtuse import Domain
+from nonobtuse.mesh3d import PLC
 
 
 def test_fuzz_2d_short():
@@ -23,6 +27,32 @@ def test_fuzz_3d_short():
     outcomes: dict[str, int] = {}
     fuzz.run_3d(examples=8, outcomes=outcomes)
     assert outcomes.get("converged", 0) >= 1, outcomes
+
+
+def test_fuzz_3d_quality_short():
+    outcomes: dict[str, int] = {}
+    fuzz.run_quality_3d(examples=6, outcomes=outcomes)
+    assert outcomes.get("converged", 0) >= 1, outcomes
+
+
+def test_the_quality_check_refuses_a_mesh_that_lies(monkeypatch):
+    # The unit cube with a volume bound of 0.05: a run made for a bound 100 times larger that claims to meet
+    # this one, and a mesh that lost a tet, must both be caught.
+    cube = PLC(CUBE_POINTS.copy(), CUBE_TRIANGLES.copy(), np.tile(np.arange(6), 2))  # a quad is two rows
+    real = fuzz.refine_quality3d
+
+    def loose(plc, max_volume, **kw):
+        return real(plc, max_volume=100 * max_volume, **kw)
+
+    def lost_a_tet(plc, **kw):
+        r = real(plc, **kw)
+        r.mesh = replace(r.mesh, tets=r.mesh.tets[:-1])
+        return r
+
+    for lie, message in ((loose, "over the volume bound"), (lost_a_tet, "another volume")):
+        monkeypatch.setattr(fuzz, "refine_quality3d", lie)
+        with pytest.raises(AssertionError, match=message):
+            fuzz.check_quality_3d(cube, 0.05, None)
 
 
 def test_the_3d_oracle_sees_an_encroached_facet_and_segment():
