@@ -247,23 +247,61 @@ def _cross(a, b):
     return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
 
 
-def gabriel_violations(points: np.ndarray, faces: np.ndarray, segments: np.ndarray) -> int:
+def gabriel_violations(points: np.ndarray, faces: np.ndarray, segments: np.ndarray,
+                       every_point: bool = False) -> int:
     """Boundary subfacets and subsegments with a vertex of ``points`` strictly inside their diametral sphere,
     decided exactly in integers. For a triangle a, b, c (u = b - a, v = c - a, n = u x v) the sphere's centre
     is a + w / (2 |n|^2) with w = (|u|^2 v - |v|^2 u) x n, so the power of p is
     (|p - a|^2 |n|^2 - (p - a).w) / |n|^2: p is inside iff |p - a|^2 |n|^2 < (p - a).w. For a segment a, b:
-    (p - a).(p - b) < 0. Cost: O((f + k) n) big-integer operations: for small meshes only."""
+    (p - a).(p - b) < 0. The points tested for each sphere are those a k-d tree finds within its
+    floating-point radius plus 1e-3 of it and the coordinates' rounding (:func:`_sphere_candidates`), every
+    point for a triangle with an angle below 1e-8 radians, or with ``every_point``; the decision is the
+    integer test. Cost: O(n log n + (f + k) m) big-integer operations for m candidates per sphere (testing
+    every point took 447 s for 2,000 points and 4,000 faces shifted to 1e3)."""
     q = _integer_grid(points)
+    pts = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+    faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+    segments = np.asarray(segments, dtype=np.int64).reshape(-1, 2)
+    candidates = ([range(len(q))] * (len(faces) + len(segments)) if every_point
+                  else _sphere_candidates(pts, faces, segments))
     bad = 0
-    for a, b, c in np.asarray(faces).tolist():
+    for (a, b, c), near in zip(faces.tolist(), candidates):
         u, v = _sub(q[b], q[a]), _sub(q[c], q[a])
         n = _cross(u, v)
         nn = _dot(n, n)
         w = _cross(tuple(_dot(u, u) * v[i] - _dot(v, v) * u[i] for i in range(3)), n)
-        bad += any(_dot(d := _sub(p, q[a]), d) * nn < _dot(d, w) for p in q)
-    for a, b in np.asarray(segments).tolist():
-        bad += any(_dot(_sub(p, q[a]), _sub(p, q[b])) < 0 for p in q)
+        bad += any(_dot(d := _sub(q[p], q[a]), d) * nn < _dot(d, w) for p in near)
+    for (a, b), near in zip(segments.tolist(), candidates[len(faces):]):
+        bad += any(_dot(_sub(q[p], q[a]), _sub(q[p], q[b])) < 0 for p in near)
     return bad
+
+
+def _sphere_candidates(pts: np.ndarray, faces: np.ndarray, segments: np.ndarray) -> list:
+    """Per face, then per segment, the indices of the points within its diametral sphere in floating point,
+    widened by 1e-3 of the radius and 8 units in the last place of the largest coordinate; every point for a
+    face with an angle below 1e-8 radians (its floating-point centre is not to be trusted)."""
+    from scipy.spatial import cKDTree
+
+    if not len(pts):
+        return [[] for _ in range(len(faces) + len(segments))]
+    a, b, c = (pts[faces[:, i]] for i in range(3))
+    u, v = b - a, c - a
+    n = np.cross(u, v)
+    nn = np.einsum("ij,ij->i", n, n)
+    uu, vv = np.einsum("ij,ij->i", u, u), np.einsum("ij,ij->i", v, v)
+    w = np.cross(uu[:, None] * v - vv[:, None] * u, n)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        offset = w / (2 * nn[:, None])
+    flat = ~(nn > 1e-16 * uu * vv) | ~np.isfinite(offset).all(axis=1)  # sin^2 of the angle at a below 1e-16
+    ww = np.einsum("ij,ij->i", u - v, u - v)
+    flat |= ~(nn > 1e-16 * uu * ww) | ~(nn > 1e-16 * vv * ww)
+    centers = np.concatenate([a + np.where(flat[:, None], 0.0, offset),
+                              (pts[segments[:, 0]] + pts[segments[:, 1]]) / 2])
+    radii = np.concatenate([np.linalg.norm(np.where(flat[:, None], 0.0, offset), axis=1),
+                            np.linalg.norm(pts[segments[:, 1]] - pts[segments[:, 0]], axis=1) / 2])
+    near = cKDTree(pts).query_ball_point(centers, radii * (1 + 1e-3) + 8 * np.spacing(np.abs(pts).max()))
+    everything = list(range(len(pts)))
+    return [everything if i < len(faces) and flat[i] else near[i] for i in range(len(centers))]
 
 
 def check_refine_3d(plc: PLC) -> str:

@@ -70,6 +70,20 @@ def test_the_3d_oracle_sees_an_encroached_facet_and_segment():
     assert fuzz.gabriel_violations(pts, faces[:1], edges[3:4]) == 0
 
 
+@pytest.mark.parametrize("scale, shift", [(1.0, 0.0), (1e-4, 1e3), (1e5, -1e6)])
+def test_the_3d_oracle_finds_what_testing_every_point_finds(scale, shift):
+    # Random triangles and segments among random points (many encroached, some nearly flat triangles): the
+    # candidates of the k-d tree must not miss a point the integer test over every point finds.
+    rng = np.random.default_rng(7)
+    points = rng.uniform(-1, 1, (80, 3))
+    points[70:] = points[60:70] + 1e-9 * rng.uniform(-1, 1, (10, 3))  # near-duplicates: skinny triangles
+    points = points * scale + shift
+    faces = np.array([rng.choice(80, 3, replace=False) for _ in range(60)] + [[60, 70, 0], [61, 71, 1]])
+    segments = np.array([rng.choice(80, 2, replace=False) for _ in range(30)])
+    brute = fuzz.gabriel_violations(points, faces, segments, every_point=True)
+    assert fuzz.gabriel_violations(points, faces, segments) == brute > 20
+
+
 def test_the_2d_check_refuses_a_mesh_that_lies(monkeypatch):
     # A refinement that claims convergence on the obtuse triangle (0,0), (4,0), (2,1) (the apex angle is
     # 126.87 degrees) without adding a point: the exact re-check must catch it.
