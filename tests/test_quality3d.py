@@ -6,6 +6,7 @@ from __future__ import annotations
 import importlib.util
 import json
 import math
+import warnings
 from fractions import Fraction
 from pathlib import Path
 
@@ -453,6 +454,16 @@ def test_joint_converges_under_the_small_angle_rule():
     assert (ratio[outside] <= 2.0).all() and (volumes[outside] <= volume).all()
     assert flat.sum() < 20
     assert 0 < len(r.small_angle_rows) == r.stats["small_angle_tets"] < len(ratio) // 20
+
+
+def test_a_tet_whose_circumcenter_is_beyond_the_double_range_gets_inf_quietly() -> None:
+    # the apex 1e-310 over the base plane: circumradius about 1e309; the exact route rounds it to inf (it
+    # raised OverflowError), and the floating-point overflow before it is no warning
+    points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0.3, 0.3, 1e-310]])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        centers, radius, volume = tet_circumspheres(points, np.array([[0, 1, 2, 3]]))
+    assert radius[0] == np.inf and np.isinf(centers[0]).any() and 0 < volume[0] < 1e-300
 
 
 def test_a_tet_flat_in_floating_point_gets_its_exact_circumsphere() -> None:

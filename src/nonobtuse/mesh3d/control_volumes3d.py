@@ -191,7 +191,7 @@ def exact_circumsphere(corners: np.ndarray) -> tuple[np.ndarray, float, float]:
         try:
             return float(x)
         except OverflowError:
-            return math.copysign(math.inf, x)
+            return math.inf if x > 0 else -math.inf  # copysign would convert x, and overflow again
 
     center = np.array([rounded(a[i] + offset[i]) for i in range(3)])
     return center, math.sqrt(rounded(dot(offset, offset))), float(det / 6)

@@ -28,7 +28,7 @@ def tet_circumspheres(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray,
     (``control_volumes3d.exact_circumsphere``), rounded: a tet flat in floating point gets its true ratio,
     never NaN (the rule of ``tet_shape`` in cpp/src/quality3d_shape.cpp, so both measures agree)."""
     p = points[tets]
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # those rows are recomputed below
         centers = tet_circumcenters(p[:, 0], p[:, 1], p[:, 2], p[:, 3])
         radius = np.sqrt(((centers - p[:, 0]) ** 2).sum(1))
     edges = p[:, 1:] - p[:, :1]
