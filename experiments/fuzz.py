@@ -56,7 +56,7 @@ STATUSES_3D = ("converged", "budget_exhausted", "min_length_reached", "stalled")
 MAX_STEINER_2D = 3000
 MAX_STEINER_3D, TIME_LIMIT_3D = 3000, 10.0
 QUALITY_STATUSES_3D = ("converged", "quality_blocked", "budget_exhausted", "min_length_reached", "stalled")
-MAX_POINTS_QUALITY_3D = 1000  # interior points: the exact re-check is quadratic in big integers
+MAX_POINTS_QUALITY_3D = 1000  # interior points: the exact re-check is in big integers
 # A hang is a failure; one example takes milliseconds (2D) to seconds (3D), on a machine shared with others.
 DEADLINE_MS = 60_000
 
@@ -295,9 +295,9 @@ def _sphere_candidates(pts: np.ndarray, faces: np.ndarray, segments: np.ndarray)
     flat = ~(nn > 1e-16 * uu * vv) | ~np.isfinite(offset).all(axis=1)  # sin^2 of the angle at a below 1e-16
     ww = np.einsum("ij,ij->i", u - v, u - v)
     flat |= ~(nn > 1e-16 * uu * ww) | ~(nn > 1e-16 * vv * ww)
-    centers = np.concatenate([a + np.where(flat[:, None], 0.0, offset),
-                              (pts[segments[:, 0]] + pts[segments[:, 1]]) / 2])
-    radii = np.concatenate([np.linalg.norm(np.where(flat[:, None], 0.0, offset), axis=1),
+    offset[flat] = 0.0  # those test every point
+    centers = np.concatenate([a + offset, (pts[segments[:, 0]] + pts[segments[:, 1]]) / 2])
+    radii = np.concatenate([np.linalg.norm(offset, axis=1),
                             np.linalg.norm(pts[segments[:, 1]] - pts[segments[:, 0]], axis=1) / 2])
     near = cKDTree(pts).query_ball_point(centers, radii * (1 + 1e-3) + 8 * np.spacing(np.abs(pts).max()))
     everything = list(range(len(pts)))
@@ -323,10 +323,10 @@ def tet_volumes_and_ratios(points: np.ndarray, tets: np.ndarray) -> tuple[np.nda
     p = points[np.asarray(tets, dtype=np.int64).reshape(-1, 4)]
     u, v, w = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0], p[:, 3] - p[:, 0]
     det = np.einsum("ij,ij->i", u, np.cross(v, w))
-    center = (np.einsum("ij,ij->i", u, u)[:, None] * np.cross(v, w) + np.einsum("ij,ij->i", v, v)[:, None]
-              * np.cross(w, u) + np.einsum("ij,ij->i", w, w)[:, None] * np.cross(u, v)) / (2 * det[:, None])
     edges = [np.linalg.norm(p[:, i] - p[:, j], axis=1) for i in range(4) for j in range(i + 1, 4)]
-    with np.errstate(divide="ignore", invalid="ignore"):
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # a flat tet's ratio is inf or NaN
+        uu, vv, ww = (np.einsum("ij,ij->i", x, x)[:, None] for x in (u, v, w))
+        center = (uu * np.cross(v, w) + vv * np.cross(w, u) + ww * np.cross(u, v)) / (2 * det[:, None])
         return np.abs(det) / 6, np.linalg.norm(center, axis=1) / np.min(edges, axis=0)
 
 
