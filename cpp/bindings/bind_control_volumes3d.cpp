@@ -34,6 +34,22 @@ void bind_control_volumes3d(py::module_& m) {
       "(-1, 0, +1), dual_areas (E,) float64 (exact sign times the float magnitude), lengths (E,) float64,\n"
       "volumes (n,) float64, exact_evaluations (int: edges the interval filter left to exact arithmetic),\n"
       "flat_in_floating_point (int: tets flat in doubles, whose circumcenters are exact, rounded).");
+  m.def(
+      "exact_tet_circumspheres",
+      [](const DoubleArray& points, const IndexArray& tets) {
+        std::vector<Point3> p = to_points3(points);
+        std::vector<std::array<int, 4>> t = to_index_rows<4>(tets, p.size(), "tets");
+        TetCircumspheres r;
+        {
+          py::gil_scoped_release release;
+          r = exact_tet_circumspheres(p, t);
+        }
+        return py::make_tuple(from_points3(r.centers), from_vector(r.squared_radii), from_vector(r.volumes));
+      },
+      py::arg("points"), py::arg("tets"),
+      "Circumcenters (t,3), squared circumradii (t,) and signed volumes (t,) of tets (t,4) int64 over points\n"
+      "(n,3) float64, each computed exactly and rounded to nearest (ties to even); +-inf beyond the double range;\n"
+      "a coplanar tet: center and squared radius inf, volume 0.");
 }
 
 }  // namespace nonobtuse::bindings

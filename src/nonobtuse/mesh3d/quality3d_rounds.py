@@ -15,7 +15,7 @@ from scipy.spatial import cKDTree
 
 from nonobtuse import _core
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.mesh3d.control_volumes3d import exact_circumsphere, tet_circumcenters
+from nonobtuse.mesh3d.control_volumes3d import exact_circumspheres, tet_circumcenters
 from nonobtuse.mesh3d.gabriel import refine_gabriel
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 
@@ -25,7 +25,7 @@ def tet_circumspheres(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray,
     and volumes (t,) of tets (t, 4) int64 over points (n, 3) float64 (positively oriented tets give positive
     volumes). Floating point where the orientation determinant is at least 2^-20 L^3 (L the longest edge from
     the first corner: its rounding error is then below 2^-30 of it), else exact
-    (``control_volumes3d.exact_circumsphere``), rounded: a tet flat in floating point gets its true ratio,
+    (``control_volumes3d.exact_circumspheres``), rounded: a tet flat in floating point gets its true ratio,
     never NaN (the rule of ``tet_shape`` in cpp/src/quality3d_shape.cpp, so both measures agree)."""
     p = points[tets]
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # those rows are recomputed below
@@ -35,8 +35,8 @@ def tet_circumspheres(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray,
     det = np.einsum("ij,ij->i", edges[:, 0], np.cross(edges[:, 1], edges[:, 2]))
     volume = det / 6.0  # as signed_tet_volumes
     longest = np.sqrt((edges**2).sum(2).max(1))
-    for row in np.flatnonzero(~(np.abs(det) >= 2.0**-20 * (longest * longest * longest))):
-        centers[row], radius[row], volume[row] = exact_circumsphere(p[row])
+    rows = np.flatnonzero(~(np.abs(det) >= 2.0**-20 * (longest * longest * longest)))
+    centers[rows], radius[rows], volume[rows] = exact_circumspheres(points, tets[rows])
     return centers, radius, volume
 
 
