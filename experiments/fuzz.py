@@ -10,7 +10,8 @@ and every converged output is re-checked here, independently of the C++ certific
   subfacet or subsegment (:func:`gabriel_violations`, integer arithmetic on the stored doubles).
 - 3D quality (:func:`check_quality_3d`, ``refine_quality3d`` with a volume bound and maybe a radius-edge
   bound, from the input boundary): the same exact re-check, the input points kept, every tet not left alone
-  near small angles within the bounds (numpy), and the tets fill the volume of ``refine_gabriel``'s mesh.
+  near small angles within the bounds (numpy), and the tets fill the volume the input encloses (exact, by the
+  divergence theorem; with internal facets, the volume of ``refine_gabriel``'s mesh).
 
 Inputs (:func:`domains`, :func:`plcs`): star-shaped polygons with near-collinear vertices, tiny angles, points
 a relative 1e-3..1e-15 off a segment, interior points, a hole or radial interfaces; stacks of thin layers
@@ -330,14 +331,27 @@ def tet_volumes_and_ratios(points: np.ndarray, tets: np.ndarray) -> tuple[np.nda
         return np.abs(det) / 6, np.linalg.norm(center, axis=1) / np.min(edges, axis=0)
 
 
+def enclosed_volume(plc: PLC) -> float | None:
+    """The volume plc's triangles enclose, exactly (the divergence theorem in rationals, rounded), where they
+    form closed consistently oriented surfaces (each directed edge once, its reverse once: the hulls, and
+    families without internal facets); else None."""
+    triangles = np.asarray(plc.triangles, dtype=np.int64).reshape(-1, 3)
+    directed = set(map(tuple, triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2).tolist()))
+    if len(directed) != 3 * len(triangles) or any((b, a) not in directed for a, b in directed):
+        return None
+    q = [[Fraction(x) for x in row] for row in np.asarray(plc.points, dtype=np.float64).tolist()]
+    total = sum((_dot(q[a], _cross(q[b], q[c])) for a, b, c in triangles.tolist()), Fraction(0))
+    return abs(float(total / 6))
+
+
 def check_quality_3d(plc: PLC, volume_fraction: float, radius_edge: float | None) -> str:
     """refine_quality3d of ``plc`` (the default start, the input boundary) with the volume bound
     ``volume_fraction`` times its bounding box's volume and ``radius_edge``, with hard limits; returns the
     status. Raises AssertionError when the run ends otherwise than with a status, or a converged mesh fails
     the exact re-check, moved an input point, leaves a tet over a bound that the small-angle rule did not
-    leave (1e-9 relative slack for the two measures' roundings), or fills another volume than
-    refine_gabriel's certified mesh of the same input (beyond 1e-9 relative and the roundings of boundary
-    points off their facets)."""
+    leave (1e-9 relative slack for the two measures' roundings), or fills another volume than the input
+    encloses (:func:`enclosed_volume`; with internal facets, refine_gabriel's certified mesh of the same
+    input) beyond 1e-9 relative and the roundings of boundary points off their facets."""
     bound = volume_fraction * float(np.prod(np.ptp(plc.points, axis=0)))  # > 0: each PLC made has a volume
     result = refine_quality3d(plc, max_volume=bound, radius_edge=radius_edge,
                               max_points=MAX_POINTS_QUALITY_3D, time_limit=TIME_LIMIT_3D,
@@ -353,9 +367,12 @@ def check_quality_3d(plc: PLC, volume_fraction: float, radius_edge: float | None
     assert (volumes[kept] <= bound * (1 + 1e-9)).all(), "converged, a tet over the volume bound"
     if radius_edge is not None:
         assert (ratios[kept] <= radius_edge * (1 + 1e-9)).all(), "converged, a tet over the radius-edge bound"
-    repaired = refine_gabriel(plc, max_steiner=MAX_STEINER_3D, time_limit=TIME_LIMIT_3D)
-    if repaired.status == "converged":
-        reference = tet_volumes_and_ratios(repaired.mesh.points, repaired.mesh.tets)[0].sum()
+    reference = enclosed_volume(plc)
+    if reference is None:  # internal facets: refine_gabriel's certified mesh, when it converges
+        repaired = refine_gabriel(plc, max_steiner=MAX_STEINER_3D, time_limit=TIME_LIMIT_3D)
+        if repaired.status == "converged":
+            reference = tet_volumes_and_ratios(repaired.mesh.points, repaired.mesh.tets)[0].sum()
+    if reference is not None:
         # a boundary point rounded to doubles lies up to half a unit in the last place off its facet: the
         # volumes may differ by the surface's area times that
         p = plc.points[plc.triangles]

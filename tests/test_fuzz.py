@@ -55,6 +55,18 @@ def test_the_quality_check_refuses_a_mesh_that_lies(monkeypatch):
             fuzz.check_quality_3d(cube, 0.05, None)
 
 
+def test_the_enclosed_volume_is_exact_and_only_for_closed_oriented_surfaces():
+    # the unit cube scaled by 3 and shifted by 1e6 (exact in doubles): 27; one triangle flipped, or a cube's
+    # triangles twice (an edge used four times): no volume
+    cube = PLC(3 * CUBE_POINTS + 1e6, CUBE_TRIANGLES.copy(), np.tile(np.arange(6), 2))
+    assert fuzz.enclosed_volume(cube) == 27.0
+    flipped = CUBE_TRIANGLES.copy()
+    flipped[0] = flipped[0, ::-1]
+    assert fuzz.enclosed_volume(replace(cube, triangles=flipped)) is None
+    twice = np.vstack([CUBE_TRIANGLES, CUBE_TRIANGLES])
+    assert fuzz.enclosed_volume(replace(cube, triangles=twice, facet_ids=np.arange(24) % 6)) is None
+
+
 def test_the_3d_oracle_sees_an_encroached_facet_and_segment():
     # The low tet: the apex (1, 1, 2) is at distance sqrt(6) < 2 sqrt(2) from the circumcentre (2, 2, 0) of
     # the base (0,0,0), (4,0,0), (0,4,0): inside the base's diametral sphere. The base edge (4,0,0)-(0,4,0)

@@ -14,6 +14,7 @@ from nonobtuse import _core
 from nonobtuse.mesh3d import TetMesh, control_volumes3d
 from nonobtuse.mesh3d.control_volumes3d import (
     dual_area_pieces,
+    exact_circumspheres,
     signed_tet_volumes,
     tet_circumcenters,
     tet_voronoi_shares,
@@ -224,3 +225,50 @@ def test_exact_signs_are_those_of_the_definition_in_rationals(coords):
     points, tets, cv = delaunay_control_volumes(coords)
     want = exact_dual_area_signs(points, tets)
     assert {tuple(e): int(s) for e, s in zip(cv.edges.tolist(), cv.signs)} == want
+
+
+def _rounded(x: Fraction) -> float:
+    """The double nearest to x, inf beyond the range (Python's float(Fraction) raises there)."""
+    try:
+        return float(x)
+    except OverflowError:
+        return float("inf") if x > 0 else float("-inf")
+
+
+@settings(derandomize=True, deadline=None, max_examples=100)
+@given(st.lists(st.floats(-1, 1), min_size=9, max_size=9), st.floats(0, 1), st.floats(0, 1),
+       st.one_of(st.integers(0, 320), st.integers(300, 340)), st.booleans(), st.integers(-30, 30),
+       st.sampled_from([0.0, 0.0, 0.1, 1e3]))
+def test_exact_circumspheres_round_the_rational_values_to_nearest(base, s, t, flat, level, scale, shift):
+    # a base triangle scaled by 10^scale, the apex above a point of its plane by 10^-flat of that (coplanar
+    # once rounded for many), or with `level` the base in the plane z = 0 and the apex at that height
+    # (circumradii up to 1e340 of the scale: beyond the double range), then shifted: center, radius^2 and
+    # volume must be the rationals' values rounded to nearest, inf beyond the range
+    a, b, c = (np.array(base[i:i + 3]) * 10.0**scale for i in range(0, 9, 3))
+    if level:
+        a[2] = b[2] = c[2] = 0.0
+    normal = np.cross(b - a, c - a)
+    assume(np.linalg.norm(normal) > 1e-3 * 10.0 ** (2 * scale))
+    foot = a + s * (b - a) + t * (c - a)
+    up = np.array([0, 0, 1.0]) if level else normal / np.linalg.norm(normal)
+    apex = (np.array([*foot[:2], 0.0]) if level else foot) + 10.0 ** (scale - flat) * up
+    points = np.array([a, b, c, apex]) + shift
+    centers, radius, volume = exact_circumspheres(points, np.array([[0, 1, 2, 3]]))
+    q = [[Fraction(float(x)) for x in row] for row in points]
+    u, v, w = ([q[k][i] - q[0][i] for i in range(3)] for k in (1, 2, 3))
+
+    def cross(x, y):
+        return [x[1] * y[2] - x[2] * y[1], x[2] * y[0] - x[0] * y[2], x[0] * y[1] - x[1] * y[0]]
+
+    def dot(x, y):
+        return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]
+
+    det = dot(u, cross(v, w))
+    if det == 0:
+        assert np.isinf(centers[0]).all() and radius[0] == np.inf and volume[0] == 0
+        return
+    vw, wu, uv = cross(v, w), cross(w, u), cross(u, v)
+    offset = [(dot(u, u) * vw[i] + dot(v, v) * wu[i] + dot(w, w) * uv[i]) / (2 * det) for i in range(3)]
+    assert centers[0].tolist() == [_rounded(q[0][i] + offset[i]) for i in range(3)]
+    assert radius[0] == np.sqrt(_rounded(dot(offset, offset)))
+    assert volume[0] == _rounded(det / 6)

@@ -191,6 +191,18 @@ def test_budget_and_unrepaired_boundary_are_statuses():
     assert r.status == "budget_exhausted" and r.stats["rounds"] == 0
 
 
+def test_a_pass_that_cascades_stops_at_its_boundary_budget():
+    # Schonhardt's prism from its boundary: the pass's boundary splits cascade down its small angles; they
+    # stop at 8 times the boundary's points plus 2,000 (before: the repair's max_steiner, 40,240 points and
+    # 8 s here for the same unconverged result)
+    plc = load_plc(DATA3D / "schonhardt.off")
+    volume = 1e-3 * float(np.prod(np.ptp(plc.points, axis=0)))
+    r = refine_quality3d(plc, max_volume=volume, radius_edge=2.0)
+    boundary = len(plc.points) + r.stats["boundary_repair"]["steiner_points"]
+    assert r.status != "converged" and r.stats["rounds"] == 1
+    assert 8 * boundary + 2000 >= r.stats["boundary_points_by_passes"] > 8 * boundary
+
+
 @needs_tetgen
 def test_the_repair_of_tetgens_surface_stops_at_its_steiner_budget():
     # icosphere_jitter: the budget is not reached, the mesh is the one refine_gabriel gives without it

@@ -5,18 +5,24 @@
 #include "nonobtuse/control_volumes3d.h"
 
 namespace nonobtuse::bindings {
+namespace {
+
+// f(points, tets) on the converted arrays (the tets' indices checked against the points), the GIL released.
+template <class F>
+auto on_tets(const DoubleArray& points, const IndexArray& tets, F f) {
+  std::vector<Point3> p = to_points3(points);
+  std::vector<std::array<int, 4>> t = to_index_rows<4>(tets, p.size(), "tets");
+  py::gil_scoped_release release;
+  return f(p, t);
+}
+
+}  // namespace
 
 void bind_control_volumes3d(py::module_& m) {
   m.def(
       "control_volumes3d",
       [](const DoubleArray& points, const IndexArray& tets) {
-        std::vector<Point3> p = to_points3(points);
-        std::vector<std::array<int, 4>> t = to_index_rows<4>(tets, p.size(), "tets");
-        ControlVolumes3D r;
-        {
-          py::gil_scoped_release release;
-          r = control_volumes3d(p, t);
-        }
+        const ControlVolumes3D r = on_tets(points, tets, control_volumes3d);
         py::dict d;
         d["edges"] = from_index_rows(r.edges);
         d["sign"] = from_vector(std::vector<std::int8_t>(r.signs.begin(), r.signs.end()));
@@ -34,6 +40,16 @@ void bind_control_volumes3d(py::module_& m) {
       "(-1, 0, +1), dual_areas (E,) float64 (exact sign times the float magnitude), lengths (E,) float64,\n"
       "volumes (n,) float64, exact_evaluations (int: edges the interval filter left to exact arithmetic),\n"
       "flat_in_floating_point (int: tets flat in doubles, whose circumcenters are exact, rounded).");
+  m.def(
+      "exact_tet_circumspheres",
+      [](const DoubleArray& points, const IndexArray& tets) {
+        const TetCircumspheres r = on_tets(points, tets, exact_tet_circumspheres);
+        return py::make_tuple(from_points3(r.centers), from_vector(r.squared_radii), from_vector(r.volumes));
+      },
+      py::arg("points"), py::arg("tets"),
+      "Circumcenters (t,3), squared circumradii (t,) and signed volumes (t,) of tets (t,4) int64 over points\n"
+      "(n,3) float64, each computed exactly and rounded to nearest (ties to even); +-inf beyond the double range;\n"
+      "a coplanar tet: center and squared radius inf, volume 0.");
 }
 
 }  // namespace nonobtuse::bindings

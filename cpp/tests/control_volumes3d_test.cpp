@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 namespace nonobtuse {
 namespace {
@@ -79,6 +80,40 @@ TEST(ControlVolumes3D, FarFromTheOriginTheSignsAreUnchanged) {
   auto far = control_volumes3d(p, tets);
   EXPECT_EQ(near.signs, far.signs);
   EXPECT_EQ(near.edges, far.edges);
+}
+
+TEST(ExactTetCircumspheres, RoundsEachNumberFromItsExactValue) {
+  // The corner tet: center (1/2, 1/2, 1/2), squared radius 3/4 (exact in doubles), volume 1/6 (rounded: the double
+  // nearest to 1/6 is 1.0 / 6.0, a correctly rounded division). Then the same corner with the apex 1e-310 over
+  // the base plane instead of 1 (circumradius about 1e309: beyond the double range) and a coplanar tet.
+  std::vector<Point3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.3, 0.3, 1e-310}, {1, 1, 0}};
+  const auto r = exact_tet_circumspheres(p, {{0, 1, 2, 3}, {0, 1, 2, 4}, {0, 1, 2, 5}});
+  EXPECT_EQ(r.centers[0].x, 0.5);
+  EXPECT_EQ(r.centers[0].y, 0.5);
+  EXPECT_EQ(r.centers[0].z, 0.5);
+  EXPECT_EQ(r.squared_radii[0], 0.75);
+  EXPECT_EQ(r.volumes[0], 1.0 / 6.0);
+  EXPECT_EQ(r.squared_radii[1], std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(std::isinf(r.centers[1].z));
+  EXPECT_GT(r.volumes[1], 0.0);
+  EXPECT_LT(r.volumes[1], 1e-310);
+  EXPECT_EQ(r.squared_radii[2], std::numeric_limits<double>::infinity());
+  EXPECT_EQ(r.volumes[2], 0.0);
+  EXPECT_THROW(exact_tet_circumspheres(p, {{0, 1, 2, 6}}), InvalidInput);
+}
+
+TEST(ExactTetCircumspheres, NearTheTopOfTheDoubleRangeRoundsToFiniteBelowAndInfAbove) {
+  // A tet with a corner on each axis at distance s from the origin has its circumcenter at (s/2, s/2, s/2) and
+  // squared radius 3 s^2 / 4: just below the largest double for the first s (finite, within 2^-50 of it), four
+  // times that for 2 s (inf, where the rounding stopped at the largest double before).
+  const double max = std::numeric_limits<double>::max();
+  const double s = std::sqrt(max) / std::sqrt(0.75) * (1 - 0x1p-52);
+  std::vector<Point3> p = {{0, 0, 0}, {s, 0, 0}, {0, s, 0}, {0, 0, s}, {2 * s, 0, 0}, {0, 2 * s, 0}, {0, 0, 2 * s}};
+  const auto r = exact_tet_circumspheres(p, {{0, 1, 2, 3}, {0, 4, 5, 6}});
+  EXPECT_TRUE(std::isfinite(r.squared_radii[0]));
+  EXPECT_GT(r.squared_radii[0], (1 - 0x1p-50) * max);
+  EXPECT_EQ(r.squared_radii[1], std::numeric_limits<double>::infinity());
+  EXPECT_EQ(r.centers[1].x, s);  // (2 s) / 2, exact
 }
 
 }  // namespace

@@ -39,4 +39,18 @@ struct ControlVolumes3D {
 // undecided edges only; the interval filter and the exact arithmetic run on two threads.
 ControlVolumes3D control_volumes3d(const std::vector<Point3>& points, const std::vector<std::array<int, 4>>& tets);
 
+// The circumspheres and signed volumes of tets, for tets flat or nearly so in floating point (the exact route of the
+// quality measures and of the Python control volumes): each number computed exactly (CGAL's exact kernel) and
+// rounded to the nearest double, ties to even (as Python's float of a Fraction); +-inf beyond the double range.
+// A coplanar tet gets +inf center coordinates and squared radius, and volume 0. volumes[t] is
+// (b - a) . ((c - a) x (d - a)) / 6 for tet abcd. tets: indices into points (InvalidInput when out of range).
+// Cost: exact arithmetic per tet (tens of microseconds each).
+struct TetCircumspheres {
+  std::vector<Point3> centers;
+  std::vector<double> squared_radii;
+  std::vector<double> volumes;
+};
+TetCircumspheres exact_tet_circumspheres(const std::vector<Point3>& points,
+                                         const std::vector<std::array<int, 4>>& tets);
+
 }  // namespace nonobtuse

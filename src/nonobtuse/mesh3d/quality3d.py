@@ -136,15 +136,16 @@ def refine_quality3d(
     subfacet is split until the boundary is Gabriel again, and the centers are tried again, until none is left
     or no split frees one). The termination arguments are at the split rules in
     ``cpp/src/quality3d_interior.cpp`` (insertion radii, radius_edge >= 2 as Shewchuk's; boundary splits
-    bounded by the repair's min_length and max_steiner). Tets near small input angles whose centers stay in
-    diametral spheres are left (stats["blocked_centers"], as TetGen counts the tets it skips). A round ends
-    with a boundary repair (refine_gabriel of the split boundary with the interior points) only when the
-    pass's tetrahedralization cannot hold its split boundary (cospherical points, or a split refused at
-    min_length: stats "boundary_rounds" counts the pass's own boundary steps); when the repaired surface is
-    not Delaunay to begin with (e.g. a cube's squares), the circumcenters of an independent set of bad tets
-    (no center in another's circumsphere) go through the repair (points strictly inside their tets for those
-    in a closed sphere). The loop is bounded by max_points, time_limit and the boundary repair's budget, and a
-    round that adds nothing ends it ("quality_blocked").
+    bounded by the repair's min_length and max_steiner, and per pass by 8 times the boundary's points plus
+    2,000, which cuts the cascades down small angles short: ``InteriorRefiner.interior_pass``). Tets near
+    small input angles whose centers stay in diametral spheres are left (stats["blocked_centers"], as TetGen
+    counts the tets it skips). A round ends with a boundary repair (refine_gabriel of the split boundary with
+    the interior points) only when the pass's tetrahedralization cannot hold its split boundary (cospherical
+    points, or a split refused at min_length: stats "boundary_rounds" counts the pass's own boundary steps);
+    when the repaired surface is not Delaunay to begin with (e.g. a cube's squares), the circumcenters of an
+    independent set of bad tets (no center in another's circumsphere) go through the repair (points strictly
+    inside their tets for those in a closed sphere). The loop is bounded by max_points, time_limit and the
+    boundary repair's budget, and a round that adds nothing ends it ("quality_blocked").
     Guarantee: report is the exact check_gabriel of the returned mesh; status "converged" needs it to pass and
     every tet within the bounds (measured in floating point). Deterministic.
     Cost: the interior pass, O(k log n) expected for k insertions, plus per boundary step O(f log n) exact
