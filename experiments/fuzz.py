@@ -319,8 +319,10 @@ def check_refine_3d(plc: PLC) -> str:
 
 
 def tet_volumes_and_ratios(points: np.ndarray, tets: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Each tet's volume and circumradius / shortest edge, in floating point (numpy, independently of the
-    module's measures)."""
+    """Each tet's volume and circumradius / shortest edge, independently of the module's measures: numpy,
+    and in rationals (rounded) for the tets too flat for floating point to tell (orientation determinant
+    below 1e-4 of the longest edge from the first corner cubed: sliver tets between boundary points rounded
+    off a facet, whose floating-point ratio can be off by a factor 4 or more)."""
     p = points[np.asarray(tets, dtype=np.int64).reshape(-1, 4)]
     u, v, w = p[:, 1] - p[:, 0], p[:, 2] - p[:, 0], p[:, 3] - p[:, 0]
     det = np.einsum("ij,ij->i", u, np.cross(v, w))
@@ -328,7 +330,25 @@ def tet_volumes_and_ratios(points: np.ndarray, tets: np.ndarray) -> tuple[np.nda
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # a flat tet's ratio is inf or NaN
         uu, vv, ww = (np.einsum("ij,ij->i", x, x)[:, None] for x in (u, v, w))
         center = (uu * np.cross(v, w) + vv * np.cross(w, u) + ww * np.cross(u, v)) / (2 * det[:, None])
-        return np.abs(det) / 6, np.linalg.norm(center, axis=1) / np.min(edges, axis=0)
+        volumes, ratios = np.abs(det) / 6, np.linalg.norm(center, axis=1) / np.min(edges, axis=0)
+        longest = np.sqrt(np.max([(x * x).sum(1) for x in (u, v, w)], axis=0))
+    for row in np.flatnonzero(~(np.abs(det) >= 1e-4 * longest**3)):
+        volumes[row], ratios[row] = _exact_volume_and_ratio(p[row])
+    return volumes, ratios
+
+
+def _exact_volume_and_ratio(corners: np.ndarray) -> tuple[float, float]:
+    """A tet's volume and circumradius / shortest edge computed in rationals, then rounded (inf when flat)."""
+    q = [tuple(Fraction(x) for x in row) for row in corners.tolist()]
+    u, v, w = (_sub(q[k], q[0]) for k in (1, 2, 3))
+    det = _dot(u, _cross(v, w))
+    shortest = min(_dot(_sub(q[i], q[j]), _sub(q[i], q[j])) for i in range(4) for j in range(i + 1, 4))
+    if det == 0 or shortest == 0:
+        return 0.0, math.inf
+    vw, wu, uv = _cross(v, w), _cross(w, u), _cross(u, v)
+    offset = [(_dot(u, u) * vw[i] + _dot(v, v) * wu[i] + _dot(w, w) * uv[i]) / (2 * det) for i in range(3)]
+    ratio2 = _dot(offset, offset) / shortest
+    return abs(float(det / 6)), math.sqrt(float(ratio2)) if ratio2 < 2**1000 else math.inf
 
 
 def enclosed_volume(plc: PLC) -> float | None:
@@ -453,8 +473,12 @@ def main(argv: list[str] | None = None) -> int:
             except Exception as e:  # a failure: hypothesis printed the shrunk input; keep fuzzing
                 failures += 1
                 print(f"FAILURE {d}D seed {seed}: {type(e).__name__}: {e}", flush=True)
-                for note in getattr(e, "__notes__", []):  # hypothesis's falsifying example
-                    print(note, flush=True)
+                # hypothesis's falsifying example(s): several distinct failures come as an ExceptionGroup
+                for one in e.exceptions if isinstance(e, ExceptionGroup) else [e]:
+                    if one is not e:
+                        print(f"  {type(one).__name__}: {one}", flush=True)
+                    for note in getattr(one, "__notes__", []):
+                        print(note, flush=True)
             print(f"{d}D seed {seed}: outcomes so far {outcomes[d]}", flush=True)
         seed += 1
     print(f"{failures} failure(s) in {seed - args.seed} round(s)")

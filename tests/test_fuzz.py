@@ -10,6 +10,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 from experiments import fuzz
+from experiments.plc_families import make_plc
 
 from mesh3d_shapes import CUBE_POINTS, CUBE_TRIANGLES
 from nonobtuse import Domain
@@ -53,6 +54,20 @@ def test_the_quality_check_refuses_a_mesh_that_lies(monkeypatch):
         monkeypatch.setattr(fuzz, "refine_quality3d", lie)
         with pytest.raises(AssertionError, match=message):
             fuzz.check_quality_3d(cube, 0.05, None)
+
+
+def test_the_quality_check_measures_flat_tets_exactly():
+    # a rectangle p0, p0 + u, p0 + v, p0 + u + v (u . v = 0) in a tilted plane, its corners rounded off the
+    # plane: floating point gets the ratio wrong; the circumcenter is the rectangle's center, so the ratio is
+    # sqrt(|u|^2 + |v|^2) / (2 |v|) (|v| < |u|)
+    p0, u, v = np.array([0.1, 0.7, 0.3]), np.array([0.1, 0.2, 0.3]), np.array([0.3, 0.0, -0.1])
+    corners = np.array([p0, p0 + u, p0 + v, p0 + u + v])
+    volumes, ratios = fuzz.tet_volumes_and_ratios(corners, np.array([[0, 1, 2, 3]]))
+    assert ratios[0] == pytest.approx(np.sqrt(u @ u + v @ v) / (2 * np.sqrt(v @ v)), rel=1e-9)
+    assert volumes[0] < 1e-17
+    # fuzz seed 160: spike(theta = 5, k = 5) at 0.2 of the box, R = 2, converges with a sliver between
+    # boundary points rounded off a side facet (volume 3.6e-21): floating-point ratio 4.07, exact 0.96
+    assert fuzz.check_quality_3d(make_plc("spike", 5.0, 5), 0.2, 2.0) == "converged"
 
 
 def test_the_enclosed_volume_is_exact_and_only_for_closed_oriented_surfaces():
