@@ -473,8 +473,8 @@ def main(argv: list[str] | None = None) -> int:
             except Exception as e:  # a failure: hypothesis printed the shrunk input; keep fuzzing
                 failures += 1
                 print(f"FAILURE {d}D seed {seed}: {type(e).__name__}: {e}", flush=True)
-                # hypothesis's falsifying example(s): several distinct failures come as an ExceptionGroup
-                for one in e.exceptions if isinstance(e, ExceptionGroup) else [e]:
+                # hypothesis's falsifying example(s): several distinct failures come as an exception group
+                for one in getattr(e, "exceptions", [e]):
                     if one is not e:
                         print(f"  {type(one).__name__}: {one}", flush=True)
                     for note in getattr(one, "__notes__", []):
