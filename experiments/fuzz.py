@@ -460,6 +460,7 @@ def main(argv: list[str] | None = None) -> int:
                         "or a comma-separated list (default 2,3)")
     parser.add_argument("--examples", type=int, default=200, help="examples per round (default 200)")
     args = parser.parse_args(argv)
+    np.set_printoptions(precision=17)  # the falsifying examples' arrays as they are, to reproduce them
     runners = {"2": run_2d, "3": run_3d, "3q": run_quality_3d}
     dims = args.dims.split(",")
     end = time.monotonic() + 60 * args.minutes

@@ -191,6 +191,26 @@ def test_budget_and_unrepaired_boundary_are_statuses():
     assert r.status == "budget_exhausted" and r.stats["rounds"] == 0
 
 
+def test_a_split_boundary_the_repair_refuses_ends_stalled_not_as_invalid_input():
+    # fuzz seed 182: a hull 1.4e-6 across at 1e6 (its coordinates about 1e4 units in the last place apart):
+    # the pass's boundary step leaves a subfacet whose rounded corners are collinear, which the repair's
+    # validation refused with InvalidInputError although the input is valid; now the pass's last certified
+    # mesh returns, "stalled", saying why
+    points = np.array([[999999.9999997879, 1e6, 999999.9999996463],
+                       [1000000.0000004342, 1000000.0000007206, 999999.9999998739],
+                       [999999.999999, 1e6, 999999.9999998547],
+                       [1e6, 1e6, 999999.9999997927],
+                       [999999.9999991417, 1e6, 1e6]])
+    triangles = np.array([[0, 1, 2], [0, 3, 1], [2, 1, 4], [1, 3, 4], [3, 0, 4], [4, 0, 2]])
+    segments = np.array([[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [1, 4], [2, 4], [3, 4]])
+    plc = PLC(points, triangles, np.array([0, 1, 2, 3, 4, 4]), segments)
+    volume = 0.05 * float(np.prod(np.ptp(points, axis=0)))
+    r = refine_quality3d(plc, max_volume=volume, radius_edge=2.0)
+    assert r.status == "stalled" and "cannot be repaired" in r.stats["last_repair"]
+    assert r.report.ok and check_gabriel(r.mesh).ok
+    assert np.array_equal(r.mesh.points[:5], points)
+
+
 def test_a_pass_that_cascades_stops_at_its_boundary_budget():
     # Schonhardt's prism from its boundary: the pass's boundary splits cascade down its small angles; they
     # stop at 8 times the boundary's points plus 2,000 (before: the repair's max_steiner, 40,240 points and

@@ -52,9 +52,10 @@ class Quality3DResult:
             point, but those left alone near small input angles), "quality_blocked" (certificate passes; a
             round could add nothing: the centers left lie on diametral spheres), "budget_exhausted"
             (max_points or time_limit), or the boundary repair's status when one did not converge
-            ("budget_exhausted", "min_length_reached", "stalled"): mesh is then the last interior pass's
-            on the last converged repair's boundary (certified) when there was one; stats["last_repair"]
-            says how the last repair ended.
+            ("budget_exhausted", "min_length_reached", "stalled"; "stalled" too where a pass's split
+            boundary has a triangle its rounded points make degenerate, which the repair refuses): mesh is
+            then the last interior pass's on the last converged repair's boundary (certified) when there was
+            one; stats["last_repair"] says how the last repair ended.
     stats:  boundary_points, interior_points, steiner_points (all points not in the input), tets,
             worst_radius_edge, max_volume, min_volume, radius_edge_over_2 (see :func:`tet_quality`), and the
             same with the suffix _outside_small_angles (over the tets not left alone), bad_tets (tets over a
@@ -213,7 +214,11 @@ def refine_quality3d(
                 status = "quality_blocked"
                 break
             interior = np.concatenate([interior, added])
-        repaired = refiner.repair(surface, interior)
+        try:
+            repaired = refiner.repair(surface, interior)
+        except InvalidInputError as e:  # the pass's split boundary, not the input: a split rounded degenerate
+            status, stop, mesh = "stalled", f"the split boundary cannot be repaired: {e}", grown
+            break
         if grown is mesh and len(repaired.mesh.points) == len(surface.points) + len(interior):
             status = "quality_blocked"  # nothing added: the centers left lie on spheres, which split nothing
             break
