@@ -6,6 +6,7 @@ checked to fill the PLC's volume (the signed volume of its outward triangles).
 
 from __future__ import annotations
 
+from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
@@ -194,3 +195,29 @@ def test_part_off_converges_through_the_protected_rerun():
     assert_certified(res, plc)
     assert res.stats["strategy"] == "shells+protected"
     assert res.stats["other_attempt"].startswith("shells: ")
+
+
+@pytest.mark.parametrize("split", ["protected", "mirrored"])
+def test_split_points_stay_on_their_facets_plane_on_a_sliver_far_from_the_origin(split):
+    # fuzz seed 206: a tet 1.4e-6 across and 7e-9 thick at 1000 (a unit in the last place: 1.1e-13). The
+    # collar rule moved a subfacet's circumcenter half a unit in the last place from a subsegment's midpoint
+    # along that noise onto the subsegment's sphere: boundary points 1.5e-8 (mirrored) and 5.3e-8 (protected)
+    # off their facet's plane, and a "converged" mesh enclosing 0.09% more than the input. Now within 1e-11
+    # (exact distances).
+    points = np.array([[999.9999998151209, 999.9999998556286, 1000.0],
+                       [1000.0000005918604, 1000.0, 1000.0000000001],
+                       [999.9999991640155, 999.9999990468925, 999.9999994687439],
+                       [999.9999999576048, 1000.0, 1000.0000000163817]])
+    triangles = np.array([[3, 1, 2], [2, 1, 0], [0, 3, 2], [1, 3, 0]])
+    segments = np.array([[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]])
+    r = refine_gabriel(PLC(points, triangles, np.arange(4), segments), split=split, max_steiner=3000)
+    q = [[Fraction(x) for x in row] for row in r.mesh.points.tolist()]
+    faces, facets = np.asarray(r.mesh.boundary_faces), np.asarray(r.mesh.face_facets)
+    for f, (a, b, c) in enumerate(triangles.tolist()):
+        u, v = ([q[k][i] - q[a][i] for i in range(3)] for k in (b, c))
+        n = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+        norm2 = sum(x * x for x in n)
+        for i in np.unique(faces[facets == f]).tolist():
+            height = sum((q[i][k] - q[a][k]) * n[k] for k in range(3))
+            off = float(height) / float(norm2) ** 0.5
+            assert height * height <= Fraction(1, 10**22) * norm2, (split, f, i, off)

@@ -249,6 +249,13 @@ int insert_in_facet(PlcState& s, int f, const P3& point, FacetCDT::Locate_type l
   return m;
 }
 
+bool noisy_direction(const P3& from, const P3& to, double radius) {
+  const double big = std::max({std::abs(from.x()), std::abs(from.y()), std::abs(from.z()), std::abs(to.x()),
+                               std::abs(to.y()), std::abs(to.z())});
+  const double floor = std::max(std::ldexp(radius, -26), std::ldexp(big, 20 - 52));
+  return !(CGAL::compare_squared_distance(from, to, floor * floor) == CGAL::LARGER);
+}
+
 bool strictly_in_domain(const FacetCDT& cdt, FacetCDT::Locate_type lt, FacetCDT::Face_handle loc, int li) {
   return (lt == FacetCDT::FACE && loc->info().in_domain) ||
          (lt == FacetCDT::EDGE && !cdt.is_constrained({loc, li}) && loc->info().in_domain &&

@@ -84,6 +84,13 @@ int split_subsegment(PlcState& s, int a, int b, double t, const P3& rounded);
 int insert_in_facet(PlcState& s, int f, const P3& point, FacetCDT::Locate_type lt, FacetCDT::Face_handle loc,
                     int li);
 
+// Is the direction from `from` to `to` rounding noise for a point placed at distance `radius` along it: |to - from|
+// within 2^-26 radius, or within 2^20 units in the last place of the larger coordinates (the two points' own
+// rounding, a few of those units, then tilts it by more than 2^-20)? The ray rules (collar points, points moved
+// onto a protecting sphere) refuse such a direction: a point placed along it can leave the facet's plane by up to
+// `radius`.
+bool noisy_direction(const P3& from, const P3& to, double radius);
+
 // Is a located point strictly inside the facet's domain: in a domain face, or on an unconstrained edge between two?
 bool strictly_in_domain(const FacetCDT& cdt, FacetCDT::Locate_type lt, FacetCDT::Face_handle loc, int li);
 

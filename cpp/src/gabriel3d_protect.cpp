@@ -126,19 +126,18 @@ void split_segments_on_spheres(const PlcState& s, const std::vector<ProtectingBa
 // balls through facets meeting along a segment at a small dihedral angle: the segment collars take the facet points
 // near such segments (gabriel3d_collar.cpp, with what they leave open); the budgets end what remains, and the exact
 // check of the result decides the status.
-// (4) A c within 2^-26 r of e (its direction from e is rounding noise) is refused, as c == e is: nothing is inserted,
-// so (1)-(3) hold as stated; a subfacet left encroached that way ends the run (stalled or a budget), and the exact
-// check of the result decides the status.
+// (4) A c within rounding of e (noisy_direction: its direction from e is noise) is refused, as c == e is: nothing is
+// inserted, so (1)-(3) hold as stated; a subfacet left encroached that way ends the run (stalled or a budget), and
+// the exact check of the result decides the status.
 std::optional<P3> arc_split_point(const PlcState& s, const Facet& facet, const ProtectingBall& ball, const P3& c,
                                   const std::set<int>& segment_sphere_points, const std::set<int>& arc_points) {
   const P3& e = s.points[ball.apex];
-  // c at (or within 2^-26 of the radius from) the apex: its direction from e is then rounding noise, as at a collar's
-  // midpoint (gabriel3d_collar.cpp), and the point moved along it can leave the facet's plane by up to r. It happens:
+  // c at (or within rounding of: noisy_direction) the apex: its direction from e is then rounding noise, as at a
+  // collar's midpoint (gabriel3d_collar.cpp), and the point moved along it can leave the facet's plane by up to r. It
+  // happens:
   // a subfacet of three sphere points has e as its circumcenter up to the rounding of those points (measured on
   // spike 80 with split="mirrored": |c - e| = 7e-14 r and 3e-13 r). Refused like c == e.
-  if (!(CGAL::compare_squared_distance(c, e, std::ldexp(ball.radius, -26) * std::ldexp(ball.radius, -26)) ==
-        CGAL::LARGER))
-    return std::nullopt;
+  if (noisy_direction(e, c, ball.radius)) return std::nullopt;
   const auto ve = facet.vertex.at(ball.apex);
   const Q2 qc = facet.project(c), &qe = ve->point();
   auto on_sphere = [&](int v) { return segment_sphere_points.count(v) || arc_points.count(v); };

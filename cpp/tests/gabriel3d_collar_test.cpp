@@ -36,6 +36,26 @@ TEST(Gabriel3DCollar, MovesAPointOnTheRayFromTheMidpointOntoTheCircle) {
   EXPECT_FALSE(collar_split_point(points[0], points[1], P3(0.5, 0, 0), held_by(chain, points)));   // the midpoint
 }
 
+TEST(Gabriel3DCollar, RefusesADirectionThatIsRoundingNoise) {
+  // Segments from (1000, 1000, 1000) along x (a unit in the last place is 1.1e-13 there). 2e-8 long (radius 1e-8):
+  // a point one unit in the last place above the midpoint, off the facet's plane z = 1000, gives a direction of
+  // pure noise; before (only c within 2^-26 of the radius, 1.5e-16, was refused) it was moved onto the circle, 1e-8
+  // off the plane. 2e-4 long (radius 1e-4): a point 1e-5 from the midpoint in the plane (far above 2^20 units in
+  // the last place, 2.3e-7) is moved onto the circle, in the plane.
+  const std::vector<P3> points{{1000, 1000, 1000}, {1000 + 2e-8, 1000, 1000}, {1000 + 2e-4, 1000, 1000}};
+  const std::vector<Key> chain{{0, 1}, {0, 2}};
+  const P3 m = CGAL::midpoint(points[0], points[1]);
+  const P3 noise(m.x(), m.y(), std::nextafter(1000.0, 2000.0));
+  EXPECT_TRUE(noisy_direction(m, noise, 1e-8));
+  EXPECT_FALSE(collar_split_point(points[0], points[1], noise, held_by({chain[0]}, points)));
+  const P3 wide = CGAL::midpoint(points[0], points[2]), c(wide.x(), wide.y() + 1e-5, wide.z());
+  EXPECT_FALSE(noisy_direction(wide, c, 1e-4));
+  const auto y = collar_split_point(points[0], points[2], c, held_by({chain[1]}, points));
+  ASSERT_TRUE(y);
+  EXPECT_EQ(y->z(), 1000.0);
+  EXPECT_NEAR(y->y() - 1000.0, 1e-4, 1e-12);
+}
+
 TEST(Gabriel3DCollar, PointsOfTwoFacetsAtTenDegreesStayOutOfEveryPieceBall) {
   // The segment [0, 1] on the x axis cut into pieces at 0, 0.25, 0.375, 0.5, 1; facet F is the half-plane y > 0 of
   // z = 0, facet G the half-plane at 10 degrees from it. Split points strictly inside a piece's ball, in F or G.
