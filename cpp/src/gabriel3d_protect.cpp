@@ -133,10 +133,9 @@ std::optional<P3> arc_split_point(const PlcState& s, const Facet& facet, const P
                                   const std::set<int>& segment_sphere_points, const std::set<int>& arc_points) {
   const P3& e = s.points[ball.apex];
   // c at (or within rounding of: noisy_direction) the apex: its direction from e is then rounding noise, as at a
-  // collar's midpoint (gabriel3d_collar.cpp), and the point moved along it can leave the facet's plane by up to r. It
-  // happens:
-  // a subfacet of three sphere points has e as its circumcenter up to the rounding of those points (measured on
-  // spike 80 with split="mirrored": |c - e| = 7e-14 r and 3e-13 r). Refused like c == e.
+  // collar's midpoint (gabriel3d_collar.cpp), and the point moved along it can leave the facet's plane by up to r.
+  // It happens: a subfacet of three sphere points has e as its circumcenter up to the rounding of those points
+  // (measured on spike 80 with split="mirrored": |c - e| = 7e-14 r and 3e-13 r). Refused like c == e.
   if (noisy_direction(e, c, ball.radius)) return std::nullopt;
   const auto ve = facet.vertex.at(ball.apex);
   const Q2 qc = facet.project(c), &qe = ve->point();
