@@ -100,6 +100,32 @@ def test_generated_schonhardt_converges_through_the_fallback():
     assert res.stats["other_attempt"].startswith("shells: min_length_reached")
 
 
+def test_the_first_pass_stops_its_cascade_at_a_thousandth_of_the_inputs_scale():
+    # Alone, shells on the generated prism split down to min_length (1e-6 of the diagonal), far below
+    # the input's own scale (its closest points; its triangles are well shaped). Where the protected rerun
+    # follows, the first pass stops once a subsegment is shorter than 1/1000 of that: the whole run (that
+    # pass and the rerun) then costs less work than the first pass alone did.
+    plc = load_plc(CORPUS / "schonhardt.off")
+    alone = refine_gabriel(plc, protected_fallback=False)
+    assert alone.status == "min_length_reached"
+    assert alone.stats["smallest_subsegment"] < 1e-3 * min(closest_pair(plc.points), smallest_altitude(plc))
+    res = refine_gabriel(plc)
+    assert_certified(res, plc)
+    assert res.stats["strategy"] == "shells+protected"
+    assert "cascade floor" in res.stats["other_attempt"]
+    assert res.stats["work"] < alone.stats["work"]
+    # an explicit min_length is the caller's: no floor
+    given = refine_gabriel(plc, min_length=alone.stats["min_length"])
+    assert "cascade floor" not in given.stats["other_attempt"]
+    assert given.stats["work"] > alone.stats["work"]
+
+
+def smallest_altitude(plc) -> float:
+    a, b, c = (plc.points[plc.triangles[:, k]] for k in range(3))
+    longest = np.linalg.norm(np.stack([b - a, c - b, a - c]), axis=2).max(0)
+    return float((np.linalg.norm(np.cross(b - a, c - a), axis=1) / longest).min())
+
+
 def closest_pair(points: np.ndarray) -> float:
     from scipy.spatial import cKDTree
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <map>
 #include <tuple>
 
@@ -11,6 +12,17 @@
 
 namespace nonobtuse::gabriel3d {
 
+namespace {
+
+// A length for a stop reason: 3 significant digits at any scale (std::to_string printed 1e-9 as 0.000000).
+std::string length_text(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", x);
+  return text;
+}
+
+}  // namespace
+
 std::optional<Stop> Refiner::budget_left() const {
   if (steiner_on_segments + steiner_on_facets >= o_.max_steiner)
     return Stop{RefineStatus::BudgetExhausted, "max_steiner (" + std::to_string(o_.max_steiner) + ") reached"};
@@ -18,6 +30,10 @@ std::optional<Stop> Refiner::budget_left() const {
     return Stop{RefineStatus::BudgetExhausted, "max_work (" + std::to_string(o_.max_work) + " work units) reached"};
   if (out_of_time())
     return Stop{RefineStatus::BudgetExhausted, "time_limit (" + std::to_string(o_.time_limit) + " s) reached"};
+  if (below_floor_)
+    return Stop{RefineStatus::MinLengthReached,
+                "a split left a subsegment shorter than the first pass's cascade floor (" +
+                    length_text(cascade_floor_) + ", 1/1000 of the input's smallest scale)"};
   return std::nullopt;
 }
 
@@ -46,7 +62,7 @@ std::vector<SubfacetRef> Refiner::encroached_subfacets() const {
 std::optional<Stop> Refiner::too_short(const P3& p, const P3& q) const {
   if (o_.min_length > 0 && CGAL::compare_squared_distance(p, q, o_.min_length * o_.min_length) == CGAL::SMALLER)
     return Stop{RefineStatus::MinLengthReached,
-                "a split would create an edge shorter than min_length (" + std::to_string(o_.min_length) + ")"};
+                "a split would create an edge shorter than min_length (" + length_text(o_.min_length) + ")"};
   return std::nullopt;
 }
 
@@ -148,6 +164,10 @@ bool Refiner::protected_piece(const Key& sub) const {
 
 void Refiner::inserted(int m, const std::optional<Key>& split) {
   index_.add(m);
+  if (split && cascade_floor_ > 0)
+    for (int end : {split->first, split->second})
+      below_floor_ = below_floor_ || CGAL::compare_squared_distance(s_.points[m], s_.points[end],
+                                                                    cascade_floor_ * cascade_floor_) == CGAL::SMALLER;
   encroached_subsegments_.added(m, split);
 #ifdef NONOBTUSE_CHECK_INVARIANTS
   check_invariants(s_);

@@ -11,9 +11,10 @@ namespace nonobtuse::gabriel3d {
 // facet that its 2D triangulation sees outside a subfacet's circumcircle as encroaching it (see
 // Refiner::subfacet_encroached). protect: protecting balls at the apex vertices (gabriel3d_protect.h). mirror:
 // mirrored facet meshes along small-dihedral segments (gabriel3d_mirror.h). stations: where the input has groups of
-// near-parallel close segments (gabriel3d_stations.h), stations on them instead of protecting balls.
+// near-parallel close segments (gabriel3d_stations.h), stations on them instead of protecting balls. cascade_floor > 0:
+// stop (min_length_reached) once a split leaves a subsegment shorter than it (the first pass's guard, refine_gabriel).
 // Fills everything of the result but strategy, other_attempt, max_steiner, min_length and max_work.
 Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool ignore_frame_artifacts,
-                           bool protect, bool mirror, bool stations = false);
+                           bool protect, bool mirror, bool stations = false, double cascade_floor = 0.0);
 
 }  // namespace nonobtuse::gabriel3d

@@ -6,7 +6,7 @@
 namespace nonobtuse::gabriel3d {
 
 Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool ignore_frame_artifacts,
-                          bool protect, bool mirror, bool stations) {
+                          bool protect, bool mirror, bool stations, double cascade_floor) {
   PlcState s = build_plc_state(plc);
   Refine3DResult out;
   out.diagnosis.smallest_angles = smallest_input_angles(s);
@@ -26,7 +26,7 @@ Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool
   // With groups, the mirrored facet meshes too (along the small dihedral edges elsewhere; Refiner leaves the grouped
   // segments to the stations).
   Refiner refiner(s, options, ignore_frame_artifacts, protection ? &*protection : nullptr, mirror || groups,
-                  groups ? &*groups : nullptr);
+                  groups ? &*groups : nullptr, cascade_floor);
   // Refine the subfacets, restrict the Delaunay tetrahedralization, check it exactly; where its boundary faces
   // differ from the subfacets (cospherical points) and are encroached, split those too and start over. After a
   // stop, the mesh is rebuilt once more so that it shows every point inserted (repair() may stop half-way).

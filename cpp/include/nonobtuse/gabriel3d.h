@@ -73,9 +73,9 @@ struct Refine3DOptions {
   // Steiner budget; < 0 selects 10 n + 10,000 for n PLC points (real CAD parts need about 2-5 n).
   long max_steiner = -1;
   // No split may create a subsegment (or an edge to a facet Steiner point) shorter; 0 turns it off; < 0 selects
-  // 1e-6 of the diagonal of the PLC points' bounding box (converged corpus runs never come near it, their smallest
-  // subsegments are >= 8e-5 of it; runs caught in a small-angle cascade end at it with MinLengthReached instead
-  // of spinning down to 1e-17 subsegments until the budget or a stall).
+  // 1e-6 of the diagonal of the PLC points' bounding box (the first passes that converge on the corpus end with
+  // smallest subsegments >= 1.8 times it, mc_torus.off; runs caught in a small-angle cascade end at it with
+  // MinLengthReached instead of spinning down to 1e-17 subsegments until the budget or a stall).
   double min_length = -1.0;
   // Wall-clock seconds for everything (both strategies and the exact checks); infinity (the default) sets none, so
   // that the outcome does not depend on the machine's speed or load. An explicit limit is reported as such.
@@ -164,7 +164,10 @@ struct Refine3DResult {
 // A stopped run whose tetrahedralization does not conform to every facet returns the subfacets and no tets
 // (volume_mesh says so). status == Converged iff the exact check of the returned mesh passes. The facets' boundary
 // edges count as segments (their subsegments are returned and checked).
-// Strategy: the pass with options.split first; when it ends without converging (and time is left, and
+// Strategy: the pass with options.split first (where the fallbacks get their own limits and min_length is left to the
+// default, it stops once a split leaves a subsegment shorter than 1/1000 of the input's smallest scale, the smaller of
+// its closest two points' distance and its triangles' smallest altitude: a cascade; cascade_floor in
+// gabriel3d_strategy.cpp); when it ends without converging (and time is left, and
 // protected_fallback is set), the protected strategy (SplitRule::Protected) runs from the input with its own
 // max_steiner and min_length (4 times and 1/1000 of the defaults where those are left to them: protected_limits in
 // gabriel3d_strategy.cpp; not for split == Protected alone), its own max_work and the rest of time_limit; its

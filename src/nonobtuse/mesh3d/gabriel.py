@@ -253,7 +253,11 @@ def refine_gabriel(
     it encroaches a subsegment of the facet or lies outside the facet, in which case that subsegment is
     split. At facet corners below 3 degrees (every rule), a point split onto one of the two segments at
     distance r from the corner also goes on the other at cos(angle / 2) r, checked exactly, so that the two
-    never encroach each other (needle facets of marching-cubes surfaces). When that pass does not converge
+    never encroach each other (needle facets of marching-cubes surfaces). Where the protected rerun below
+    follows with its own limits and min_length is left to the default, that pass stops once a split leaves a
+    subsegment shorter than 1/1000 of the input's smallest scale (the distance between its two closest
+    points or the smallest altitude of its triangles, whichever is smaller): a cascade, which the rerun from
+    the input replaces anyway. When that pass does not converge
     (and time_limit has time left), the protected strategy runs from
     the input, and its result is returned if it converged (where max_steiner and min_length are left to the
     defaults, this rerun gets 4 times the Steiner budget and 1/1000 of the min_length: its split
