@@ -19,8 +19,10 @@ output points that are not input points), boundary_faces, encroached_facets, enc
 fTetWild, whose output does not mark segments), seconds, vs_tetgen_pq (seconds / tetgen-pq's seconds on the
 same input; refine3d's target is <= 2), cpu_seconds and cpu_vs_tetgen_pq (the same in CPU seconds of this
 process, steadier than wall time on a loaded machine; every method runs in-process). ``--methods tetgen-pq
-ours`` runs only those rows. CSV to bench_gabriel3d.csv (bench_gabriel3d_quick.csv with --quick) in --out DIR
-(default experiments/results), and a table on stdout.
+ours`` runs only those rows. ``--repeat K`` runs the methods of an input K times, interleaved, and keeps each
+method's least seconds and least CPU seconds (:func:`fastest`): TetGen's time on a small input swings by half
+between single runs, so that the ratio of one run says little. CSV to bench_gabriel3d.csv
+(bench_gabriel3d_quick.csv with --quick) in --out DIR (default experiments/results), and a table on stdout.
 
 ``--scaling [FACES...]``: instead, check3d end to end (a fresh ``nonobtuse check3d --json`` process) on
 jittered tori (:func:`torus_surface`) of 1e4, 1e5, 1e6 faces (or those given), with the cgal and tetgen
@@ -133,7 +135,7 @@ def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
         return [{"input": name, "method": "-", "status": f"invalid: {str(e)[:40]}"}]
     if len(plc.triangles) > args.max_triangles:
         return [{"input": name, "method": "-", "status": f"skipped: {len(plc.triangles)} triangles"}]
-    runs: dict[str, Callable[[], dict[str, Any]]] = {
+    run: dict[str, Callable[[], dict[str, Any]]] = {
         "tetgen-pq": lambda: run_backend(name, plc, "tetgen-pq", "tetgen", switches="pq1.414AQ"),
         "tetgen-pD": lambda: run_backend(name, plc, "tetgen-pD", "tetgen", switches="pDAQ"),
         "tetgen-pY": lambda: run_backend(name, plc, "tetgen-pY", "tetgen", switches="pYAQ"),
@@ -144,7 +146,31 @@ def bench_one(path: Path, args: argparse.Namespace) -> list[dict[str, Any]]:
         "ours-greedy": lambda: run_ours(name, plc, args.max_steiner, args.time_limit, split="greedy"),
         "ours-protected": lambda: run_ours(name, plc, args.max_steiner, args.time_limit, split="protected"),
     }
-    return with_time_ratios([runs[method]() for method in METHODS if method in args.methods])
+    methods = [method for method in METHODS if method in args.methods]
+    runs: dict[str, list[dict[str, Any]]] = {method: [] for method in methods}
+    for _ in range(args.repeat):
+        for method in methods:
+            runs[method].append(run[method]())
+    return with_time_ratios([fastest(runs[method]) for method in methods])
+
+
+TIMES = ("seconds", "cpu_seconds")
+
+
+def fastest(runs: list[dict[str, Any]]) -> dict[str, Any]:
+    """One row for repeated runs of one method on one input: the first run's row with the least seconds and
+    the least CPU seconds of all runs (each clock's least disturbed run). Where the runs' other columns differ
+    (every method here should be deterministic), a warning on stderr names the input and method."""
+    row = dict(runs[0])
+    if any({k: v for k, v in r.items() if k not in TIMES} != {k: v for k, v in row.items() if k not in TIMES}
+           for r in runs[1:]):
+        print(f"bench_gabriel3d: {row['input']} {row['method']}: the repeated runs' results differ; the "
+              "first run's are kept", file=sys.stderr)
+    for column in TIMES:
+        values = [r[column] for r in runs if r.get(column) is not None]
+        if values:
+            row[column] = min(values)
+    return row
 
 
 def with_time_ratios(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
@@ -213,8 +239,12 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--scaling-backends", nargs="+", default=["cgal", "tetgen"], choices=("cgal", "tetgen"))
     ap.add_argument("--methods", nargs="+", default=list(METHODS), choices=METHODS,
                     help="only these rows per input (vs_tetgen_pq needs tetgen-pq)")
+    ap.add_argument("--repeat", type=int, default=1, metavar="K",
+                    help="run the methods of each input K times, interleaved; keep each one's least times")
     add_out_option(ap, "bench_gabriel3d.csv")
     args = ap.parse_args(argv)
+    if args.repeat < 1:
+        ap.error(f"--repeat must be at least 1 (got {args.repeat})")
     if args.scaling is not None:
         args.scaling = args.scaling or [10**4, 10**5, 10**6]
         rows = check3d_scaling(args)

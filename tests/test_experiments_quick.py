@@ -199,3 +199,25 @@ def test_bench_scaling_families_are_valid_and_a_tiny_run_writes_its_outputs(tmp_
     assert {(f["family"], f["tool"]) for f in fits} == {(f, t) for f in ("star", "point_set")
                                                         for t in bench_scaling.TOOLS}
     assert (tmp_path / "bench_scaling_quick.png").stat().st_size > 0
+
+
+def test_bench_gabriel3d_keeps_each_methods_least_times_over_repeats(tmp_path, capsys):
+    from pathlib import Path
+
+    from experiments.bench_gabriel3d import fastest, main
+
+    runs = [{"input": "a.off", "method": "ours", "points": 9, "seconds": 0.5, "cpu_seconds": 0.3},
+            {"input": "a.off", "method": "ours", "points": 9, "seconds": 0.2, "cpu_seconds": 0.4}]
+    least = {"input": "a.off", "method": "ours", "points": 9, "seconds": 0.2, "cpu_seconds": 0.3}
+    assert fastest(runs) == least
+    assert capsys.readouterr().err == ""
+    fastest([runs[0], {**runs[1], "points": 10}])
+    assert "a.off ours: the repeated runs' results differ" in capsys.readouterr().err
+    cube = Path(__file__).parent / "data" / "3d" / "cubes_edge.off"
+    assert main(["--methods", "tetgen-pq", "ours", "--repeat", "2", "--out", str(tmp_path), str(cube)]) == 0
+    with open(tmp_path / "bench_gabriel3d.csv") as f:
+        rows = list(csv.DictReader(f))
+    assert [r["method"] for r in rows] == ["tetgen-pq", "ours"]
+    assert rows[1]["status"] == "converged" and rows[1]["encroached_facets"] == "0"
+    with pytest.raises(SystemExit):
+        main(["--repeat", "0", str(cube)])
