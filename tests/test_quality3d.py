@@ -213,15 +213,45 @@ def test_a_split_boundary_the_repair_refuses_ends_stalled_not_as_invalid_input(m
 
 
 def test_a_pass_that_cascades_stops_at_its_boundary_budget():
-    # Schonhardt's prism from its boundary: the pass's boundary splits cascade down its small angles; they
-    # stop at 8 times the boundary's points plus 2,000 (before: the repair's max_steiner, 40,240 points and
-    # 8 s here for the same unconverged result)
+    # Schonhardt's prism from its boundary: the first pass's boundary splits cascade down its small angles;
+    # they stop at 8 times the boundary's points plus 2,000 (before: the repair's max_steiner, 40,240 points
+    # and 8 s here for the same unconverged result)
     plc = load_plc(DATA3D / "schonhardt.off")
     volume = 1e-3 * float(np.prod(np.ptp(plc.points, axis=0)))
+    refiner = InteriorRefiner(plc, volume, 2.0, None, 0.0, {})
+    g = refiner.repair(plc, np.zeros((0, 3)), fallback_own_limits=True)
+    status = refiner.interior_pass(g.mesh, 10**6, None, dict(g.stats))[1]
+    boundary = len(g.mesh.points)
+    assert status == "boundary_stopped"
+    assert 8 * boundary + 2000 >= refiner.boundary_points > 8 * boundary
+
+
+def test_a_cascading_boundary_split_is_left_alone_and_the_rest_refined():
+    # cad_ramp_5deg.off: the first pass's step cascades between the 5-degree angles and so does the repair
+    # taking over (before: budget_exhausted with the repaired boundary, 46 points, no interior point). The
+    # pass runs again with smaller steps; the subfacets and subsegments whose single split cascades are left
+    # alone, with the tets whose centers lie in their spheres, and every other tet gets within the bounds.
+    plc = load_plc(DATA3D / "cad_ramp_5deg.off")
+    volume = 1e-3 * float(np.prod(np.ptp(plc.points, axis=0)))
     r = refine_quality3d(plc, max_volume=volume, radius_edge=2.0)
-    boundary = len(plc.points) + r.stats["boundary_repair"]["steiner_points"]
-    assert r.status != "converged" and r.stats["rounds"] == 1
-    assert 8 * boundary + 2000 >= r.stats["boundary_points_by_passes"] > 8 * boundary
+    assert r.status == "converged" and check_gabriel(r.mesh).ok
+    assert r.stats["cascade_retries"] >= 1 and r.stats["cascades_left_alone"] >= 1
+    assert r.stats["interior_points"] > 0 and r.stats["bad_tets_outside_small_angles"] == 0
+    tets = np.asarray(r.mesh.tets, dtype=np.int64)
+    outside = np.setdiff1d(np.arange(len(tets)), r.small_angle_rows)
+    _, radius, vol = tet_circumspheres(r.mesh.points, tets[outside])
+    assert (vol <= volume).all() and (radius / shortest_edges(r.mesh.points, tets[outside]) <= 2.0).all()
+
+
+def test_no_retries_where_the_failed_step_split_for_many_centers():
+    # step.off: its first failed step splits for 4,164 centers; retries (at most 32) could not leave enough
+    # alone, so none run and the result is the unbounded pass's
+    if not (SHARED3D / "step.off").exists():
+        pytest.skip("../shared/data not present")
+    plc = load_plc(SHARED3D / "step.off")
+    volume = 1e-3 * float(np.prod(np.ptp(plc.points, axis=0)))
+    r = refine_quality3d(plc, max_volume=volume, radius_edge=2.0)
+    assert r.status == "min_length_reached" and r.stats["cascade_retries"] == 0
 
 
 @needs_tetgen

@@ -121,7 +121,7 @@ bool BoundarySplitter::encroached(int a, int b, int c) const {
 // A split point is refused when it is an existing point, closer than min_length to one, or over the budget: the
 // circumcenter that asked for it stays blocked (counted), and the exact check of the result decides.
 bool BoundarySplitter::may_add(const P3& p) {
-  bool ok = added < max_points_ && !s_.at.count({p.x(), p.y(), p.z()});
+  bool ok = added < max_points_ && (step_end_ < 0 || added < step_end_) && !s_.at.count({p.x(), p.y(), p.z()});
   if (ok && min_length_ > 0) {
     gabriel3d::SearchBall ball{{p.x(), p.y(), p.z()}, min_length_, false};
     index_.for_each_in(ball, [&](int i) {

@@ -73,6 +73,9 @@ class BoundarySplitter {
   // until none has (true) or a split is refused or stop() (false).
   bool restore_gabriel(const std::function<bool()>& stop);
 
+  // The next splits may add this many points at most (a step's own budget, within max_points); < 0: no bound.
+  void limit_step(long long points) { step_end_ = points < 0 ? -1 : added + points; }
+
   long long added = 0;    // boundary points
   long long refused = 0;  // splits refused: min_length, an existing point, the budget, outside the facet
 
@@ -98,6 +101,7 @@ class BoundarySplitter {
   gabriel3d::SubsegmentBalls balls_;  // of s_.subsegments
   double min_length_;
   long long max_points_;
+  long long step_end_ = -1;  // limit_step: added may not reach it; -1: no bound
   SharpFeatures features_;
   SharpFeatures volume_features_;  // below volume_sharp degrees, for tets over the volume bound
 };

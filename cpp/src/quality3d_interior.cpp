@@ -7,6 +7,7 @@
 #include <memory>
 #include <numeric>
 #include <queue>
+#include <set>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -57,6 +58,7 @@ class InteriorRefiner {
                                                      bounds.sharp_dihedral_degrees, bounds.small_apex_degrees,
                                                      bounds.volume_sharp_degrees);
     spheres_ = std::make_unique<SphereIndex>(pts_, faces_, segments_);
+    for (auto e : mesh.left_alone) left_alone_.insert(element(e));
   }
 
   // Builds the Delaunay tetrahedralization and labels its cells; false when a subfacet or subsegment is not in it.
@@ -101,6 +103,8 @@ class InteriorRefiner {
         InteriorRefinement split;
         collect(split);
         certified.status = gabriel ? "not_conforming" : "boundary_stopped";
+        certified.step_centers = step_centers_;
+        certified.step_elements.assign(step_.begin(), step_.end());
         certified.certified_points = static_cast<long long>(mark);
         certified.points.swap(split.points);  // the step's boundary points after the certified ones
         std::tie(certified.split_faces, certified.split_face_facets, certified.split_segments) =
@@ -273,9 +277,17 @@ class InteriorRefiner {
     std::sort(blocked.begin(), blocked.end(), [](const Blocked& x, const Blocked& y) {
       return std::tie(y.ratio, x.key) < std::tie(x.ratio, y.key);  // worst first
     });
+    if (bounds_.max_step_centers > 0 && blocked.size() > static_cast<std::size_t>(bounds_.max_step_centers))
+      blocked.resize(static_cast<std::size_t>(bounds_.max_step_centers));
+    step_.clear();
+    step_centers_ = static_cast<long long>(blocked.size());
+    // Bounded steps (after a cascade nothing finished: refine_quality3d's retries) get 64 points per center: the
+    // steps that succeed there add one or two (cad_ramp_5deg.off, schonhardt.off), a cascade thousands.
+    splitter_->limit_step(bounds_.max_step_centers > 0 ? 64 * static_cast<long long>(blocked.size()) : -1);
     for (const Blocked& b : blocked) {
       if (out_of_time()) return false;
       const int row = spheres_->find(b.center);  // the spheres as the step began
+      step_.insert(element_of(row));
       if (row < 0) {
         const Segment& s = segments_[-1 - row];
         if (splitter_->is_subsegment(s[0], s[1])) splitter_->split_subsegment(s[0], s[1]);
@@ -426,7 +438,8 @@ class InteriorRefiner {
         const P3 center = circumcenter(c);
         const bool flat = flat_on_facet(c);
         const int row = flat || !finite(center) ? SphereIndex::kNone : spheres_->find(center);
-        const bool alone = left_alone(q, row);
+        const bool alone =
+            left_alone(q, row) || (row != SphereIndex::kNone && left_alone_.count(element_of(row)) > 0);
         if (flat || alone) out.small_angle_rows.push_back(static_cast<int>(out.tets.size()));
         if (blocked && row != SphereIndex::kNone && !alone)
           blocked->push_back(
@@ -467,6 +480,19 @@ class InteriorRefiner {
   DT dt_;
   std::vector<Vertex> vertex_;
   std::priority_queue<Entry> queue_;
+  // A subfacet (a, b, c) or subsegment (a, b, -1) with its corners sorted (-1 last).
+  static std::array<int, 3> element(std::array<int, 3> e) {
+    std::sort(e.begin(), e.end() - (e[2] < 0 ? 1 : 0));
+    return e;
+  }
+  std::array<int, 3> element_of(int row) const {
+    if (row >= 0) return element(faces_[static_cast<std::size_t>(row)]);
+    const Segment& s = segments_[static_cast<std::size_t>(-1 - row)];
+    return element({s[0], s[1], -1});
+  }
+  std::set<std::array<int, 3>> left_alone_;  // InteriorMesh::left_alone
+  std::set<std::array<int, 3>> step_;        // what the last boundary step split for
+  long long step_centers_ = 0;               // and for how many circumcenters
   long long inserted_ = 0;
   bool conforming_ = true;  // false after a boundary step whose subfacets are not all faces of dt_
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();

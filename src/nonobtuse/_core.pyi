@@ -623,6 +623,12 @@ class InteriorRefinement:
     def status(self) -> str:
         ...
     @property
+    def step_centers(self) -> int:
+        ...
+    @property
+    def step_elements(self) -> numpy.typing.NDArray[numpy.int64]:
+        ...
+    @property
     def tet_labels(self) -> numpy.typing.NDArray[numpy.int32]:
         ...
     @property
@@ -741,14 +747,16 @@ def refine_gabriel(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float6
     progress: None or f(steiner, encroached_segments, encroached_facets, seconds).
     Returns a Refine3DResult.
     """
-def refine_interior(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], tets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], tet_labels: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], radius_edge: typing.SupportsFloat | typing.SupportsIndex, volume_bounds: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_points: typing.SupportsInt | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex, insert: typing.Annotated[numpy.typing.ArrayLike, numpy.float64] = ..., face_facets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64] = ..., max_boundary_points: typing.SupportsInt | typing.SupportsIndex = 1000000, min_length: typing.SupportsFloat | typing.SupportsIndex = 0.0, sharp_dihedral_degrees: typing.SupportsFloat | typing.SupportsIndex = 85.0, small_apex_degrees: typing.SupportsFloat | typing.SupportsIndex = 60.0) -> InteriorRefinement:
+def refine_interior(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], tets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], tet_labels: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], faces: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], segments: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], radius_edge: typing.SupportsFloat | typing.SupportsIndex, volume_bounds: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], max_points: typing.SupportsInt | typing.SupportsIndex, time_limit: typing.SupportsFloat | typing.SupportsIndex, insert: typing.Annotated[numpy.typing.ArrayLike, numpy.float64] = ..., face_facets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64] = ..., max_boundary_points: typing.SupportsInt | typing.SupportsIndex = 1000000, min_length: typing.SupportsFloat | typing.SupportsIndex = 0.0, sharp_dihedral_degrees: typing.SupportsFloat | typing.SupportsIndex = 85.0, small_apex_degrees: typing.SupportsFloat | typing.SupportsIndex = 60.0, left_alone: typing.Annotated[numpy.typing.ArrayLike, numpy.int64] = ..., max_step_centers: typing.SupportsInt | typing.SupportsIndex = 0) -> InteriorRefinement:
     """
     Delaunay refinement of the interior of a mesh (n,3) points, (t,4) tets, (t,) labels with a Gabriel
     boundary (f,3) faces, (k,2) segments: circumcenters of tets over radius_edge (<= 0: none) or
     volume_bounds[label] inserted outside every closed diametral sphere, after inserting the points
     insert (p,3) outside them; with face_facets (f,) the facet id of each face, a center in a closed
     sphere splits the boundary instead, but near small input angles (sharp_dihedral_degrees,
-    small_apex_degrees: small_angle_rows; see quality3d.h).
+    small_apex_degrees: small_angle_rows; see quality3d.h), or in that of a subfacet (a,b,c) or
+    subsegment (a,b,-1) of left_alone (e,3);
+    max_step_centers: blocked centers a boundary step splits for at most (0: all).
     """
 def surface_winding_numbers(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], triangles: typing.Annotated[numpy.typing.ArrayLike, numpy.int64], queries: typing.Annotated[numpy.typing.ArrayLike, numpy.float64]) -> numpy.typing.NDArray[numpy.int64]:
     """

@@ -42,6 +42,10 @@ struct InteriorMesh {
   // Points inserted first, in order, each where it is strictly outside every closed diametral sphere, in the domain
   // and on no vertex (exact; e.g. another mesher's interior points), else dropped.
   std::vector<Point3> insert;
+  // Subfacets (a, b, c) and subsegments (a, b, -1), corners in any order, whose split cascaded in an earlier pass
+  // (refine_quality3d's retries): a tet whose circumcenter lies in one's closed diametral sphere is left alone as
+  // the small-angle rule leaves tets (small_angle_rows).
+  std::vector<std::array<int, 3>> left_alone;
 };
 
 struct InteriorBounds {
@@ -62,6 +66,9 @@ struct InteriorBounds {
   // end, below Ruppert's 60 degrees for a facet corner or a wedge's cross-section; 0.01 lower for inputs written
   // with few digits (gc_hourglass_ico.obj's equilateral faces have corners of 59.9988 degrees).
   double volume_sharp_degrees = 59.99;
+  // Blocked circumcenters a boundary step splits for at most, worst first, each with 64 boundary points at most
+  // (the step is refused beyond); 0: all, within max_boundary_points.
+  long long max_step_centers = 0;
 };
 
 // "converged": every tet within the bounds but those left alone near small input angles (small_angle_rows);
@@ -100,6 +107,10 @@ struct InteriorRefinement {
   std::vector<Triangle> split_faces;
   std::vector<int> split_face_facets;
   std::vector<Segment> split_segments;
+  // After "boundary_stopped": how many circumcenters that step split for, and the subfacets (a, b, c) and
+  // subsegments (a, b, -1) it split for them (corners sorted; sorted).
+  long long step_centers = 0;
+  std::vector<std::array<int, 3>> step_elements;
   std::string status;
   long long inserted = 0;         // circumcenters
   long long placed = 0;           // points of InteriorMesh::insert

@@ -136,7 +136,9 @@ def _quality3d_text(stats: dict[str, Any], input_path: str, output_path: str) ->
         ("points added", f"{stats['steiner_points']:,} (the mesh has {stats['boundary_points']:,} boundary "
                          f"and {stats['interior_points']:,} interior points)"),
         ("tets", f"{_number(stats['tets'])} ({_number(stats['bad_tets'])} over a bound, "
-                 f"{_number(stats['small_angle_tets'])} of them left alone near small input angles, "
+                 f"{_number(stats['small_angle_tets'])} of them left alone near small input angles"
+                 + (f" (also at {stats['cascades_left_alone']} boundary pieces whose split cascaded)"
+                    if stats.get("cascades_left_alone") else "") + ", " +
                  f"{_number(stats['rounds'])} round{'' if stats['rounds'] == 1 else 's'})"),
         ("worst radius-edge", f"{_number(stats['worst_radius_edge'])} "
                               f"({_number(stats['worst_radius_edge_outside_small_angles'])} outside small "

@@ -64,12 +64,15 @@ class Quality3DResult:
             at a sharp feature, a segment where facets meet below 85 degrees or an apex below 60 (both below
             59.99 for a tet over the volume bound: its split is bounded below by the bound), and in its
             protecting region, or, over the radius-edge bound alone, be shorter than the tet's shortest edge;
-            ``cpp/src/quality3d_boundary.h``, ``cpp/src/quality3d_small_angle.h``; and a tet with its four
-            corners on one facet, flat but for rounding),
+            ``cpp/src/quality3d_boundary.h``, ``cpp/src/quality3d_small_angle.h``; a tet whose circumcenter
+            lies in the closed diametral sphere of a subfacet or subsegment whose split cascaded, see
+            cascades_left_alone below; and a tet with its four corners on one facet, flat but for rounding),
             bad_tets_outside_small_angles, blocked_centers (tets over a bound the last interior pass left:
             centers that no split frees), inserted_by_passes (circumcenters the interior passes inserted),
             boundary_points_by_passes / boundary_rounds / refused_splits (the passes' own boundary splits,
-            their steps, and the splits refused at min_length or the budget), rounds,
+            their steps, and the splits refused at min_length or the budget), cascade_retries /
+            cascades_left_alone (passes run again after a step's cascade, and the subfacets and subsegments
+            left alone for it; see Each round below), rounds,
             surface (how the facets were split first), tetgen / tetgen_points / tetgen_points_dropped
             (TetGen's interior points, and those dropped for lying in a closed diametral sphere),
             encroached_facets / encroached_segments (the exact certificate), volume_mesh, negative_couplings,
@@ -140,13 +143,19 @@ def refine_quality3d(
     bounded by the repair's min_length and max_steiner, and per pass by 8 times the boundary's points plus
     2,000, which cuts the cascades down small angles short: ``InteriorRefiner.interior_pass``). Tets near
     small input angles whose centers stay in diametral spheres are left (stats["blocked_centers"], as TetGen
-    counts the tets it skips). A round ends with a boundary repair (refine_gabriel of the split boundary with
-    the interior points) only when the pass's tetrahedralization cannot hold its split boundary (cospherical
-    points, or a split refused at min_length: stats "boundary_rounds" counts the pass's own boundary steps);
-    when the repaired surface is not Delaunay to begin with (e.g. a cube's squares), the circumcenters of an
-    independent set of bad tets (no center in another's circumsphere) go through the repair (points strictly
-    inside their tets for those in a closed sphere). The loop is bounded by max_points, time_limit and the
-    boundary repair's budget, and a round that adds nothing ends it ("quality_blocked").
+    counts the tets it skips). Where a pass's boundary step cascades to a refused split and the repair taking
+    over stops too, the pass runs again from its last certified mesh with steps that split for half as many
+    centers, down to one; when a step that splits one subfacet or subsegment fails, the tets whose centers lie
+    in its closed diametral sphere are left alone too (stats["cascades_left_alone"] counts those subfacets and
+    subsegments, stats["cascade_retries"] the passes run again: at most 32, and only where the first failed
+    step split for at most 512 centers). A round ends with a boundary repair (refine_gabriel of the split
+    boundary with the interior points) only when the pass's tetrahedralization cannot hold its split boundary
+    (cospherical points, or a split refused at min_length: stats "boundary_rounds" counts the pass's own
+    boundary steps); when the repaired surface is not Delaunay to begin with (e.g. a cube's squares), the
+    circumcenters of an independent set of bad tets (no center in another's circumsphere) go through the
+    repair (points strictly inside their tets for those in a closed sphere). The loop is bounded by
+    max_points, time_limit and the boundary repair's budget, and a round that adds nothing ends it
+    ("quality_blocked").
     Guarantee: report is the exact check_gabriel of the returned mesh; status "converged" needs it to pass and
     every tet within the bounds (measured in floating point). Deterministic.
     Cost: the interior pass, O(k log n) expected for k insertions, plus per boundary step O(f log n) exact
@@ -205,6 +214,9 @@ def refine_quality3d(
         if seconds > refiner.time_limit:
             status = "budget_exhausted"
             break
+        if passed == "boundary_stopped" and refiner.step_centers and refiner.retry_cascade(grown):
+            mesh = grown  # bounded steps already: again with a smaller one, the repair would cascade too
+            continue
         # a split boundary the pass cannot tetrahedralize by itself (cospherical points, or a split it
         # refused): the boundary repair splits what is left and tetrahedralizes the interior points with it
         surface, interior = refiner.split_mesh(grown if split is None else split)
@@ -223,6 +235,11 @@ def refine_quality3d(
             status = "quality_blocked"  # nothing added: the centers left lie on spheres, which split nothing
             break
         status, stop = repaired.status, repaired.stats["diagnosis"]["stop_reason"]
+        if status != "converged" and passed == "boundary_stopped" and refiner.retry_cascade(grown):
+            # the pass again from its last certified mesh, its steps smaller
+            mesh, status = grown, "converged"
+            stop = f"a boundary step cascaded and its repair stopped too ({stop}): passes ran again, smaller"
+            continue
         # else the last certified mesh: the pass's before the boundary step it could not finish
         g, mesh = (repaired, repaired.mesh) if status == "converged" else (g, grown)
     bad = refiner.bad_tets(mesh)[0]
@@ -243,6 +260,7 @@ def refine_quality3d(
              "bad_tets_outside_small_angles": int(outside.size), "blocked_centers": blocked,
              "inserted_by_passes": refiner.inserted, "boundary_points_by_passes": refiner.boundary_points,
              "boundary_rounds": refiner.boundary_rounds, "refused_splits": refiner.refused_splits,
+             "cascade_retries": refiner.retries, "cascades_left_alone": len(refiner.cascades),
              "encroached_facets": len(report.faces), "encroached_segments": len(report.segments),
              "volume_mesh": g.stats.get("volume_mesh"), "last_repair": stop,
              "negative_couplings": control_volume_summary(mesh)["negative_couplings"], **stats,
