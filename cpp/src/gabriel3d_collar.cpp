@@ -36,9 +36,16 @@ namespace nonobtuse::gabriel3d {
 // split_subfacet makes are such Thales subfacets, all vertices and the encroacher within 1e-15 r of the sphere, whose
 // circumcenter is the midpoint (refused above, so sigma is split); experiments/README.md has the variants tried.
 std::optional<P3> collar_split_point(const P3& p, const P3& q, const P3& c,
-                                     const std::function<bool(const P3&)>& held) {
+                                     const std::function<bool(const P3&)>& held, const std::array<double, 3>* normal) {
   const P3 m = CGAL::midpoint(p, q);
-  const K::Vector_3 d = c - m;
+  K::Vector_3 d = c - m;
+  // In the facet's plane: c is off it by its rounding, and the move below multiplies that by radius / |c - m| (fuzz
+  // seed 359: a point 0.032 off its facet at coordinates 1e6, radius / |c - m| near 1e7; the mesh enclosed 3e-8 less
+  // than the input). The projected direction is off the plane by the normal's rounding only.
+  if (normal) {
+    const K::Vector_3 n((*normal)[0], (*normal)[1], (*normal)[2]);
+    d = d - (d * n / (n * n)) * n;
+  }
   const double length = std::sqrt(CGAL::to_double(d.squared_length()));
   const double radius = 0.5 * std::sqrt(CGAL::to_double(CGAL::squared_distance(p, q)));
   // c at (or within rounding of) the midpoint: the ray's direction is then rounding noise and can leave the facet's
@@ -69,10 +76,13 @@ std::vector<bool> collared_segments(const PlcState& s) {
   return out;
 }
 
-std::optional<P3> facet_collar_point(const PlcState& s, const std::vector<bool>& collared, const Key& sub, const P3& c,
-                                     const std::function<bool(const P3&)>& held) {
+std::optional<P3> facet_collar_point(const PlcState& s, const Facet& facet, const std::vector<bool>& collared,
+                                     const Key& sub, const P3& c, const std::function<bool(const P3&)>& held) {
   if (!collared[s.subsegments.at(sub)]) return std::nullopt;
-  return collar_split_point(s.points[sub.first], s.points[sub.second], c, held);
+  const auto& u = facet.u;
+  const auto& v = facet.v;
+  const std::array<double, 3> normal{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  return collar_split_point(s.points[sub.first], s.points[sub.second], c, held, &normal);
 }
 
 }  // namespace nonobtuse::gabriel3d

@@ -3,6 +3,7 @@
 // points of the facet near the segment go on these circles instead of splitting the segment (the termination
 // argument is at collar_split_point's definition).
 #pragma once
+#include <array>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -17,10 +18,13 @@ namespace nonobtuse::gabriel3d {
 // `held` (an exact test: the point strictly inside the diametral ball of another subsegment of the facet, e.g. a
 // neighbour of [p, q] on its segment, whose ball is tangent to [p, q]'s at the shared end) is false for it. A
 // rounded point that fails is moved outward along the ray by relative steps of 2^-52, 2^-51, ... (at most 8 steps).
-// nullopt when c is the midpoint, when the steps do not get it out, or when the point is p or q. Cost: at most 8
-// calls of held.
+// nullopt when c is the midpoint, when the steps do not get it out, or when the point is p or q. `normal`: the unit
+// normal of the facet's plane, when known; the ray's direction is then projected onto the plane, so that the
+// rounding of c off the plane, which the move multiplies by radius / |c - m|, does not carry the point off it. Cost:
+// at most 8 calls of held.
 std::optional<P3> collar_split_point(const P3& p, const P3& q, const P3& c,
-                                     const std::function<bool(const P3&)>& held);
+                                     const std::function<bool(const P3&)>& held,
+                                     const std::array<double, 3>* normal = nullptr);
 
 // Every dihedral angle between two facets through an input segment (kind "dihedral", vertices {a, b}, facets: the
 // two facet ids), in degrees, floating point; read before refinement (unsplit segments). Cost: O(s f^2) for s
@@ -32,9 +36,10 @@ std::vector<InputAngle> dihedral_angles(const PlcState& s);
 // rule, which measured fewer points there). Cost: that of dihedral_angles.
 std::vector<bool> collared_segments(const PlcState& s);
 
-// collar_split_point for subsegment `sub` and a split point c of a facet through it, when sub's input segment is
-// collared (collared_segments); else nullopt. `held`: as for collar_split_point, over every subsegment of the facet.
-std::optional<P3> facet_collar_point(const PlcState& s, const std::vector<bool>& collared, const Key& sub, const P3& c,
-                                     const std::function<bool(const P3&)>& held);
+// collar_split_point for subsegment `sub` and a split point c of `facet` through it (with the facet's normal), when
+// sub's input segment is collared (collared_segments); else nullopt. `held`: as for collar_split_point, over every
+// subsegment of the facet.
+std::optional<P3> facet_collar_point(const PlcState& s, const Facet& facet, const std::vector<bool>& collared,
+                                     const Key& sub, const P3& c, const std::function<bool(const P3&)>& held);
 
 }  // namespace nonobtuse::gabriel3d

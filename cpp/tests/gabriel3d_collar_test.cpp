@@ -56,6 +56,27 @@ TEST(Gabriel3DCollar, RefusesADirectionThatIsRoundingNoise) {
   EXPECT_NEAR(y->y() - 1000.0, 1e-4, 1e-12);
 }
 
+TEST(Gabriel3DCollar, TheFacetsNormalKeepsTheMovedPointOnItsPlane) {
+  // A subsegment 2e4 long at coordinates 1e6 (a unit in the last place is 1.2e-10 there) in the facet z = 1e6, and a
+  // split point 1e-3 from its midpoint in the plane but one unit in the last place above it (as a rounded point
+  // can be): the move onto the circle (radius 1e4) multiplies that by 1e7. Along c - m the point lands 1e-3 off the
+  // plane; with the facet's normal the direction is projected onto the plane and the point stays on it.
+  const std::vector<P3> points{{1e6, 1e6, 1e6}, {1e6 + 2e4, 1e6, 1e6}};
+  const P3 m = CGAL::midpoint(points[0], points[1]);
+  const P3 c(m.x(), m.y() + 1e-3, std::nextafter(1e6, 2e6));
+  const std::vector<Key> chain{{0, 1}};
+  const auto held = held_by(chain, points);
+  ASSERT_FALSE(noisy_direction(m, c, 1e4));
+  const auto along = collar_split_point(points[0], points[1], c, held);
+  ASSERT_TRUE(along);
+  EXPECT_GT(along->z() - 1e6, 1e-4);
+  const std::array<double, 3> normal{0.0, 0.0, 1.0};
+  const auto y = collar_split_point(points[0], points[1], c, held, &normal);
+  ASSERT_TRUE(y);
+  EXPECT_EQ(y->z(), 1e6);
+  EXPECT_NEAR(y->y() - 1e6, 1e4, 1e-6);
+}
+
 TEST(Gabriel3DCollar, PointsOfTwoFacetsAtTenDegreesStayOutOfEveryPieceBall) {
   // The segment [0, 1] on the x axis cut into pieces at 0, 0.25, 0.375, 0.5, 1; facet F is the half-plane y > 0 of
   // z = 0, facet G the half-plane at 10 degrees from it. Split points strictly inside a piece's ball, in F or G.
