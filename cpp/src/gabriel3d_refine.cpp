@@ -240,7 +240,8 @@ std::optional<Stop> Refiner::split_subfacet(const SubfacetRef& r, bool require_f
   // The protected strategy's collar rule (gabriel3d_collar.cpp): onto the one hit subsegment's collar circle.
   const auto held = [&](const P3& y) { return !facet_subsegments_holding(r.facet, y).empty(); };
   if (protection_ && hit.size() == 1)
-    if (auto y = facet_collar_point(s_, facet, collared_, hit[0], center, held); y && !protection_->strictly_containing(*y))
+    if (auto y = facet_collar_point(s_, facet, collared_, hit[0], center, held);
+        y && !protection_->strictly_containing(*y))
       center = *y, hit.clear(), ball = nullptr;
   Q2 q = facet.project(center);
   FacetCDT::Locate_type lt;

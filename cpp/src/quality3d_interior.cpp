@@ -58,7 +58,7 @@ class InteriorRefiner {
                                                      bounds.sharp_dihedral_degrees, bounds.small_apex_degrees,
                                                      bounds.volume_sharp_degrees);
     spheres_ = std::make_unique<SphereIndex>(pts_, faces_, segments_);
-    for (auto e : mesh.left_alone) left_alone_.insert(element(e));
+    for (const auto& e : mesh.left_alone) left_alone_.insert(quality3d::element(e));
   }
 
   // Builds the Delaunay tetrahedralization and labels its cells; false when a subfacet or subsegment is not in it.
@@ -480,15 +480,11 @@ class InteriorRefiner {
   DT dt_;
   std::vector<Vertex> vertex_;
   std::priority_queue<Entry> queue_;
-  // A subfacet (a, b, c) or subsegment (a, b, -1) with its corners sorted (-1 last).
-  static std::array<int, 3> element(std::array<int, 3> e) {
-    std::sort(e.begin(), e.end() - (e[2] < 0 ? 1 : 0));
-    return e;
-  }
+  // The subfacet or subsegment at a SphereIndex row, as a boundary element (quality3d::element).
   std::array<int, 3> element_of(int row) const {
-    if (row >= 0) return element(faces_[static_cast<std::size_t>(row)]);
+    if (row >= 0) return quality3d::element(faces_[static_cast<std::size_t>(row)]);
     const Segment& s = segments_[static_cast<std::size_t>(-1 - row)];
-    return element({s[0], s[1], -1});
+    return quality3d::element({s[0], s[1], -1});
   }
   std::set<std::array<int, 3>> left_alone_;  // InteriorMesh::left_alone
   std::set<std::array<int, 3>> step_;        // what the last boundary step split for

@@ -3,8 +3,17 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 
 namespace nonobtuse::quality3d {
+
+std::array<int, 3> element(std::array<int, 3> e) {
+  if (e[0] > e[1]) std::swap(e[0], e[1]);
+  if (e[2] < 0) return e;
+  if (e[1] > e[2]) std::swap(e[1], e[2]);
+  if (e[0] > e[1]) std::swap(e[0], e[1]);
+  return e;
+}
 
 std::array<int, 4> sorted_corners(std::array<int, 4> k) {
   std::sort(k.begin(), k.end());
