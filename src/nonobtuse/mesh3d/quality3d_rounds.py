@@ -119,6 +119,8 @@ class InteriorRefiner:
     def left_alone_rows(self, mesh: TetMesh) -> np.ndarray:
         """self.cascades as rows (a, 3) of indices into mesh.points, -1 third for a subsegment (those whose
         corners are all points of mesh)."""
+        if not self.cascades:  # no dict of every point for every pass
+            return np.zeros((0, 3), dtype=np.int64)
         index = {tuple(p): i for i, p in enumerate(np.asarray(mesh.points, dtype=np.float64).tolist())}
         rows = [[index[c] for c in key] + [-1] * (3 - len(key)) for key in sorted(self.cascades)
                 if all(c in index for c in key)]
