@@ -6,7 +6,7 @@
 namespace nonobtuse::gabriel3d {
 
 Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool ignore_frame_artifacts,
-                          bool protect, bool mirror, bool stations, double cascade_floor) {
+                          bool protect, bool mirror, bool stations, const CascadeFloor& cascade_floor) {
   PlcState s = build_plc_state(plc);
   Refine3DResult out;
   out.diagnosis.smallest_angles = smallest_input_angles(s);
