@@ -173,6 +173,7 @@ bool Refiner::below_floor(const P3& a, const P3& b) {
 
 void Refiner::inserted(int m, const std::optional<Key>& split) {
   index_.add(m);
+  if (delaunay_) delaunay_->feed(s_.points);
   if (split)
     for (int end : {split->first, split->second})
       below_floor_ = below_floor_ || below_floor(s_.points[m], s_.points[end]);

@@ -74,6 +74,8 @@ class Refiner {
   std::optional<Stop> place_apex_stations();
   // Runs to convergence of the subfacets and subsegments, or to a stop.
   std::optional<Stop> run();
+  // Every point inserted from now on is fed to `delaunay` (DelaunayRounds::feed; nullptr: none is).
+  void feed(DelaunayRounds* delaunay) { delaunay_ = delaunay; }
   // Splits the encroached faces and subsegments of the restricted Delaunay mesh (which can differ from the
   // subfacets where points are cospherical). Sets *progress when a point was inserted.
   std::optional<Stop> repair(const Restricted& mesh, const std::vector<Key>& segments, const GabrielReport& report,
@@ -181,6 +183,7 @@ class Refiner {
   std::set<int> segment_sphere_points_;  // placed by place_protecting_points: where a segment leaves a ball
   std::set<int> arc_points_;             // placed on a ball's sphere by arc_split_point
   PointIndex index_;
+  DelaunayRounds* delaunay_ = nullptr;
   EncroachedSubsegments encroached_subsegments_;
   std::chrono::steady_clock::time_point start_;
   long last_encroached_segments_ = 0, last_encroached_facets_ = 0;
