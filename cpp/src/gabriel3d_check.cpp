@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "fork_join.h"
 #include "gabriel3d_index.h"
 #include "gabriel3d_scan_memo.h"
 
@@ -271,6 +272,10 @@ std::size_t CheckMemo::Hash::operator()(const std::array<int, 3>& k) const {
          static_cast<std::size_t>(k[2] + 1);
 }
 
+// check_gabriel_until forks from this many rows (a row is a kd-tree query and exact predicates, microseconds: the
+// thread's start is paid back many times over; fandisk.off's rounds check 6e4 rows).
+constexpr std::size_t kForkRows = 4096;
+
 GabrielReport check_gabriel_until(const std::vector<P3>& pts, const std::vector<Triangle>& faces,
                                   const std::vector<Segment>& segments, const std::function<bool()>& out_of_time,
                                   CheckMemo* memo) {
@@ -292,39 +297,82 @@ GabrielReport check_gabriel_until(const std::vector<P3>& pts, const std::vector<
       throw InvalidInput("segment " + std::to_string(s) + " has coincident ends");
   }
   PointIndex index(pts);
-  GabrielReport report;
   const int n = static_cast<int>(pts.size());
-  // With a memo: a simplex found clean against the points it knew is tested against the points added since only
-  // (when they are at most kMemoReach), the same answer; the memo then records what this check found clean.
-  auto deepest = [&](int a, int b, int c) {
-    if (!memo) return deepest_encroacher(pts, index, a, b, c, &report.candidates);
-    std::array<int, 3> k{a, b, c};
-    if (c < 0) k = {std::min(a, b), std::max(a, b), -1};
-    else std::sort(k.begin(), k.end());
-    auto it = memo->clean_below.find(k);
-    const bool known = it != memo->clean_below.end() && n - it->second <= kMemoReach;
-    Encroachment e = known ? deepest_since(pts, a, b, c, it->second, &report.candidates)
-                           : deepest_encroacher(pts, index, a, b, c, &report.candidates);
-    if (e.vertex < 0) memo->clean_below[k] = n;
-    else if (it != memo->clean_below.end()) memo->clean_below.erase(it);
-    return e;
+  const std::size_t rows = faces.size() + segments.size();  // the faces' rows, then the segments'
+  // The rows run in two halves on two threads from kForkRows rows, each half with its own part of the report. With a
+  // memo, a simplex found clean against the points it knew is tested against the points added since only (when
+  // they are at most kMemoReach), the same answer; the halves only read the memo (each row keeps where its entry
+  // was), and the rows then record in order what they found clean.
+  struct Half {
+    GabrielReport report;
+    std::size_t reached = 0;  // rows [begin, reached) checked: the rest ran out of time
   };
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    if (out_of_time()) {
-      report.unchecked_faces = faces.size() - f;
-      report.unchecked_segments = segments.size();
-      return report;
+  std::vector<std::array<int, 3>> keys(memo ? rows : 0);
+  using Entry = std::unordered_map<std::array<int, 3>, int, CheckMemo::Hash>::iterator;
+  std::vector<Entry> entries(memo ? rows : 0);
+  if (memo) memo->clean_below.reserve(memo->clean_below.size() + rows);  // no rehash: the entries stay valid
+  auto corners = [&](std::size_t r) -> std::array<int, 3> {
+    if (r < faces.size()) return {faces[r][0], faces[r][1], faces[r][2]};
+    const Segment& g = segments[r - faces.size()];
+    return {g[0], g[1], -1};
+  };
+  auto check = [&](std::size_t begin, std::size_t end, Half& half) {
+    for (half.reached = begin; half.reached < end; ++half.reached) {
+      if (out_of_time()) return;
+      const std::size_t r = half.reached;
+      const auto [a, b, c] = corners(r);
+      Encroachment e;
+      if (!memo) {
+        e = deepest_encroacher(pts, index, a, b, c, &half.report.candidates);
+      } else {
+        std::array<int, 3>& k = keys[r];
+        k = {a, b, c};
+        if (c < 0) k = {std::min(a, b), std::max(a, b), -1};
+        else std::sort(k.begin(), k.end());
+        entries[r] = memo->clean_below.find(k);
+        const bool known = entries[r] != memo->clean_below.end() && n - entries[r]->second <= kMemoReach;
+        e = known ? deepest_since(pts, a, b, c, entries[r]->second, &half.report.candidates)
+                  : deepest_encroacher(pts, index, a, b, c, &half.report.candidates);
+      }
+      if (e.vertex < 0) continue;
+      const bool face = r < faces.size();
+      (face ? half.report.faces : half.report.segments)
+          .push_back({static_cast<int>(face ? r : r - faces.size()), e.vertex, e.depth});
     }
-    Encroachment e = deepest(faces[f][0], faces[f][1], faces[f][2]);
-    if (e.vertex >= 0) report.faces.push_back({static_cast<int>(f), e.vertex, e.depth});
+  };
+  Half first, second;
+  const bool parallel = rows >= kForkRows;
+  const std::size_t middle = parallel ? rows / 2 : rows;
+  fork_join(parallel, [&] { check(0, middle, first); }, [&] { check(middle, rows, second); });
+  GabrielReport report;
+  report.candidates = first.report.candidates + second.report.candidates;
+  for (const Half* half : {&first, &second}) {
+    report.faces.insert(report.faces.end(), half->report.faces.begin(), half->report.faces.end());
+    report.segments.insert(report.segments.end(), half->report.segments.begin(), half->report.segments.end());
   }
-  for (std::size_t s = 0; s < segments.size(); ++s) {
-    if (out_of_time()) {
-      report.unchecked_segments = segments.size() - s;
-      return report;
+  // Rows not reached (time_limit): those of the first half from where it stopped, and of the second.
+  auto unchecked = [&](std::size_t from, std::size_t to) {
+    for (std::size_t r = from; r < to; ++r) ++(r < faces.size() ? report.unchecked_faces : report.unchecked_segments);
+  };
+  unchecked(first.reached, middle);
+  unchecked(second.reached, rows);
+  if (memo) {
+    std::size_t next_face = 0, next_segment = 0;  // the encroached rows, in row order
+    for (std::size_t r = 0; r < rows; ++r) {
+      if ((r < middle && r >= first.reached) || r >= second.reached) continue;
+      const bool face = r < faces.size();
+      const auto& found = face ? report.faces : report.segments;
+      std::size_t& next = face ? next_face : next_segment;
+      const int row = static_cast<int>(face ? r : r - faces.size());
+      if (next < found.size() && found[next].index == row) {
+        ++next;
+        memo->clean_below.erase(keys[r]);  // (by key: a simplex listed twice would erase its entry twice)
+      } else if (entries[r] != memo->clean_below.end()) {
+        entries[r]->second = n;
+      } else {
+        memo->clean_below.emplace(keys[r], n);
+      }
     }
-    Encroachment e = deepest(segments[s][0], segments[s][1], -1);
-    if (e.vertex >= 0) report.segments.push_back({static_cast<int>(s), e.vertex, e.depth});
   }
   return report;
 }

@@ -132,8 +132,9 @@ struct CheckMemo {
   std::unordered_map<std::array<int, 3>, int, Hash> clean_below;
 };
 
-// check_gabriel on points already in the kernel's type. Stops when out_of_time() (asked before each face and
-// segment) returns true: the rows not reached are counted as unchecked_faces / unchecked_segments. memo (kept
+// check_gabriel on points already in the kernel's type, on two threads from a few thousand rows (faces and segments;
+// the report does not depend on it). Stops when out_of_time() (asked before each row, from both threads) returns
+// true: the rows not reached are counted as unchecked_faces / unchecked_segments. memo (kept
 // across the checks of one refinement, whose points only grow): the simplices found clean before are tested against
 // the points added since only; the report is the same but for `candidates`.
 GabrielReport check_gabriel_until(const std::vector<P3>& points, const std::vector<Triangle>& faces,

@@ -10,6 +10,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -123,6 +124,14 @@ class DelaunayRounds {
  public:
   DelaunayRounds();
   ~DelaunayRounds();
+  // Runs work() while a second thread inserts the points feed() hands it (the points of the state's list from the
+  // tetrahedralization's size on, as work() appends them), so that the insertion overlaps the refinement that makes
+  // the points instead of following it in restrict() (a seventh of refine_gabriel on fandisk.off). One thread where
+  // `parallel` is false or no thread can be started. An exception of work() or of the insertion is rethrown after
+  // both ended, work()'s first.
+  void insert_while(bool parallel, const std::function<void()>& work);
+  // Copies the points [those handed before, points.size()) to the inserting thread, if insert_while runs one.
+  void feed(const std::vector<P3>& points);
   Restricted restrict(const PlcState& s, const PLC3& plc);
   // The edges (point index pairs, of points restrict() has inserted) that are no edges of the tetrahedralization,
   // in the given order.

@@ -33,7 +33,7 @@ std::optional<Stop> Refiner::budget_left() const {
   if (below_floor_)
     return Stop{RefineStatus::MinLengthReached,
                 "a split left a subsegment shorter than the first pass's cascade floor (" +
-                    length_text(cascade_floor_) + ", 1/1000 of the input's smallest scale)"};
+                    length_text(*floor_) + ", 1/1000 of the input's smallest scale)"};
   return std::nullopt;
 }
 
@@ -162,12 +162,21 @@ bool Refiner::protected_piece(const Key& sub) const {
          (segment_sphere_points_.count(a) && sphere_of(b, a) > 0);
 }
 
+bool Refiner::below_floor(const P3& a, const P3& b) {
+  auto shorter = [&](double length) {
+    return CGAL::compare_squared_distance(a, b, length * length) == CGAL::SMALLER;
+  };
+  if (!(cascade_floor_.bound > 0) || !shorter(cascade_floor_.bound)) return false;
+  if (!floor_) floor_ = cascade_floor_.evaluate();
+  return *floor_ > 0 && shorter(*floor_);
+}
+
 void Refiner::inserted(int m, const std::optional<Key>& split) {
   index_.add(m);
-  if (split && cascade_floor_ > 0)
+  if (delaunay_) delaunay_->feed(s_.points);
+  if (split)
     for (int end : {split->first, split->second})
-      below_floor_ = below_floor_ || CGAL::compare_squared_distance(s_.points[m], s_.points[end],
-                                                                    cascade_floor_ * cascade_floor_) == CGAL::SMALLER;
+      below_floor_ = below_floor_ || below_floor(s_.points[m], s_.points[end]);
   encroached_subsegments_.added(m, split);
 #ifdef NONOBTUSE_CHECK_INVARIANTS
   check_invariants(s_);

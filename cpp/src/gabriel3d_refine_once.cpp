@@ -5,8 +5,12 @@
 
 namespace nonobtuse::gabriel3d {
 
+// From this many points (the state's, at the start of a round) a second thread inserts them into the Delaunay
+// tetrahedralization as the refiner makes them (DelaunayRounds::insert_while); below, a pass takes milliseconds.
+constexpr std::size_t kOverlapFrom = 1024;
+
 Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool ignore_frame_artifacts,
-                          bool protect, bool mirror, bool stations, double cascade_floor) {
+                          bool protect, bool mirror, bool stations, const CascadeFloor& cascade_floor) {
   PlcState s = build_plc_state(plc);
   Refine3DResult out;
   out.diagnosis.smallest_angles = smallest_input_angles(s);
@@ -41,8 +45,9 @@ Refine3DResult refine_once(const PLC3& plc, const Refine3DOptions& options, bool
   bool clean = false;
   CheckMemo check_memo;  // what the exact checks of the rounds found clean
   DelaunayRounds delaunay;  // each round inserts the new points only
+  refiner.feed(&delaunay);
   for (;;) {
-    if (!stop) stop = refiner.run();
+    if (!stop) delaunay.insert_while(s.points.size() >= kOverlapFrom, [&] { stop = refiner.run(); });
     mesh = delaunay.restrict(s, plc);
     refiner.add_work(s.points.size());
     out.points.clear();

@@ -47,11 +47,11 @@ std::vector<std::size_t> scattered_order(const std::vector<Triangle>& faces);
 
 class Refiner {
  public:
-  // cascade_floor > 0: stop (min_length_reached) once a split leaves a subsegment shorter (refine_once).
+  // cascade_floor: stop (min_length_reached) once a split leaves a subsegment shorter (refine_once).
   Refiner(PlcState& s, const Refine3DOptions& o, bool ignore_frame_artifacts, const Protection* protection,
-          bool mirror, const Stations* stations = nullptr, double cascade_floor = 0.0)
+          bool mirror, const Stations* stations = nullptr, CascadeFloor cascade_floor = {})
       : s_(s), o_(o), ignore_frame_artifacts_(ignore_frame_artifacts), protection_(protection), stations_(stations),
-        cascade_floor_(cascade_floor),
+        cascade_floor_(std::move(cascade_floor)),
         index_(s.points),
         encroached_subsegments_(s, index_), start_(std::chrono::steady_clock::now()), acute_(s.n_input, false),
         collared_(protection ? collared_segments(s) : std::vector<bool>{}),
@@ -74,6 +74,8 @@ class Refiner {
   std::optional<Stop> place_apex_stations();
   // Runs to convergence of the subfacets and subsegments, or to a stop.
   std::optional<Stop> run();
+  // Every point inserted from now on is fed to `delaunay` (DelaunayRounds::feed; nullptr: none is).
+  void feed(DelaunayRounds* delaunay) { delaunay_ = delaunay; }
   // Splits the encroached faces and subsegments of the restricted Delaunay mesh (which can differ from the
   // subfacets where points are cospherical). Sets *progress when a point was inserted.
   std::optional<Stop> repair(const Restricted& mesh, const std::vector<Key>& segments, const GabrielReport& report,
@@ -172,11 +174,16 @@ class Refiner {
   bool ignore_frame_artifacts_;
   const Protection* protection_;  // nullptr: no protecting balls
   const Stations* stations_;      // nullptr: no stations
-  double cascade_floor_;
-  bool below_floor_ = false;  // a split left a subsegment shorter than cascade_floor_
+  // Is a subsegment from a to b below the cascade floor (evaluated on first need, then kept in floor_)?
+  bool below_floor(const P3& a, const P3& b);
+
+  CascadeFloor cascade_floor_;
+  std::optional<double> floor_;  // cascade_floor_.evaluate(), once called
+  bool below_floor_ = false;     // a split left a subsegment shorter than the floor
   std::set<int> segment_sphere_points_;  // placed by place_protecting_points: where a segment leaves a ball
   std::set<int> arc_points_;             // placed on a ball's sphere by arc_split_point
   PointIndex index_;
+  DelaunayRounds* delaunay_ = nullptr;
   EncroachedSubsegments encroached_subsegments_;
   std::chrono::steady_clock::time_point start_;
   long last_encroached_segments_ = 0, last_encroached_facets_ = 0;

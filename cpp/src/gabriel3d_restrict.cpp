@@ -5,10 +5,15 @@
 
 #include <algorithm>
 #include <array>
+#include <condition_variable>
 #include <cstdint>
+#include <exception>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <numeric>
+#include <system_error>
+#include <thread>
 #include <tuple>
 #include <utility>
 
@@ -304,12 +309,80 @@ Restricted restrict_triangulation(const PlcState& s, const PLC3& plc, DT3& dt) {
 
 Restricted restrict_delaunay(const PlcState& s, const PLC3& plc) { return DelaunayRounds().restrict(s, plc); }
 
+// insert_while's inserting thread takes batches of at least this many points (CGAL sorts each spatially), and what
+// is left once work() ended.
+constexpr std::size_t kInsertBatch = 1024;
+
 struct DelaunayRounds::Kept {
   DT3 dt;
+  // Between feed() and the inserting thread of insert_while: the points handed over and not yet taken, whether the
+  // thread runs, and how many points of the list were handed (a prefix, like the tetrahedralization's vertices).
+  std::mutex mutex;
+  std::condition_variable ready;
+  std::vector<std::pair<P3, int>> queue;
+  bool open = false;
+  std::size_t fed = 0;
 };
 
 DelaunayRounds::DelaunayRounds() : kept_(std::make_unique<Kept>()) {}
 DelaunayRounds::~DelaunayRounds() = default;
+
+void DelaunayRounds::insert_while(bool parallel, const std::function<void()>& work) {
+  Kept& k = *kept_;
+  k.fed = k.dt.number_of_vertices();
+  k.open = parallel;
+  std::exception_ptr inserting;
+  std::thread inserter;
+  if (parallel) try {
+      inserter = std::thread([&k, &inserting] {
+        try {
+          std::vector<std::pair<P3, int>> batch;
+          for (bool open = true; open;) {
+            {
+              std::unique_lock<std::mutex> lock(k.mutex);
+              k.ready.wait(lock, [&k] { return k.queue.size() >= kInsertBatch || !k.open; });
+              batch.swap(k.queue);
+              open = k.open;
+            }
+            k.dt.insert(batch.begin(), batch.end());
+            batch.clear();
+          }
+        } catch (...) {
+          inserting = std::current_exception();
+        }
+      });
+    } catch (const std::system_error&) {
+      k.open = false;
+    }
+  std::exception_ptr working;
+  try {
+    work();
+  } catch (...) {
+    working = std::current_exception();
+  }
+  if (inserter.joinable()) {
+    {
+      std::lock_guard<std::mutex> lock(k.mutex);
+      k.open = false;
+    }
+    k.ready.notify_one();
+    inserter.join();
+  }
+  if (working) std::rethrow_exception(working);
+  if (inserting) std::rethrow_exception(inserting);
+}
+
+void DelaunayRounds::feed(const std::vector<P3>& points) {
+  Kept& k = *kept_;
+  bool full = false;
+  {
+    std::lock_guard<std::mutex> lock(k.mutex);
+    if (!k.open) return;
+    for (; k.fed < points.size(); ++k.fed) k.queue.emplace_back(points[k.fed], static_cast<int>(k.fed));
+    full = k.queue.size() >= kInsertBatch;
+  }
+  if (full) k.ready.notify_one();
+}
 
 Restricted DelaunayRounds::restrict(const PlcState& s, const PLC3& plc) {
   DT3& dt = kept_->dt;

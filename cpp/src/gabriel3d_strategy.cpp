@@ -59,7 +59,7 @@ void set_limits(Refine3DResult& r, const Refine3DOptions& options) {
 // The second attempt gets the work (and time) the first left; it runs only when some is left (else it would return
 // the bare input).
 Refine3DResult refine_with(const PLC3& plc, const Refine3DOptions& options, bool protect, bool mirror,
-                           bool stations = false, double cascade_floor = 0.0) {
+                           bool stations = false, const gabriel3d::CascadeFloor& cascade_floor = {}) {
   Refine3DResult first = gabriel3d::refine_once(plc, options, true, protect, mirror, stations, cascade_floor);
   set_limits(first, options);
   if (first.status != RefineStatus::Stalled || first.seconds >= options.time_limit || first.work >= options.max_work)
@@ -94,21 +94,13 @@ Refine3DOptions protected_limits(const Refine3DOptions& given, Refine3DOptions r
   return resolved;
 }
 
-// The input's own smallest scale, a floor for a limit (floating point): the smaller of the distance between the two
-// closest input points (an edge of their Delaunay triangulation) and the smallest altitude of an input triangle
-// (a needle: a vertex that close to a segment it is not on). Infinity for fewer than two points.
-double smallest_input_scale(const PLC3& plc) {
-  std::vector<gabriel3d::P3> points;
-  points.reserve(plc.points.size());
-  for (const Point3& p : plc.points) points.push_back(gabriel3d::to_cgal(p));
-  const CGAL::Delaunay_triangulation_3<gabriel3d::K> dt(points.begin(), points.end());
-  double d2 = std::numeric_limits<double>::infinity();
-  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
-    d2 = std::min(d2, CGAL::squared_distance(e->first->vertex(e->second)->point(),
-                                             e->first->vertex(e->third)->point()));
-  double scale = std::sqrt(d2);
+// The smallest altitude of the input's triangles (a needle: a vertex that close to a segment it is not on), floating
+// point; infinity without triangles.
+double smallest_altitude(const PLC3& plc) {
+  double scale = std::numeric_limits<double>::infinity();
   for (const Triangle& t : plc.triangles) {
-    const gabriel3d::P3 &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
+    const gabriel3d::P3 a = gabriel3d::to_cgal(plc.points[t[0]]), b = gabriel3d::to_cgal(plc.points[t[1]]),
+                        c = gabriel3d::to_cgal(plc.points[t[2]]);
     const double longest2 = std::max({CGAL::squared_distance(a, b), CGAL::squared_distance(b, c),
                                       CGAL::squared_distance(c, a)});
     const double twice_area = std::sqrt(CGAL::cross_product(b - a, c - a).squared_length());
@@ -117,19 +109,40 @@ double smallest_input_scale(const PLC3& plc) {
   return scale;
 }
 
+// The distance between the two closest input points (an edge of their Delaunay triangulation), floating point;
+// infinity for fewer than two points.
+double closest_pair(const PLC3& plc) {
+  std::vector<gabriel3d::P3> points;
+  points.reserve(plc.points.size());
+  for (const Point3& p : plc.points) points.push_back(gabriel3d::to_cgal(p));
+  const CGAL::Delaunay_triangulation_3<gabriel3d::K> dt(points.begin(), points.end());
+  double d2 = std::numeric_limits<double>::infinity();
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
+    d2 = std::min(d2, CGAL::squared_distance(e->first->vertex(e->second)->point(),
+                                             e->first->vertex(e->third)->point()));
+  return std::sqrt(d2);
+}
+
 // The first pass's cascade floor where the protected rerun follows (with its own limits, which min_length left to the
-// default gives it): the pass stops once a split leaves a subsegment shorter than 1/1000 of the input's smallest scale
-// (smallest_input_scale). A first pass caught in a cascade down a small input angle splits until min_length (1e-6 of
-// the diagonal) stops it, and the rerun starts from the input anyway: below the input's own scale, the first pass only
-// costs time. Measured on the corpus (refine_gabriel with protected_fallback=False, 2026-12-07): converging first
-// passes end with their smallest subsegments at >= 0.03 of that scale (rotor.off; anchor.off 0.044, a needle box
-// 0.65), the cascades on the two Schonhardt prisms at 3-7e-6 of it (shared schonhardt.off: 1,629 points in 73 ms,
-// 275 in 12 ms with the floor), part.off's at 9.3e-4; on u.off, mc_gyroid.off and step.off (needles, or points
-// closer than min_length) the floor is below min_length and off. 0: no floor.
-double cascade_floor(const PLC3& plc, const Refine3DOptions& given, const Refine3DOptions& resolved) {
-  if (!resolved.protected_fallback || !given.fallback_own_limits || given.min_length >= 0) return 0.0;
-  const double floor = 1e-3 * smallest_input_scale(plc);
-  return floor > resolved.min_length && std::isfinite(floor) ? floor : 0.0;
+// default gives it): the pass stops once a split leaves a subsegment shorter than 1/1000 of the input's smallest scale,
+// the smaller of the distance between its two closest points and the smallest altitude of its triangles. A first pass
+// caught in a cascade down a small input angle splits until min_length (1e-6 of the diagonal) stops it, and the rerun
+// starts from the input anyway: below the input's own scale, the first pass only costs time. Measured on the corpus
+// (refine_gabriel with protected_fallback=False, 2026-12-07): converging first passes end with their smallest
+// subsegments at >= 0.03 of that scale (rotor.off; anchor.off 0.044, a needle box 0.65), the cascades on the two
+// Schonhardt prisms at 3-7e-6 of it (shared schonhardt.off: 1,629 points in 73 ms, 275 in 12 ms with the floor),
+// part.off's at 9.3e-4; on u.off, mc_gyroid.off and step.off (needles, or points closer than min_length) the floor is
+// below min_length and off. The smallest altitude is the cheap bound; the closest pair waits for a subsegment under it
+// (its Delaunay tetrahedralization was 5% of refine_gabriel on fandisk.off, whose pass never comes that close).
+gabriel3d::CascadeFloor cascade_floor(const PLC3& plc, const Refine3DOptions& given, const Refine3DOptions& resolved) {
+  if (!resolved.protected_fallback || !given.fallback_own_limits || given.min_length >= 0) return {};
+  const double altitude = smallest_altitude(plc), min_length = resolved.min_length;
+  const double bound = 1e-3 * altitude;
+  if (!(bound > min_length)) return {};  // (infinite without triangles: the closest pair decides)
+  return {bound, [&plc, altitude, min_length] {
+            const double floor = 1e-3 * std::min(closest_pair(plc), altitude);
+            return floor > min_length && std::isfinite(floor) ? floor : 0.0;
+          }};
 }
 
 }  // namespace
@@ -148,7 +161,7 @@ Refine3DResult refine_gabriel(const PLC3& plc, const Refine3DOptions& given) {
   Refine3DOptions first_options = options;
   if (alone) first_options.split = SplitRule::Shells;
   Refine3DResult first = refine_with(plc, first_options, alone, options.split == SplitRule::Mirrored, false,
-                                     alone ? 0.0 : cascade_floor(plc, given, options));
+                                     alone ? gabriel3d::CascadeFloor{} : cascade_floor(plc, given, options));
   first.strategy = rule_name(options.split);
   if (alone || !options.protected_fallback || first.status == RefineStatus::Converged ||
       first.seconds >= options.time_limit)

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <random>
 
 #include "gabriel3d_index.h"
 #include "gabriel3d_refiner.h"
@@ -128,6 +130,141 @@ TEST(Gabriel3DRepairOrder, DependsOnTheSetOfFacesAlone) {
   // Scattered: not the order of the smallest corner, which keeps the faces around a point together.
   const std::vector<Triangle> result = in_scattered_order(faces);
   EXPECT_FALSE(std::is_sorted(result.begin(), result.end()));
+}
+
+}  // namespace
+}  // namespace nonobtuse::gabriel3d
+
+namespace nonobtuse::gabriel3d {
+namespace {
+
+// Random faces and segments over random points, each between a point and two of its 8 nearest (so that some are
+// encroached and most not): enough rows (5,500) that the check runs them in two halves.
+struct RandomRows {
+  std::vector<P3> points;
+  std::vector<Triangle> faces;
+  std::vector<Segment> segments;
+};
+
+RandomRows random_rows(int n, int faces, int segments, unsigned seed) {
+  RandomRows r;
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> coordinate(0.0, 1.0);
+  for (int i = 0; i < n; ++i) r.points.emplace_back(coordinate(random), coordinate(random), coordinate(random));
+  std::vector<std::vector<int>> near(n);
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j)
+      if (j != i) near[i].push_back(j);
+    std::partial_sort(near[i].begin(), near[i].begin() + 8, near[i].end(), [&](int j, int k) {
+      return CGAL::squared_distance(r.points[i], r.points[j]) < CGAL::squared_distance(r.points[i], r.points[k]);
+    });
+    near[i].resize(8);
+  }
+  std::uniform_int_distribution<int> vertex(0, n - 1), neighbour(0, 7);
+  while (static_cast<int>(r.faces.size()) < faces) {
+    const int a = vertex(random);
+    const Triangle t{a, near[a][neighbour(random)], near[a][neighbour(random)]};
+    if (t[1] != t[2] && !CGAL::collinear(r.points[t[0]], r.points[t[1]], r.points[t[2]])) r.faces.push_back(t);
+  }
+  while (static_cast<int>(r.segments.size()) < segments) {
+    const int a = vertex(random);
+    r.segments.push_back({a, near[a][neighbour(random)]});
+  }
+  return r;
+}
+
+// Is some point strictly inside the diametral sphere of face abc (c >= 0) or segment ab, by the exact predicate on
+// every point?
+bool encroached_by_any(const std::vector<P3>& points, int a, int b, int c) {
+  for (int t = 0; t < static_cast<int>(points.size()); ++t) {
+    if (t == a || t == b || t == c) continue;
+    const auto side = c < 0 ? CGAL::side_of_bounded_sphere(points[a], points[b], points[t])
+                            : CGAL::side_of_bounded_sphere(points[a], points[b], points[c], points[t]);
+    if (side == CGAL::ON_BOUNDED_SIDE) return true;
+  }
+  return false;
+}
+
+// The report's rows ascending, each encroached by its named vertex, and every row a brute-force scan finds
+// encroached among them.
+void expect_brute_force(const RandomRows& r, const GabrielReport& report) {
+  std::vector<bool> face(r.faces.size(), false), segment(r.segments.size(), false);
+  for (std::size_t i = 0; i < report.faces.size(); ++i) {
+    const Encroachment& e = report.faces[i];
+    if (i > 0) EXPECT_LT(report.faces[i - 1].index, e.index);
+    const Triangle& t = r.faces[e.index];
+    EXPECT_EQ(CGAL::side_of_bounded_sphere(r.points[t[0]], r.points[t[1]], r.points[t[2]], r.points[e.vertex]),
+              CGAL::ON_BOUNDED_SIDE);
+    face[e.index] = true;
+  }
+  for (std::size_t i = 0; i < report.segments.size(); ++i) {
+    const Encroachment& e = report.segments[i];
+    if (i > 0) EXPECT_LT(report.segments[i - 1].index, e.index);
+    const Segment& g = r.segments[e.index];
+    EXPECT_EQ(CGAL::side_of_bounded_sphere(r.points[g[0]], r.points[g[1]], r.points[e.vertex]),
+              CGAL::ON_BOUNDED_SIDE);
+    segment[e.index] = true;
+  }
+  for (std::size_t f = 0; f < r.faces.size(); ++f)
+    EXPECT_EQ(face[f], encroached_by_any(r.points, r.faces[f][0], r.faces[f][1], r.faces[f][2])) << "face " << f;
+  for (std::size_t s = 0; s < r.segments.size(); ++s)
+    EXPECT_EQ(segment[s], encroached_by_any(r.points, r.segments[s][0], r.segments[s][1], -1)) << "segment " << s;
+}
+
+TEST(Gabriel3DCheckHalves, TheTwoHalvesFindWhatABruteForceScanFinds) {
+  const RandomRows r = random_rows(400, 5000, 500, 7);
+  const GabrielReport report = check_gabriel_until(r.points, r.faces, r.segments, [] { return false; });
+  ASSERT_FALSE(report.faces.empty());
+  ASSERT_FALSE(report.segments.empty());
+  EXPECT_LT(report.faces.size(), r.faces.size());
+  expect_brute_force(r, report);
+}
+
+TEST(Gabriel3DCheckHalves, TheMemoOfAnEarlierCheckChangesNoFinding) {
+  // The rows over the first 300 points checked first (the memo records what they found clean), then over all 400.
+  RandomRows r = random_rows(400, 5000, 500, 11);
+  RandomRows fewer = random_rows(300, 5000, 500, 11);
+  r.faces = fewer.faces;
+  r.segments = fewer.segments;
+  fewer.points.assign(r.points.begin(), r.points.begin() + 300);
+  CheckMemo memo;
+  check_gabriel_until(fewer.points, fewer.faces, fewer.segments, [] { return false; }, &memo);
+  EXPECT_FALSE(memo.clean_below.empty());
+  const GabrielReport remembered = check_gabriel_until(r.points, r.faces, r.segments, [] { return false; }, &memo);
+  const GabrielReport fresh = check_gabriel_until(r.points, r.faces, r.segments, [] { return false; });
+  expect_brute_force(r, remembered);
+  for (const auto& [found, expected] : {std::pair{&remembered.faces, &fresh.faces},
+                                        std::pair{&remembered.segments, &fresh.segments}}) {
+    ASSERT_EQ(found->size(), expected->size());
+    for (std::size_t i = 0; i < found->size(); ++i) {
+      EXPECT_EQ((*found)[i].index, (*expected)[i].index);
+      EXPECT_EQ((*found)[i].vertex, (*expected)[i].vertex);
+    }
+  }
+  // The memo now: every row the check found clean at 400 points, none it found encroached.
+  std::size_t encroached = 0;
+  for (std::size_t f = 0, next = 0; f < r.faces.size(); ++f) {
+    Triangle k = r.faces[f];
+    std::sort(k.begin(), k.end());
+    const bool listed = next < fresh.faces.size() && fresh.faces[next].index == static_cast<int>(f);
+    next += listed;
+    encroached += listed;
+    const auto it = memo.clean_below.find(k);
+    if (listed) EXPECT_EQ(it, memo.clean_below.end()) << "face " << f;
+    else EXPECT_TRUE(it != memo.clean_below.end() && it->second == 400) << "face " << f;
+  }
+  EXPECT_GT(encroached, 0u);
+}
+
+TEST(Gabriel3DCheckHalves, RowsNotReachedInTimeAreCountedInBothHalves) {
+  const RandomRows r = random_rows(400, 5000, 500, 13);
+  std::atomic<int> asked{0};  // out of time after 1,000 rows in all (the halves ask from two threads)
+  const GabrielReport report =
+      check_gabriel_until(r.points, r.faces, r.segments, [&] { return ++asked > 1000; });
+  const std::size_t unchecked = report.unchecked_faces + report.unchecked_segments;
+  EXPECT_EQ(unchecked, r.faces.size() + r.segments.size() - 1000);
+  EXPECT_GT(report.unchecked_segments, 0u);  // the second half's segments
+  EXPECT_GT(report.unchecked_faces, 0u);     // the first half's faces
 }
 
 }  // namespace

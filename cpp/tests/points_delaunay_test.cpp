@@ -104,5 +104,43 @@ TEST(DelaunayRounds, TheKeptTriangulationGivesWhatARebuildGivesRoundAfterRound) 
   EXPECT_EQ(s.points.size(), 8u + 12u * 7u);
 }
 
+// Splits every subsegment of the state at its midpoint, feeding each new point to `rounds`.
+void split_every_subsegment(gabriel3d::PlcState& s, gabriel3d::DelaunayRounds& rounds) {
+  std::vector<gabriel3d::Key> pieces;
+  for (const auto& [piece, parent] : s.subsegments) pieces.push_back(piece);
+  for (const auto& [a, b] : pieces) {
+    gabriel3d::split_subsegment(s, a, b, 0.5, CGAL::midpoint(s.points[a], s.points[b]));
+    rounds.feed(s.points);
+  }
+}
+
+TEST(DelaunayRounds, PointsInsertedWhileTheRoundRunsGiveWhatARebuildGives) {
+  const PLC3 plc = cube_of_square_facets();
+  gabriel3d::PlcState s = gabriel3d::build_plc_state(plc);
+  gabriel3d::DelaunayRounds rounds;
+  // Rounds of 12, 24, ..., 1536 new points: the last round's first 1024 in a batch the inserting thread takes while
+  // the work runs, the other rounds' points when it ended; every point cospherical with many others.
+  for (int round = 0; round < 8; ++round) {
+    rounds.insert_while(true, [&] { split_every_subsegment(s, rounds); });
+    expect_same(rounds.restrict(s, plc), gabriel3d::restrict_delaunay(s, plc));
+  }
+  EXPECT_EQ(s.points.size(), 8u + 12u * 255u);
+}
+
+TEST(DelaunayRounds, AnExceptionOfTheWorkIsRethrownAfterTheInsertingThreadEnded) {
+  const PLC3 plc = cube_of_square_facets();
+  gabriel3d::PlcState s = gabriel3d::build_plc_state(plc);
+  gabriel3d::DelaunayRounds rounds;
+  EXPECT_THROW(rounds.insert_while(true,
+                                   [&] {
+                                     split_every_subsegment(s, rounds);
+                                     throw InternalError("the work failed");
+                                   }),
+               InternalError);
+  // the points fed before the exception are in the kept triangulation, the rest follow in restrict()
+  split_every_subsegment(s, rounds);
+  expect_same(rounds.restrict(s, plc), gabriel3d::restrict_delaunay(s, plc));
+}
+
 }  // namespace
 }  // namespace nonobtuse
