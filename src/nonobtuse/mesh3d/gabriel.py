@@ -303,6 +303,8 @@ def refine_gabriel(
     callers that repair again before using the mesh.
     Guarantee: status == "converged" iff the exact check of the returned mesh passes. Deterministic.
     Cost: each round rescans all subsegments and subfacets (O(s log n)); meant for PLCs up to ~1e5 facets.
+    From 1,024 points a second thread builds each round's Delaunay tetrahedralization while the points are
+    made and takes half of the exact check; the result does not depend on it.
     Raises InvalidInputError for malformed PLCs (indices, duplicate points, degenerate or crossing facet
     edges).
     """
