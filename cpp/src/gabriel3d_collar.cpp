@@ -79,9 +79,7 @@ std::vector<bool> collared_segments(const PlcState& s) {
 std::optional<P3> facet_collar_point(const PlcState& s, const Facet& facet, const std::vector<bool>& collared,
                                      const Key& sub, const P3& c, const std::function<bool(const P3&)>& held) {
   if (!collared[s.subsegments.at(sub)]) return std::nullopt;
-  const auto& u = facet.u;
-  const auto& v = facet.v;
-  const std::array<double, 3> normal{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  const std::array<double, 3> normal = facet.normal();
   return collar_split_point(s.points[sub.first], s.points[sub.second], c, held, &normal);
 }
 

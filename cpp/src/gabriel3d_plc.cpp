@@ -104,6 +104,8 @@ Q2 Facet::project(const P3& p) const {
   return Q2(dot(d, u), dot(d, v));
 }
 
+std::array<double, 3> Facet::normal() const { return cross(u, v); }
+
 void mark_facet_domain(FacetCDT& cdt) {
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = FacetFaceInfo{};
   std::vector<FacetCDT::Face_handle> frontier;

@@ -46,6 +46,7 @@ struct Facet {
   FacetCDT cdt;
   std::unordered_map<int, FacetCDT::Vertex_handle> vertex;  // global point index -> vertex
   Q2 project(const P3& p) const;
+  std::array<double, 3> normal() const;  // u x v (rounded; unit to rounding)
 };
 
 // An input segment: a PLC segment or a facet boundary edge. Subsegments remember it as their parent.
