@@ -132,6 +132,20 @@ def test_exact_signs_agree_with_clear_float_values(coords):
     assert cv.negative_couplings == int((cv.signs < 0).sum())
 
 
+def test_on_a_grid_only_the_axis_edges_have_dual_areas():
+    # The Voronoi cells of a cubic grid are unit cubes: the dual face of an axis edge is a unit square (a part
+    # of one on the hull), that of a diagonal (length sqrt 2 or sqrt 3) is a point, and its area exactly 0.
+    # 40,014 tets: the core's interval filter works in blocks of 32,768 tets, so both blocks are checked.
+    g = np.stack(np.meshgrid(np.arange(40), np.arange(20), np.arange(10), indexing="ij"), -1)
+    points = g.reshape(-1, 3).astype(float)
+    tets = np.asarray(_core.delaunay_tetrahedra(points))
+    assert len(tets) > 2**15
+    cv = control_volumes3d(tetmesh(points, tets))
+    length2 = ((points[cv.edges[:, 1]] - points[cv.edges[:, 0]]) ** 2).sum(axis=1)
+    np.testing.assert_array_equal(cv.signs, (length2 == 1).astype(cv.signs.dtype))
+    assert cv.exact_evaluations >= int((length2 > 1).sum())
+
+
 def test_tets_flat_in_floating_point_get_exact_circumcenters_in_the_core_and_numpy():
     # The points of a UV sphere 30 x 40 (poles and 29 rings of 40): their Delaunay tetrahedralization has tets
     # of positive exact volume whose triple product is 0 in doubles (cocircular ring points). Their

@@ -38,24 +38,24 @@ struct Vec {
 };
 
 template <class NT>
-Vec<NT> operator-(const Vec<NT>& a, const Vec<NT>& b) {
+[[gnu::always_inline]] inline Vec<NT> operator-(const Vec<NT>& a, const Vec<NT>& b) {
   return {a.x - b.x, a.y - b.y, a.z - b.z};
 }
 template <class NT>
-Vec<NT> operator+(const Vec<NT>& a, const Vec<NT>& b) {
+[[gnu::always_inline]] inline Vec<NT> operator+(const Vec<NT>& a, const Vec<NT>& b) {
   return {a.x + b.x, a.y + b.y, a.z + b.z};
 }
 // The scalar's type is not deduced, so GMP expression templates (a / b) convert to NT.
 template <class NT>
-Vec<NT> scaled(const typename Vec<NT>::Scalar& s, const Vec<NT>& a) {
+[[gnu::always_inline]] inline Vec<NT> scaled(const typename Vec<NT>::Scalar& s, const Vec<NT>& a) {
   return {s * a.x, s * a.y, s * a.z};
 }
 template <class NT>
-NT dot(const Vec<NT>& a, const Vec<NT>& b) {
+[[gnu::always_inline]] inline NT dot(const Vec<NT>& a, const Vec<NT>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 template <class NT>
-Vec<NT> cross(const Vec<NT>& a, const Vec<NT>& b) {
+[[gnu::always_inline]] inline Vec<NT> cross(const Vec<NT>& a, const Vec<NT>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 template <class NT>
@@ -163,16 +163,13 @@ Vec<NT> triangle_circumcenter(const Vec<NT>& a, const Vec<NT>& b, const Vec<NT>&
   return a + Vec<NT>{num.x / den, num.y / den, num.z / den};
 }
 
-// Per edge in [from, to), the interval sum of its pieces (as above) in (tet, frame) order, into sum[e]; the tets
-// with no edge in the range are skipped. A denominator containing 0 (or an overflow) only widens the sum.
-void dual_area_intervals(const std::vector<Point3>& p, const std::vector<std::array<int, 4>>& tets,
-                         const std::vector<int>& edge_of, int from, int to,
-                         std::vector<CGAL::Interval_nt_advanced>& sum) {
+// The interval pieces (as above) of tets [from, to) into piece[6 (t - from) + f], f the frame. A denominator
+// containing 0 (or an overflow) only widens a piece.
+void interval_pieces(const std::vector<Point3>& p, const std::vector<std::array<int, 4>>& tets, std::size_t from,
+                     std::size_t to, CGAL::Interval_nt_advanced* piece) {
   using I = CGAL::Interval_nt_advanced;
   CGAL::Protect_FPU_rounding<true> upward;  // the rounding mode Interval_nt_advanced needs (per thread)
-  for (std::size_t t = 0; t < tets.size(); ++t) {
-    const int* edge = &edge_of[6 * t];
-    if (std::none_of(edge, edge + 6, [&](int e) { return e >= from && e < to; })) continue;
+  for (std::size_t t = from; t < to; ++t) {
     const auto& c = tets[t];
     const Vec<I> origin = lift<I>(p[c[0]]);
     Vec<I> x[4] = {{I(0), I(0), I(0)}, lift<I>(p[c[1]]) - origin, lift<I>(p[c[2]]) - origin,
@@ -185,11 +182,26 @@ void dual_area_intervals(const std::vector<Point3>& p, const std::vector<std::ar
     I den = I(2) * dot(u, cross(v, w));
     const Vec<I> ct{num.x / den, num.y / den, num.z / den};
     for (int f = 0; f < 6; ++f) {
-      if (edge[f] < from || edge[f] >= to) continue;
       const int* q = kEdgeFrames[f];  // (i, j, k, l): C1 = C(ijk), opposite l; C2 = C(ijl), opposite k
       Vec<I> m = scaled(I(0.5), x[q[0]] + x[q[1]]);
-      sum[edge[f]] += dot(cross(opposite[q[3]] - opposite[q[2]], ct - m), x[q[1]] - x[q[0]]);
+      *piece++ = dot(cross(opposite[q[3]] - opposite[q[2]], ct - m), x[q[1]] - x[q[0]]);
     }
+  }
+}
+
+// Per edge, the interval sum of its pieces in (tet, frame) order, into sum[e]. Blocks of tets, each block's pieces
+// on two threads (halves of its tets; most of the work is a tet's five circumcenters, which splitting by edges
+// computed on both threads for most tets), then added in order on this one.
+void dual_area_intervals(const std::vector<Point3>& p, const std::vector<std::array<int, 4>>& tets,
+                         const std::vector<int>& edge_of, std::vector<CGAL::Interval_nt_advanced>& sum) {
+  constexpr std::size_t kBlock = 1 << 15, kForkFrom = 1 << 12;
+  std::vector<CGAL::Interval_nt_advanced> piece(6 * std::min(kBlock, tets.size()));
+  for (std::size_t begin = 0; begin < tets.size(); begin += kBlock) {
+    const std::size_t end = std::min(tets.size(), begin + kBlock), middle = begin + (end - begin) / 2;
+    fork_join(end - begin >= kForkFrom, [&] { interval_pieces(p, tets, begin, middle, piece.data()); },
+              [&] { interval_pieces(p, tets, middle, end, piece.data() + 6 * (middle - begin)); });
+    CGAL::Protect_FPU_rounding<true> upward;
+    for (std::size_t q = 6 * begin; q < 6 * end; ++q) sum[edge_of[q]] += piece[q - 6 * begin];
   }
 }
 
@@ -391,13 +403,9 @@ ControlVolumes3D control_volumes3d(const std::vector<Point3>& points, const std:
   const std::size_t edges = numbering.edges.size();
   std::vector<double> sum;
   float_magnitudes(points, tets, numbering, sum, out);
-  // The interval filter, the bulk of the work, on two threads (halves of the edges, each thread reading all the
-  // pieces in tet order and computing its own); the undecided edges come in edge order.
+  // The interval filter, the bulk of the work, on two threads.
   std::vector<CGAL::Interval_nt_advanced> interval(edges, CGAL::Interval_nt_advanced(0));
-  const int half = static_cast<int>(edges / 2);
-  const int all = static_cast<int>(edges);
-  fork_join(worth_forking(edges, 2), [&] { dual_area_intervals(points, tets, numbering.edge_of, 0, half, interval); },
-            [&] { dual_area_intervals(points, tets, numbering.edge_of, half, all, interval); });
+  dual_area_intervals(points, tets, numbering.edge_of, interval);
   out.signs.assign(edges, 0);
   std::vector<std::size_t> undecided;
   for (std::size_t g = 0; g < edges; ++g) {
