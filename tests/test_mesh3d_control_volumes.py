@@ -20,6 +20,7 @@ from nonobtuse.mesh3d.control_volumes3d import (
     tet_voronoi_shares,
     triangle_circumcenters,
 )
+from nonobtuse.mesh3d.gabriel import negative_couplings
 
 NO_FACES = np.zeros((0, 3), dtype=np.int64)
 
@@ -52,6 +53,7 @@ def test_obtuse_tet_has_a_negative_coupling():
     cv = control_volumes3d(tetmesh(p, [[0, 1, 2, 3]]))
     assert tet_circumcenters(*[np.array([q], dtype=float) for q in p])[0] == pytest.approx([0.5, 0.5, -4.975])
     assert cv.negative_couplings > 0
+    assert negative_couplings(tetmesh(p, [[0, 1, 2, 3]])) == cv.negative_couplings
     assert cv.volumes.sum() == pytest.approx(1 / 120, rel=1e-12)
 
 
@@ -130,6 +132,7 @@ def test_exact_signs_agree_with_clear_float_values(coords):
     assert (np.sign(cv.dual_areas[clear]) == cv.signs[clear]).all()
     assert (cv.dual_areas[cv.signs == 0] == 0.0).all()
     assert cv.negative_couplings == int((cv.signs < 0).sum())
+    assert negative_couplings(tetmesh(points, tets)) == cv.negative_couplings  # (zeros are not negative)
 
 
 def test_on_a_grid_only_the_axis_edges_have_dual_areas():
@@ -183,6 +186,21 @@ def test_core_magnitudes_are_the_numpy_formulas_bit_for_bit(seed, n):
     np.testing.assert_array_equal(cv.lengths, lengths)
     volumes = np.bincount(tets.ravel(), weights=tet_voronoi_shares(points, tets).ravel(), minlength=n)
     np.testing.assert_array_equal(cv.volumes, volumes)
+
+
+@settings(derandomize=True, deadline=None, max_examples=20)
+@given(st.integers(0, 2**32 - 1), st.integers(5, 400), st.integers(-40, 40))
+def test_the_signs_alone_are_those_of_the_whole_pass(seed, n, exponent):
+    # _core.dual_area_signs skips the floating-point magnitudes; negative_couplings scales the points by a
+    # power of two first (exactly, so no sign moves). Random Delaunay meshes have obtuse tets at the hull.
+    points = np.ldexp(np.random.default_rng(seed).uniform(-1, 1, (n, 3)), exponent)
+    tets = np.asarray(_core.delaunay_tetrahedra(points))
+    cv = control_volumes3d(tetmesh(points, tets))
+    alone = _core.dual_area_signs(points, tets)
+    np.testing.assert_array_equal(alone["edges"], cv.edges)
+    np.testing.assert_array_equal(alone["sign"], cv.signs)
+    assert alone["exact_evaluations"] == cv.exact_evaluations
+    assert negative_couplings(tetmesh(points, tets)) == cv.negative_couplings
 
 
 EDGE_FRAMES = [(0, 1, 2, 3), (0, 2, 3, 1), (0, 3, 1, 2), (1, 2, 0, 3), (1, 3, 2, 0), (2, 3, 0, 1)]

@@ -41,6 +41,19 @@ void bind_control_volumes3d(py::module_& m) {
       "volumes (n,) float64, exact_evaluations (int: edges the interval filter left to exact arithmetic),\n"
       "flat_in_floating_point (int: tets flat in doubles, whose circumcenters are exact, rounded).");
   m.def(
+      "dual_area_signs",
+      [](const DoubleArray& points, const IndexArray& tets) {
+        const ControlVolumes3D r = on_tets(points, tets, dual_area_signs);
+        py::dict d;
+        d["edges"] = from_index_rows(r.edges);
+        d["sign"] = from_vector(std::vector<std::int8_t>(r.signs.begin(), r.signs.end()));
+        d["exact_evaluations"] = r.exact_evaluations;
+        return d;
+      },
+      py::arg("points"), py::arg("tets"),
+      "control_volumes3d's edges, sign and exact_evaluations alone (no floating-point magnitudes, lengths or\n"
+      "volumes): for counting wrong-signed couplings. The same arguments and errors.");
+  m.def(
       "exact_tet_circumspheres",
       [](const DoubleArray& points, const IndexArray& tets) {
         const TetCircumspheres r = on_tets(points, tets, exact_tet_circumspheres);

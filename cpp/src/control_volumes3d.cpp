@@ -393,16 +393,10 @@ void require_positive_tets(const std::vector<Point3>& p, const std::vector<std::
   }
 }
 
-}  // namespace
-
-ControlVolumes3D control_volumes3d(const std::vector<Point3>& points, const std::vector<std::array<int, 4>>& tets) {
-  require_positive_tets(points, tets);
-  ControlVolumes3D out;
-  std::vector<double> piece;
-  EdgeNumbering numbering = number_edges(points.size(), tets);
+// The exact signs of the dual areas of `numbering`'s edges into out.signs (and out.exact_evaluations).
+void exact_signs(const std::vector<Point3>& points, const std::vector<std::array<int, 4>>& tets,
+                 const EdgeNumbering& numbering, ControlVolumes3D& out) {
   const std::size_t edges = numbering.edges.size();
-  std::vector<double> sum;
-  float_magnitudes(points, tets, numbering, sum, out);
   // The interval filter, the bulk of the work, on two threads.
   std::vector<CGAL::Interval_nt_advanced> interval(edges, CGAL::Interval_nt_advanced(0));
   dual_area_intervals(points, tets, numbering.edge_of, interval);
@@ -431,6 +425,18 @@ ControlVolumes3D control_volumes3d(const std::vector<Point3>& points, const std:
   const std::size_t middle = undecided.size() / 2;
   fork_join(undecided.size() >= 256, [&] { exact(0, middle); }, [&] { exact(middle, undecided.size()); });
   out.exact_evaluations = static_cast<int>(undecided.size());
+}
+
+}  // namespace
+
+ControlVolumes3D control_volumes3d(const std::vector<Point3>& points, const std::vector<std::array<int, 4>>& tets) {
+  require_positive_tets(points, tets);
+  ControlVolumes3D out;
+  EdgeNumbering numbering = number_edges(points.size(), tets);
+  const std::size_t edges = numbering.edges.size();
+  std::vector<double> sum;
+  float_magnitudes(points, tets, numbering, sum, out);
+  exact_signs(points, tets, numbering, out);
   out.dual_areas.reserve(edges);
   out.lengths.reserve(edges);
   for (std::size_t g = 0; g < edges; ++g) {
@@ -439,6 +445,15 @@ ControlVolumes3D control_volumes3d(const std::vector<Point3>& points, const std:
     D3 d = d3(points[e[1]]) - d3(points[e[0]]);
     out.lengths.push_back(std::sqrt(dot(d, d)));
   }
+  out.edges = std::move(numbering.edges);
+  return out;
+}
+
+ControlVolumes3D dual_area_signs(const std::vector<Point3>& points, const std::vector<std::array<int, 4>>& tets) {
+  require_positive_tets(points, tets);
+  ControlVolumes3D out;
+  EdgeNumbering numbering = number_edges(points.size(), tets);
+  exact_signs(points, tets, numbering, out);
   out.edges = std::move(numbering.edges);
   return out;
 }

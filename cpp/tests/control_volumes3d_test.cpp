@@ -69,6 +69,8 @@ TEST(ControlVolumes3D, InvertedOrFlatTetIsInvalidInput) {
   EXPECT_THROW(control_volumes3d(p, {{0, 2, 1, 3}}), InvalidInput);
   EXPECT_THROW(control_volumes3d(p, {{0, 1, 2, 4}}), InvalidInput);
   EXPECT_THROW(control_volumes3d(p, {{0, 1, 2, 5}}), InvalidInput);
+  EXPECT_THROW(dual_area_signs(p, {{0, 2, 1, 3}}), InvalidInput);
+  EXPECT_THROW(dual_area_signs(p, {{0, 1, 2, 5}}), InvalidInput);
 }
 
 TEST(ControlVolumes3D, FarFromTheOriginTheSignsAreUnchanged) {

@@ -6,7 +6,7 @@ import collections.abc
 import numpy
 import numpy.typing
 import typing
-__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'InteriorRefinement', 'Junction', 'Mesh2D', 'Quality2DOptions', 'Quality2DStats', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'Triangulation2', 'check_gabriel', 'classify_edges', 'closed_diametral_sphere_hits', 'conforming_gabriel_steiner_points', 'control_volumes3d', 'coupling_signs', 'default_interior_budget', 'default_steiner_budget', 'delaunay_cells_inside_surface', 'delaunay_restricted_to_plc', 'delaunay_tetrahedra', 'exact_tet_circumspheres', 'find_segment_intersections', 'inspect_domain', 'parse_numeric_rows', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'plc_unbalanced_edge', 'refine', 'refine_gabriel', 'refine_interior', 'surface_winding_numbers', 'triangulate']
+__all__: list[str] = ['DomainCoverage', 'EdgeClassification', 'GabrielCertificate', 'InputAngle2D', 'InputAngle3D', 'InteriorRefinement', 'Junction', 'Mesh2D', 'Quality2DOptions', 'Quality2DStats', 'Refine2DDiagnosis', 'Refine2DResult', 'Refine3DDiagnosis', 'Refine3DResult', 'SegmentIntersections', 'SteinerCount', 'Triangulation2', 'check_gabriel', 'classify_edges', 'closed_diametral_sphere_hits', 'conforming_gabriel_steiner_points', 'control_volumes3d', 'coupling_signs', 'default_interior_budget', 'default_steiner_budget', 'delaunay_cells_inside_surface', 'delaunay_restricted_to_plc', 'delaunay_tetrahedra', 'dual_area_signs', 'exact_tet_circumspheres', 'find_segment_intersections', 'inspect_domain', 'parse_numeric_rows', 'plc_collinear', 'plc_orient3d', 'plc_self_intersections', 'plc_unbalanced_edge', 'refine', 'refine_gabriel', 'refine_interior', 'surface_winding_numbers', 'triangulate']
 class Mesh2D:
     """
     A triangulated 2D domain (read-only; each array attribute is a new array on each access).
@@ -693,6 +693,11 @@ def delaunay_tetrahedra(points: typing.Annotated[numpy.typing.ArrayLike, numpy.f
     """
     Finite cells (t, 4) int64 of the Delaunay tetrahedralization of points (n, 3), positively oriented.
     Raises InvalidInputError when two points coincide.
+    """
+def dual_area_signs(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], tets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> dict:
+    """
+    control_volumes3d's edges, sign and exact_evaluations alone (no floating-point magnitudes, lengths or
+    volumes): for counting wrong-signed couplings. The same arguments and errors.
     """
 def exact_tet_circumspheres(points: typing.Annotated[numpy.typing.ArrayLike, numpy.float64], tets: typing.Annotated[numpy.typing.ArrayLike, numpy.int64]) -> tuple[numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64], numpy.typing.NDArray[numpy.float64]]:
     """

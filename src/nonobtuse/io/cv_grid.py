@@ -10,8 +10,8 @@ Voronoi share of the boundary triangle), carrying the face's marker.
 lengths times thickness, and the cells lie in the plane z = 0 (a vertical section stays in x-y; set the
 simulator's gravity along -y, or rotate the coordinates before export).
 
-The sign of every connection area is exact (2D: ``_core.coupling_signs``; 3D: ``_core.dual_area_signs``); the
-float value gives the magnitude only. A certified mesh (every boundary/interface angle nonobtuse in 2D; a
+The sign of every connection area is exact (2D: ``_core.coupling_signs``; 3D: ``_core.control_volumes3d``);
+the float value gives the magnitude only. A certified mesh (every boundary/interface angle nonobtuse in 2D; a
 Delaunay mesh with Gabriel boundary in 3D) has no negative area, so every exported coefficient -area/distance
 is <= 0 and the matrix is an M-matrix.
 """

@@ -11,8 +11,9 @@ with apex i over the three pieces of the edges at i, of volume A * |e| / 6 each,
 of all vertices sum to the mesh volume (signed pieces, exactly up to rounding).
 
 The sign of every A_e (negative, zero or positive) is decided exactly by the C++ core
-(``_core.dual_area_signs``: interval arithmetic, exact arithmetic when the interval contains 0); the floats
-give magnitudes only, so a coefficient that is exactly 0 is 0.0 and never a rounding-noise -4e-16.
+(``_core.control_volumes3d``, or ``_core.dual_area_signs`` for the signs alone: interval arithmetic, exact
+arithmetic when the interval contains 0); the floats give magnitudes only, so a coefficient that is exactly 0
+is 0.0 and never a rounding-noise -4e-16.
 """
 
 from __future__ import annotations

@@ -24,7 +24,7 @@ from typing import Any, Callable, Literal, cast
 import numpy as np
 
 from nonobtuse.errors import InvalidInputError
-from nonobtuse.mesh3d.gabriel import GabrielReport, check_gabriel, control_volume_summary
+from nonobtuse.mesh3d.gabriel import GabrielReport, check_gabriel, negative_couplings
 from nonobtuse.mesh3d.plc import PLC, TetMesh
 from nonobtuse.mesh3d.quality3d_rounds import InteriorRefiner, tet_quality
 
@@ -263,7 +263,7 @@ def refine_quality3d(
              "cascade_retries": refiner.retries, "cascades_left_alone": len(refiner.cascades),
              "encroached_facets": len(report.faces), "encroached_segments": len(report.segments),
              "volume_mesh": g.stats.get("volume_mesh"), "last_repair": stop,
-             "negative_couplings": control_volume_summary(mesh)["negative_couplings"], **stats,
+             "negative_couplings": negative_couplings(mesh), **stats,
              "warnings": list(plc.warnings), "seconds": time.perf_counter() - started}
     mesh.stats = stats
     return Quality3DResult(mesh, cast(QualityStatus, status), stats, report, small_angle)
