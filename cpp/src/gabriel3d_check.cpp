@@ -136,7 +136,7 @@ void PointIndex::add(int i) {
 }
 
 // From this many points a rebuild builds the root's two subtrees on two threads: fandisk.off's refinement rebuilds
-// its index 32 times (27 of them from 8,192 points, up to 21k), 17% of the refiner's run when sequential. The nodes come out as the
+// its index 36 times (up to 21k points), 17% of the refiner's run when sequential. The nodes come out as the
 // sequential build lays them out (the right subtree's after the left's), so queries visit points in the same order.
 constexpr int kParallelBuildFrom = 1 << 13;
 
