@@ -135,19 +135,12 @@ void PointIndex::add(int i) {
   }
 }
 
-// From this many points a rebuild builds the root's two subtrees on two threads: fandisk.off's refinement rebuilds
-// its index 36 times (up to 21k points), 17% of the refiner's run when sequential. The nodes come out as the
-// sequential build lays them out (the right subtree's after the left's), so queries visit points in the same order.
-constexpr int kParallelBuildFrom = 1 << 13;
-
 void PointIndex::rebuild() {
   nodes_.clear();
-  if (!order_.empty()) build(nodes_, 0, static_cast<int>(order_.size()), order_.size() >= kParallelBuildFrom);
+  if (!order_.empty()) build(0, static_cast<int>(order_.size()));
 }
 
-// The subtree over order_[begin, end) appended to `nodes` in depth-first order, its root first; returns the root's
-// position in `nodes`.
-int PointIndex::build(std::vector<Node>& nodes, int begin, int end, bool parallel) {
+int PointIndex::build(int begin, int end) {
   Node node;
   node.begin = begin;
   node.end = end;
@@ -160,8 +153,8 @@ int PointIndex::build(std::vector<Node>& nodes, int begin, int end, bool paralle
       node.hi[d] = std::max(node.hi[d], p[d]);
     }
   }
-  int id = static_cast<int>(nodes.size());
-  nodes.push_back(node);
+  int id = static_cast<int>(nodes_.size());
+  nodes_.push_back(node);
   if (end - begin <= 8) return id;
   int axis = 0;
   for (int d = 1; d < 3; ++d)
@@ -169,21 +162,10 @@ int PointIndex::build(std::vector<Node>& nodes, int begin, int end, bool paralle
   int mid = (begin + end) / 2;
   std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
                    [&](const Item& i, const Item& j) { return i.p[axis] < j.p[axis]; });
-  int left = -1, right = -1;
-  if (parallel) {
-    std::vector<Node> right_nodes;  // the right subtree's, positions from 0
-    fork_join(true, [&] { build(right_nodes, mid, end, false); }, [&] { left = build(nodes, begin, mid, false); });
-    right = static_cast<int>(nodes.size());
-    for (Node r : right_nodes) {
-      if (r.left >= 0) r.left += right, r.right += right;
-      nodes.push_back(r);
-    }
-  } else {
-    left = build(nodes, begin, mid, false);
-    right = build(nodes, mid, end, false);
-  }
-  nodes[id].left = left;
-  nodes[id].right = right;
+  int left = build(begin, mid);
+  int right = build(mid, end);
+  nodes_[id].left = left;
+  nodes_[id].right = right;
   return id;
 }
 

@@ -66,7 +66,7 @@ class PointIndex {
     int i;
   };
   void rebuild();
-  int build(std::vector<Node>& nodes, int begin, int end, bool parallel);
+  int build(int begin, int end);
   // Inline (it was a call through the PLT from every query's traversal: 2% of refine_gabriel on fandisk).
   static double box_distance2(const Node& node, const std::array<double, 3>& q) {
     double s = 0.0;

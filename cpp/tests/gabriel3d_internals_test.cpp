@@ -66,19 +66,17 @@ namespace nonobtuse::gabriel3d {
 namespace {
 
 TEST(Gabriel3DPointIndex, GrowingIndexFindsWhatBruteForceFinds) {
-  // Points added one at a time across several rebuilds (pending list > max(256, 4 sqrt(n))), the later ones with
-  // the root's subtrees built on two threads (from 8,192 points); every query must visit each point strictly within
-  // the ball (it may visit a few more just outside: the caller decides exactly), and nearest() must find a point
-  // as close as the closest one.
+  // Points added one at a time across several rebuilds (pending list > max(256, 4 sqrt(n))); every query must
+  // visit each point strictly within the ball (it may visit a few more just outside: the caller decides exactly).
   std::vector<P3> points;
   auto next = [state = 12345u]() mutable {
     state = state * 1103515245u + 12345u;
     return (state >> 8) / double(1 << 24);
   };
   for (int i = 0; i < 64; ++i) points.emplace_back(next(), next(), next());
-  points.reserve(20000);
+  points.reserve(6000);
   PointIndex index(points);
-  for (int i = 64; i < 20000; ++i) {
+  for (int i = 64; i < 6000; ++i) {
     points.emplace_back(next(), next(), next());
     index.add(i);
     if (i % 500 != 0) continue;
@@ -88,10 +86,6 @@ TEST(Gabriel3DPointIndex, GrowingIndexFindsWhatBruteForceFinds) {
     const P3 c(ball.center[0], ball.center[1], ball.center[2]);
     for (std::size_t t = 0; t < points.size(); ++t)
       if (CGAL::compare_squared_distance(points[t], c, 0.04) == CGAL::SMALLER) EXPECT_TRUE(seen[t]) << t;
-    double closest = HUGE_VAL;
-    for (const P3& p : points) closest = std::min(closest, CGAL::squared_distance(p, c));
-    ASSERT_GE(index.nearest(c), 0);
-    EXPECT_EQ(CGAL::squared_distance(points[index.nearest(c)], c), closest) << i;
   }
 }
 
