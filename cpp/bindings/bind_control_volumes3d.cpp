@@ -16,6 +16,15 @@ auto on_tets(const DoubleArray& points, const IndexArray& tets, F f) {
   return f(p, t);
 }
 
+// The dict of what dual_area_signs computes (control_volumes3d's adds the magnitudes).
+py::dict signs_dict(const ControlVolumes3D& r) {
+  py::dict d;
+  d["edges"] = from_index_rows(r.edges);
+  d["sign"] = from_vector(std::vector<std::int8_t>(r.signs.begin(), r.signs.end()));
+  d["exact_evaluations"] = r.exact_evaluations;
+  return d;
+}
+
 }  // namespace
 
 void bind_control_volumes3d(py::module_& m) {
@@ -23,13 +32,10 @@ void bind_control_volumes3d(py::module_& m) {
       "control_volumes3d",
       [](const DoubleArray& points, const IndexArray& tets) {
         const ControlVolumes3D r = on_tets(points, tets, control_volumes3d);
-        py::dict d;
-        d["edges"] = from_index_rows(r.edges);
-        d["sign"] = from_vector(std::vector<std::int8_t>(r.signs.begin(), r.signs.end()));
+        py::dict d = signs_dict(r);
         d["dual_areas"] = from_vector(r.dual_areas);
         d["lengths"] = from_vector(r.lengths);
         d["volumes"] = from_vector(r.volumes);
-        d["exact_evaluations"] = r.exact_evaluations;
         d["flat_in_floating_point"] = r.flat_in_floating_point;
         return d;
       },
@@ -43,12 +49,7 @@ void bind_control_volumes3d(py::module_& m) {
   m.def(
       "dual_area_signs",
       [](const DoubleArray& points, const IndexArray& tets) {
-        const ControlVolumes3D r = on_tets(points, tets, dual_area_signs);
-        py::dict d;
-        d["edges"] = from_index_rows(r.edges);
-        d["sign"] = from_vector(std::vector<std::int8_t>(r.signs.begin(), r.signs.end()));
-        d["exact_evaluations"] = r.exact_evaluations;
-        return d;
+        return signs_dict(on_tets(points, tets, dual_area_signs));
       },
       py::arg("points"), py::arg("tets"),
       "control_volumes3d's edges, sign and exact_evaluations alone (no floating-point magnitudes, lengths or\n"
