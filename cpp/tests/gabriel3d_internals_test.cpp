@@ -67,7 +67,8 @@ namespace {
 
 TEST(Gabriel3DPointIndex, GrowingIndexFindsWhatBruteForceFinds) {
   // Points added one at a time across several rebuilds (pending list > max(256, 4 sqrt(n))); every query must
-  // visit each point strictly within the ball (it may visit a few more just outside: the caller decides exactly).
+  // visit each point strictly within the ball (it may visit a few more just outside: the caller decides exactly),
+  // and nearest() must return a point as close as the closest one.
   std::vector<P3> points;
   auto next = [state = 12345u]() mutable {
     state = state * 1103515245u + 12345u;
@@ -86,6 +87,11 @@ TEST(Gabriel3DPointIndex, GrowingIndexFindsWhatBruteForceFinds) {
     const P3 c(ball.center[0], ball.center[1], ball.center[2]);
     for (std::size_t t = 0; t < points.size(); ++t)
       if (CGAL::compare_squared_distance(points[t], c, 0.04) == CGAL::SMALLER) EXPECT_TRUE(seen[t]) << t;
+    double closest = HUGE_VAL;
+    for (const P3& p : points) closest = std::min(closest, CGAL::squared_distance(p, c));
+    const int nearest = index.nearest(c);
+    ASSERT_GE(nearest, 0);
+    EXPECT_EQ(CGAL::squared_distance(points[nearest], c), closest) << i;
   }
 }
 
